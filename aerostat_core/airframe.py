@@ -1,0 +1,124 @@
+"""Assemble the evaluated aerostat: hull, fins, masses, buoyancy and confluence point.
+
+:func:`build_airframe` broadcasts over arrays of the design variables, so the same code serves a
+single design, a wind sweep and a batch of thousands of designs (optimisation, Monte Carlo).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from . import constants as c
+from .atmosphere import isa
+from .fins import FinGeometry, fin_geometry
+from .gas import gas_density, gross_buoyancy
+from .geometry import HullGeometry, hull_geometry, shape_integrals
+from .inputs import Configuration, Requirement
+from .mass import MassBreakdown, mass_breakdown
+
+
+@dataclass(frozen=True)
+class Airframe:
+    """Everything the statics and the dynamics need about one (or a batch of) aerostat(s).
+
+    Attributes (SI): hull, fins, mass; air_density [kg/m3], viscosity [Pa s], pressure [Pa],
+    temperature [K] at the operating altitude; gas_density [kg/m3]; buoyancy (gross) [N];
+    aerostat_weight (all but tether) [N]; total_weight [N]; free_lift = buoyancy - total_weight
+    [N]; xi_c, z_c (confluence point, body frame) [m]; J&D integrals i1 [m2], i3 [m3], j1 [m2],
+    j2 [m3] about xi_m [m] (= centre of buoyancy); cutoff_station [m]; tether_length [m];
+    tether_weight_per_length (in air, net of air buoyancy) [N/m]; g [m/s2].
+    """
+
+    hull: HullGeometry
+    fins: FinGeometry
+    mass: MassBreakdown
+    air_density: np.ndarray
+    viscosity: np.ndarray
+    pressure: np.ndarray
+    temperature: np.ndarray
+    gas_density: np.ndarray
+    buoyancy: np.ndarray
+    aerostat_weight: np.ndarray
+    total_weight: np.ndarray
+    free_lift: np.ndarray
+    xi_c: np.ndarray
+    z_c: np.ndarray
+    xi_m: np.ndarray
+    cutoff_station: np.ndarray
+    i1: np.ndarray
+    i3: np.ndarray
+    j1: np.ndarray
+    j2: np.ndarray
+    tether_length: float
+    tether_weight_per_length: float
+    g: float
+
+
+def build_airframe(
+    req: Requirement,
+    cfg: Configuration,
+    volume,
+    fineness_ratio=None,
+    area_change=None,
+    position=None,
+    g: float = c.G0,
+) -> Airframe:
+    """Evaluate geometry, mass, buoyancy and confluence point.
+
+    Parameters
+    ----------
+    req : Requirement
+    cfg : Configuration
+    volume : array_like
+        Hull volume [m3].
+    fineness_ratio, area_change, position : array_like or None
+        Design variables f [-], Delta S_f [%], Delta l_f [-]; ``None`` takes them from ``cfg``.
+    g : float
+        Gravity [m/s2].
+
+    Notes
+    -----
+    Air properties are taken at the operating altitude (site + altitude); the few metres of
+    altitude loss in wind change density by < 0.1 %, which is neglected. The confluence point is
+    placed below the centre of net static lift (methods.md §1.8, G9), so the hull flies level in
+    calm air: xi_C = (F_B xi_CB - W_a xi_CG)/(F_B - W_a) + offset * l, z_C = -(b + drop * d).
+    Where F_B <= W_a there is no net lift at the confluence point and xi_C falls back to xi_CB.
+    """
+    f = cfg.hull.fineness_ratio if fineness_ratio is None else np.asarray(fineness_ratio, float)
+    hull = hull_geometry(volume, f, cfg.hull.nose_fraction)
+    atm = isa(req.site_elevation + req.altitude, req.isa_offset)
+    rho_gas = gas_density(cfg.gas, atm.pressure, atm.temperature)
+    fins = fin_geometry(
+        hull, cfg.fins, cfg.fin_fabric.areal_density, area_change, position,
+        cfg.aero.section_lift_slope,
+    )
+    t = cfg.tether
+    tether_length = float(req.altitude)
+    mass = mass_breakdown(
+        hull, fins, cfg.hull_fabric.areal_density, rho_gas, cfg.misc_mass_ratio,
+        req.payload_mass, t.linear_density * tether_length,
+    )
+    fb = gross_buoyancy(atm.density, hull.volume, g)
+    w_a = mass.aerostat * g
+    w_t = mass.total * g
+    net = fb - w_a
+    safe = np.where(net > 1e-9 * fb, net, 1.0)
+    xi_c = np.where(net > 1e-9 * fb, (fb * hull.xi_cb - w_a * mass.xi_cg) / safe, hull.xi_cb)
+    xi_c = xi_c + cfg.confluence.xi_offset * hull.length
+    z_c = -(hull.b + cfg.confluence.drop_ratio * hull.diameter)
+    xi_m = hull.xi_cb
+    lh = fins.xi_root_le if cfg.aero.cutoff == "fin" else hull.length
+    i1, i3, j1, j2 = shape_integrals(hull, lh, xi_m)
+    area_t = np.pi * t.diameter**2 / 4.0
+    w_line = (t.linear_density - float(atm.density) * area_t) * g
+    return Airframe(
+        hull=hull, fins=fins, mass=mass,
+        air_density=atm.density, viscosity=atm.viscosity, pressure=atm.pressure,
+        temperature=atm.temperature, gas_density=rho_gas,
+        buoyancy=fb, aerostat_weight=w_a, total_weight=w_t, free_lift=fb - w_t,
+        xi_c=xi_c, z_c=z_c, xi_m=xi_m, cutoff_station=lh * np.ones_like(hull.length),
+        i1=i1, i3=i3, j1=j1, j2=j2,
+        tether_length=tether_length, tether_weight_per_length=w_line, g=g,
+    )

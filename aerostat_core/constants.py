@@ -1,0 +1,65 @@
+"""Physical constants and documented default coefficients, each with its unit and source.
+
+Every module imports its constants from here so that a value is typed once. Values tagged
+*INFERRED* or *calibrated* are documented in ``presets.py`` and in ../shared/design/methods.md §3.
+"""
+
+from __future__ import annotations
+
+import math
+
+# --- Fundamental ---------------------------------------------------------------------------
+#: Standard gravity [m/s2]. Source: ISO 2533:1975 (ISA), CGPM 1901.
+G0 = 9.80665
+#: Universal gas constant [J/(mol K)]. Source: CODATA 2018 (exact).
+R_UNIVERSAL = 8.314462618
+#: Molar mass of dry air [kg/mol]. Source: ISO 2533:1975.
+M_AIR = 0.0289644
+#: Specific gas constant of dry air [J/(kg K)], R_UNIVERSAL / M_AIR as used by ISA (287.05287).
+R_AIR = 287.05287
+#: Molar mass of helium-4 [kg/mol]. Source: IUPAC 2013 standard atomic weight.
+M_HELIUM = 4.002602e-3
+#: Molar mass of hydrogen H2 [kg/mol]. Source: IUPAC 2013 (2 x 1.00794).
+M_HYDROGEN = 2.01588e-3
+
+# --- International Standard Atmosphere (troposphere) ---------------------------------------
+#: Sea-level ISA temperature [K]. Source: ISO 2533:1975.
+ISA_T0 = 288.15
+#: Sea-level ISA pressure [Pa]. Source: ISO 2533:1975.
+ISA_P0 = 101325.0
+#: Tropospheric temperature lapse rate [K/m] (temperature falls with height). Source: ISO 2533:1975.
+ISA_LAPSE = 0.0065
+#: Upper limit of the troposphere model used here [m] (geopotential). Source: ISO 2533:1975.
+ISA_TROPOPAUSE = 11000.0
+#: Lowest altitude accepted by the atmosphere model [m] (Dead Sea shore is about -430 m).
+ISA_MIN_ALTITUDE = -500.0
+#: Sutherland's law reference constant [kg/(m s K^0.5)]. Source: U.S. Standard Atmosphere 1976.
+SUTHERLAND_BETA = 1.458e-6
+#: Sutherland temperature [K]. Source: U.S. Standard Atmosphere 1976.
+SUTHERLAND_S = 110.4
+
+# --- Thesis constants (Mahmood 2020, seed text) ----------------------------------------------
+#: Helium density the thesis uses for gas mass [kg/m3] (Table 2.5; 16.9 kg per 100 m3 in Table 2.2).
+THESIS_HELIUM_DENSITY = 0.169
+#: Hydrogen density the thesis lists [kg/m3] (Table 2.5).
+THESIS_HYDROGEN_DENSITY = 0.085
+#: Helium price [USD/m3], INFERRED: USD 1925 saved for 50 m3 less volume (thesis abstract, App. H).
+HELIUM_PRICE_USD_PER_M3 = 38.5
+#: Hydrogen price [USD/m3]. Assumed order of magnitude for industrial cylinders (not from the thesis).
+HYDROGEN_PRICE_USD_PER_M3 = 10.0
+
+# --- Aerodynamic defaults (methods.md §1.7, sources S1, S6, S10, S11) ---------------------------
+#: Jones & DeLaurier hull efficiency factor eta_k [-] (S6, YEZ-2A value).
+HULL_EFFICIENCY = 1.19
+#: Hull cross-flow drag coefficient (C_dc)_h [-] (S6; 0.32 Skyship-type value).
+HULL_CROSSFLOW_DRAG = 0.32
+#: Fin efficiency eta_f used with a 3-D (Helmbold/DATCOM) lift slope [-] (methods.md G7).
+FIN_EFFICIENCY = 1.0
+#: Two-dimensional section lift slope [1/rad] (thin-aerofoil theory, 2 pi).
+SECTION_LIFT_SLOPE = 2.0 * math.pi
+#: Fin zero-lift drag coefficient on planform area [-] (S6: 0.003-0.010).
+FIN_ZERO_LIFT_DRAG = 0.008
+#: Fin stall angle [deg] for low-aspect-ratio fins (methods.md §1.7: 15-20 deg).
+FIN_STALL_ANGLE_DEG = 20.0
+#: Smallest Reynolds number used in Hoerner's drag law [-]; guards the V -> 0 limit where q -> 0.
+MIN_REYNOLDS = 1.0e4

@@ -1,0 +1,297 @@
+"""NPL double-ellipsoid hull: profile, volume, area, centroids, Lamb inertia factors, J&D integrals.
+
+All functions broadcast over numpy arrays, so one call can size a whole batch of hulls.
+Body frame (methods.md §1): station xi from the nose, aft positive; z up.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+# Gauss-Legendre nodes for the smooth surface integrals (exact enough to 1e-12 for these profiles).
+_GL_X, _GL_W = np.polynomial.legendre.leggauss(48)
+
+
+def hull_dimensions(volume, fineness_ratio, nose_fraction=0.432):
+    """Length, diameter and ellipse semi-axes of an NPL hull of given volume and fineness.
+
+    V = (2/3) pi b^2 (a1 + a2) = (pi/6) d^2 l, f = l/d  =>  d = (6V/(pi f))^(1/3), l = f d,
+    a1 = nose_fraction * l, a2 = l - a1, b = d/2.
+
+    Parameters
+    ----------
+    volume : array_like
+        Hull volume [m3], > 0.
+    fineness_ratio : array_like
+        l/d [-], valid 1.5-8 (the NPL shape is a standard at 4.0).
+    nose_fraction : array_like
+        a1/l [-], 0.432 for the NPL standard (public Gertler-envelope tables, methods.md S7).
+
+    Returns
+    -------
+    length, diameter, a1, a2, b : ndarray [m]
+
+    Notes
+    -----
+    Source: Khoury & Gillett, *Airship Technology* (1999); thesis §3.1.3(a).
+
+    Examples
+    --------
+    >>> l, d, a1, a2, b = hull_dimensions(100.0, 2.7)
+    >>> round(float(l), 2), round(float(d), 2)
+    (11.12, 4.12)
+    """
+    v = np.asarray(volume, dtype=float)
+    f = np.asarray(fineness_ratio, dtype=float)
+    d = np.cbrt(6.0 * v / (np.pi * f))
+    length = f * d
+    a1 = np.asarray(nose_fraction, dtype=float) * length
+    return length, d, a1, length - a1, 0.5 * d
+
+
+def half_spheroid_area(a, b):
+    """Curved surface of half a spheroid with polar semi-axis ``a`` and equatorial radius ``b``.
+
+    Prolate (a > b), e = sqrt(1 - b^2/a^2):  S = pi b^2 + pi a b arcsin(e)/e.
+    Oblate  (a < b), e = sqrt(1 - a^2/b^2):  S = pi b^2 + (pi a^2/e) artanh(e).
+    Sphere (a = b): 2 pi b^2.
+
+    Parameters
+    ----------
+    a, b : array_like
+        Semi-axes [m], > 0.
+
+    Returns
+    -------
+    ndarray
+        Area [m2].
+
+    Examples
+    --------
+    >>> round(float(half_spheroid_area(1.0, 1.0)), 6) == round(2 * np.pi, 6)
+    True
+    """
+    a = np.asarray(a, dtype=float)
+    b = np.asarray(b, dtype=float)
+    a, b = np.broadcast_arrays(a, b)
+    ratio = a / b
+    out = np.empty(a.shape)
+    pro = ratio > 1.0 + 1e-9
+    obl = ratio < 1.0 - 1e-9
+    sph = ~(pro | obl)
+    e = np.sqrt(1.0 - (b[pro] / a[pro]) ** 2)
+    out[pro] = np.pi * b[pro] ** 2 + np.pi * a[pro] * b[pro] * np.arcsin(e) / e
+    e = np.sqrt(1.0 - (a[obl] / b[obl]) ** 2)
+    out[obl] = np.pi * b[obl] ** 2 + np.pi * a[obl] ** 2 / e * np.arctanh(e)
+    out[sph] = 2.0 * np.pi * b[sph] ** 2
+    return out if out.ndim else out[()]
+
+
+def radius(xi, a1, a2, b):
+    """Local hull radius r(xi) [m] of the NPL profile (zero outside the hull).
+
+    r = b sqrt(1 - ((a1 - xi)/a1)^2) for 0 <= xi <= a1, and b sqrt(1 - ((xi - a1)/a2)^2) for
+    a1 <= xi <= a1 + a2.  Source: thesis Fig. 3.4; methods.md §1.4.
+    """
+    xi = np.asarray(xi, dtype=float)
+    a = np.where(xi <= a1, a1, a2)
+    u = np.clip((xi - a1) / a, -1.0, 1.0)
+    return b * np.sqrt(1.0 - u * u)
+
+
+def volume_to_station(xi, a1, a2, b):
+    """Hull volume between the nose and station ``xi`` [m3] (closed form).
+
+    With u = (xi - a1)/a:  V(xi) = pi b^2 a1 (u - u^3/3 + 2/3) in the forebody and
+    (2/3) pi b^2 a1 + pi b^2 a2 (u - u^3/3) in the afterbody.
+    """
+    xi = np.asarray(xi, dtype=float)
+    fwd = xi <= a1
+    u1 = np.clip((xi - a1) / a1, -1.0, 0.0)
+    u2 = np.clip((xi - a1) / a2, 0.0, 1.0)
+    v1 = np.pi * b**2 * a1 * (u1 - u1**3 / 3.0 + 2.0 / 3.0)
+    v2 = (2.0 / 3.0) * np.pi * b**2 * a1 + np.pi * b**2 * a2 * (u2 - u2**3 / 3.0)
+    return np.where(fwd, v1, v2)
+
+
+def _surface_moment(a1, a2, b):
+    """Integral of xi dS over the hull [m3], by Gauss-Legendre on each half (smooth integrand).
+
+    dS/dxi = 2 pi b sqrt(1 - u^2 + (b/a)^2 u^2) with u = (xi - a1)/a.
+    """
+    a1 = np.asarray(a1, dtype=float)[..., None]
+    a2 = np.asarray(a2, dtype=float)[..., None]
+    b = np.asarray(b, dtype=float)[..., None]
+    # forebody: u in [-1, 0] -> xi = a1 (1 + u); afterbody: u in [0, 1] -> xi = a1 + a2 u
+    u = 0.5 * (_GL_X - 1.0)
+    ds1 = 2 * np.pi * b * np.sqrt(1 - u**2 + (b / a1) ** 2 * u**2) * a1 * 0.5
+    m1 = np.sum(_GL_W * ds1 * a1 * (1.0 + u), axis=-1)
+    u = 0.5 * (_GL_X + 1.0)
+    ds2 = 2 * np.pi * b * np.sqrt(1 - u**2 + (b / a2) ** 2 * u**2) * a2 * 0.5
+    m2 = np.sum(_GL_W * ds2 * (a1 + a2 * u), axis=-1)
+    return m1 + m2
+
+
+def lamb_factors(fineness_ratio):
+    """Lamb's inertia (added-mass) factors of a prolate spheroid of the given fineness ratio.
+
+    With e = sqrt(1 - 1/f^2):
+    alpha0 = (2(1 - e^2)/e^3) (artanh(e) - e),  beta0 = 1/e^2 - ((1 - e^2)/e^3) artanh(e),
+    k1 = alpha0/(2 - alpha0) (axial), k2 = k3 = beta0/(2 - beta0) (transverse),
+    k' = e^4 (beta0 - alpha0) / ((2 - e^2)(2 e^2 - (2 - e^2)(beta0 - alpha0))) (rotation).
+
+    Parameters
+    ----------
+    fineness_ratio : array_like
+        l/d [-], > 1 (the sphere limit f -> 1 gives k1 = k2 = 0.5, k' = 0).
+
+    Returns
+    -------
+    k1, k2, k_rot : ndarray [-]
+
+    Notes
+    -----
+    Source: Lamb, *Hydrodynamics* (1932) §373; Tuckerman, NACA Report 210 (1926).
+
+    Examples
+    --------
+    >>> [round(float(k), 3) for k in lamb_factors(4.0)]
+    [0.082, 0.86, 0.608]
+    """
+    f = np.maximum(np.asarray(fineness_ratio, dtype=float), 1.0 + 1e-6)
+    e = np.sqrt(1.0 - 1.0 / f**2)
+    at = np.arctanh(e)
+    alpha0 = 2.0 * (1.0 - e**2) / e**3 * (at - e)
+    beta0 = 1.0 / e**2 - (1.0 - e**2) / e**3 * at
+    k1 = alpha0 / (2.0 - alpha0)
+    k2 = beta0 / (2.0 - beta0)
+    dba = beta0 - alpha0
+    k_rot = e**4 * dba / ((2.0 - e**2) * (2.0 * e**2 - (2.0 - e**2) * dba))
+    return k1, k2, k_rot
+
+
+@dataclass(frozen=True)
+class HullGeometry:
+    """Geometry of an NPL hull (arrays broadcast over a batch of designs).
+
+    Attributes (all SI): volume [m3], fineness_ratio [-], length, diameter, a1, a2, b [m],
+    surface_area [m2], xi_cb (centre of buoyancy) [m], xi_surface (fabric centroid) [m],
+    planform_area J1 [m2], planform_centroid [m], reference_area V^(2/3) [m2],
+    k1, k2, k_rot (Lamb factors) [-].
+    """
+
+    volume: np.ndarray
+    fineness_ratio: np.ndarray
+    length: np.ndarray
+    diameter: np.ndarray
+    a1: np.ndarray
+    a2: np.ndarray
+    b: np.ndarray
+    surface_area: np.ndarray
+    xi_cb: np.ndarray
+    xi_surface: np.ndarray
+    planform_area: np.ndarray
+    planform_centroid: np.ndarray
+    reference_area: np.ndarray
+    k1: np.ndarray
+    k2: np.ndarray
+    k_rot: np.ndarray
+
+
+def hull_geometry(volume, fineness_ratio, nose_fraction=0.432) -> HullGeometry:
+    """Build :class:`HullGeometry` from volume [m3], fineness ratio [-] and a1/l [-].
+
+    Closed forms (methods.md §1.4): S = S_half(a1, b) + S_half(a2, b);
+    xi_CB = [a1 (5 a1/8) + a2 (a1 + 3 a2/8)] / (a1 + a2) (half-ellipsoid centroids 3a/8 from the
+    base, volumes in proportion to a1, a2); planform J1 = pi b l / 2 with centroid
+    [a1 (a1 - 4 a1/(3 pi)) + a2 (a1 + 4 a2/(3 pi))] / l.
+
+    Examples
+    --------
+    >>> g = hull_geometry(100.0, 2.7)
+    >>> round(float(g.surface_area), 2)
+    119.97
+    """
+    length, d, a1, a2, b = hull_dimensions(volume, fineness_ratio, nose_fraction)
+    v = np.asarray(volume, dtype=float) * np.ones_like(length)
+    s = half_spheroid_area(a1, b) + half_spheroid_area(a2, b)
+    xi_cb = (a1 * (5.0 * a1 / 8.0) + a2 * (a1 + 3.0 * a2 / 8.0)) / length
+    xi_s = _surface_moment(a1, a2, b) / s
+    j1 = 0.5 * np.pi * b * length
+    xi_j = (a1 * (a1 - 4.0 * a1 / (3.0 * np.pi)) + a2 * (a1 + 4.0 * a2 / (3.0 * np.pi))) / length
+    k1, k2, kr = lamb_factors(np.asarray(fineness_ratio, dtype=float) * np.ones_like(length))
+    return HullGeometry(
+        volume=v,
+        fineness_ratio=length / d,
+        length=length,
+        diameter=d,
+        a1=a1,
+        a2=a2,
+        b=b,
+        surface_area=s,
+        xi_cb=xi_cb,
+        xi_surface=xi_s,
+        planform_area=j1,
+        planform_centroid=xi_j,
+        reference_area=v ** (2.0 / 3.0),
+        k1=k1,
+        k2=k2,
+        k_rot=kr,
+    )
+
+
+def shape_integrals(g: HullGeometry, cutoff_station, moment_station):
+    """Jones & DeLaurier hull integrals (methods.md §1.4, source S1).
+
+    I1 = int_0^{l_h} dA/dxi dxi = A(l_h) = pi r(l_h)^2
+    I3 = int_0^{l_h} (xi_m - xi) dA/dxi dxi = (xi_m - l_h) A(l_h) + V(0..l_h)   (by parts)
+    J1 = int_0^l 2 r dxi = pi b l / 2
+    J2 = int_0^l 2 r (xi_m - xi) dxi = J1 (xi_m - xi_J1)
+
+    Parameters
+    ----------
+    g : HullGeometry
+    cutoff_station : array_like
+        l_h, station where the potential-flow term is cut off [m], 0 <= l_h <= l.
+    moment_station : array_like
+        xi_m, moment reference station [m].
+
+    Returns
+    -------
+    I1 [m2], I3 [m3], J1 [m2], J2 [m3]
+
+    Notes
+    -----
+    Check: l_h = l gives I1 = 0 and I3 = V (Munk's moment).
+    """
+    lh = np.clip(np.asarray(cutoff_station, dtype=float), 0.0, g.length)
+    area = np.pi * radius(lh, g.a1, g.a2, g.b) ** 2
+    i1 = area
+    i3 = (moment_station - lh) * area + volume_to_station(lh, g.a1, g.a2, g.b)
+    j1 = g.planform_area
+    j2 = j1 * (moment_station - g.planform_centroid)
+    return i1, i3, j1, j2
+
+
+def profile_quadrature(g: HullGeometry):
+    """Gauss-Legendre nodes along the hull for surface and volume integrals.
+
+    Returns stations xi [m], radii r [m], surface weights w_s (so that sum(w_s F(xi)) =
+    int F dS) [m2] and volume weights w_v (sum(w_v F) = int F dV) [m3]; arrays of shape
+    (..., 96) over a batch.
+    """
+    a1 = np.asarray(g.a1, dtype=float)[..., None]
+    a2 = np.asarray(g.a2, dtype=float)[..., None]
+    b = np.asarray(g.b, dtype=float)[..., None]
+    u1 = 0.5 * (_GL_X - 1.0)
+    u2 = 0.5 * (_GL_X + 1.0)
+    xi = np.concatenate([a1 * (1.0 + u1), a1 + a2 * u2], axis=-1)
+    u = np.concatenate([np.broadcast_to(u1, xi[..., :48].shape), np.broadcast_to(u2, xi[..., 48:].shape)], axis=-1)
+    a = np.concatenate([np.broadcast_to(a1, xi[..., :48].shape), np.broadcast_to(a2, xi[..., 48:].shape)], axis=-1)
+    jac = 0.5 * a * np.concatenate([_GL_W, _GL_W])
+    r = b * np.sqrt(1.0 - u**2)
+    ds = 2.0 * np.pi * b * np.sqrt(1.0 - u**2 + (b / a) ** 2 * u**2)
+    dv = np.pi * r**2
+    return xi, r, ds * jac, dv * jac

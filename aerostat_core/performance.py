@@ -1,0 +1,179 @@
+"""The design pipeline: requirement + configuration -> a sized, trimmed aerostat with its tether.
+
+:func:`design` is the public entry point; :func:`evaluate` is the vectorised core used by the
+sweep, the sizing root-finder and the batch evaluator.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from .airframe import Airframe, build_airframe
+from .inputs import Configuration, Requirement
+from .statics import Equilibrium, aero_loads, equilibrium, moment_coefficient
+from .tether import TetherSolution, solve_tether
+from .wind import profile_speed
+
+#: Operating-limit flags, in display order, with their meaning.
+FLAG_TEXT = {
+    "tether_over_45": "tether more than 45 deg from vertical",
+    "past_stall": "angle of attack past fin stall",
+    "no_free_lift": "free lift not positive",
+    "slack": "slack tether (no upward tension somewhere along it)",
+    "low_safety_factor": "tether safety factor below the required value",
+    "unstable": "statically unstable (no stable trim)",
+}
+
+
+@dataclass(frozen=True)
+class Evaluation:
+    """Static solution of an airframe at given wind speed(s) (all arrays broadcast together).
+
+    alpha [rad], moment_slope dM_C/dalpha [N m/rad], lift (dynamic) [N], drag [N],
+    tension_x/z at the confluence point [N], tether (TetherSolution), safety_factor [-],
+    flags (dict of bool arrays, keys of ``FLAG_TEXT``).
+    """
+
+    airframe: Airframe
+    speed: np.ndarray
+    equilibrium: Equilibrium
+    lift: np.ndarray
+    drag: np.ndarray
+    tension_x: np.ndarray
+    tension_z: np.ndarray
+    tether: TetherSolution
+    safety_factor: np.ndarray
+    flags: dict
+
+
+def evaluate(req: Requirement, cfg: Configuration, af: Airframe, speed) -> Evaluation:
+    """Trim the aerostat and solve the tether at wind speed(s) ``speed`` [m/s] at the hull.
+
+    Force balance on the aerostat at the confluence point (methods.md §1.9):
+    T_x = D, T_z = F_B + L_dyn - W_a; then the tether march down to the winch.
+    """
+    speed = np.asarray(speed, float)
+    eq = equilibrium(af, cfg.aero, speed)
+    loads = aero_loads(af, cfg.aero, eq.alpha, speed)
+    tx = loads.drag * np.ones_like(eq.alpha)
+    tz = (af.buoyancy - af.aerostat_weight + loads.lift) * np.ones_like(eq.alpha)
+    profile = cfg.wind_profile
+    teth = solve_tether(
+        lambda h: (tx, tz),
+        af.tether_length,
+        cfg.tether,
+        af.air_density,
+        lambda z, h: profile_speed(profile, z, speed, h),
+        af.tether_weight_per_length,
+        cfg.tether_segments,
+        sheared=profile.kind != "uniform",
+    )
+    tmax = np.max(teth.tension, axis=0)
+    sf = cfg.tether.breaking_strength / np.maximum(tmax, 1e-9)
+    stall = np.radians(cfg.aero.fin_stall_angle_deg)
+    flags = {
+        "tether_over_45": teth.max_angle_from_vertical > np.radians(45.0),
+        "past_stall": np.abs(eq.alpha) > stall,
+        "no_free_lift": (af.free_lift <= 0.0) * np.ones_like(eq.alpha, dtype=bool),
+        "slack": teth.slack | (tz <= 0.0),
+        "low_safety_factor": sf < req.min_tether_safety_factor,
+        "unstable": ~eq.found | (eq.moment_slope >= 0.0),
+    }
+    return Evaluation(af, speed, eq, loads.lift, tx, tx, tz, teth, sf, flags)
+
+
+@dataclass(frozen=True)
+class PerformanceTable:
+    """Performance versus wind speed (one row per speed). Columns as arrays, SI units:
+    wind_speed [m/s], alpha_eq [deg], dynamic_lift [N], drag [N], blow_by [m], flying_height [m],
+    altitude_loss [m], tension_top [N], tension_winch [N], tether_angle_top [deg from vertical],
+    tether_angle_winch [deg from vertical], safety_factor [-], cm_alpha [1/rad] (C_m slope about
+    the confluence point; NaN-free: 0 at zero wind, where C_m is undefined), flags (dict of bool
+    arrays) and ``limited`` (any flag set)."""
+
+    wind_speed: np.ndarray
+    alpha_eq: np.ndarray
+    dynamic_lift: np.ndarray
+    drag: np.ndarray
+    blow_by: np.ndarray
+    flying_height: np.ndarray
+    altitude_loss: np.ndarray
+    tension_top: np.ndarray
+    tension_winch: np.ndarray
+    tether_angle_top: np.ndarray
+    tether_angle_winch: np.ndarray
+    safety_factor: np.ndarray
+    cm_alpha: np.ndarray
+    flags: dict
+
+    @property
+    def limited(self) -> np.ndarray:
+        """True for rows where any operating-limit flag is set."""
+        out = np.zeros(self.wind_speed.shape, bool)
+        for v in self.flags.values():
+            out |= v
+        return out
+
+    def rows(self) -> list[dict]:
+        """Rows as dicts with units in the column names (for tables and CSV)."""
+        out = []
+        for i, v in enumerate(self.wind_speed):
+            out.append({
+                "wind_speed_m_s": float(v),
+                "alpha_eq_deg": float(self.alpha_eq[i]),
+                "dynamic_lift_N": float(self.dynamic_lift[i]),
+                "drag_N": float(self.drag[i]),
+                "blow_by_m": float(self.blow_by[i]),
+                "flying_height_m": float(self.flying_height[i]),
+                "altitude_loss_m": float(self.altitude_loss[i]),
+                "tension_top_N": float(self.tension_top[i]),
+                "tension_winch_N": float(self.tension_winch[i]),
+                "tether_angle_top_deg": float(self.tether_angle_top[i]),
+                "tether_angle_winch_deg": float(self.tether_angle_winch[i]),
+                "safety_factor": float(self.safety_factor[i]),
+                "cm_alpha_per_rad": float(self.cm_alpha[i]),
+                "flags": "; ".join(FLAG_TEXT[k] for k, f in self.flags.items() if f[i]),
+            })
+        return out
+
+
+def performance_table(ev: Evaluation) -> PerformanceTable:
+    """Collect a :class:`PerformanceTable` from an :class:`Evaluation` over a wind sweep."""
+    af = ev.airframe
+    q = 0.5 * af.air_density * ev.speed**2
+    denom = q * af.hull.reference_area * af.hull.length
+    cma = np.where(q > 0, ev.equilibrium.moment_slope / np.where(q > 0, denom, 1.0), 0.0)
+    t = ev.tether
+    return PerformanceTable(
+        wind_speed=ev.speed,
+        alpha_eq=np.degrees(ev.equilibrium.alpha),
+        dynamic_lift=ev.lift,
+        drag=ev.drag,
+        blow_by=t.blow_by,
+        flying_height=t.height,
+        altitude_loss=af.tether_length - t.height,
+        tension_top=t.tension_top,
+        tension_winch=t.tension_winch,
+        tether_angle_top=90.0 - np.degrees(t.elevation[0]),
+        tether_angle_winch=90.0 - np.degrees(t.elevation[-1]),
+        safety_factor=ev.safety_factor,
+        cm_alpha=cma,
+        flags=ev.flags,
+    )
+
+
+def wind_speeds(req: Requirement) -> np.ndarray:
+    """Sweep speeds 0, step, ..., wind_max [m/s] (the last point is wind_max itself)."""
+    n = int(np.floor(req.wind_max / req.wind_step + 1e-9))
+    v = np.arange(n + 1) * req.wind_step
+    if v[-1] < req.wind_max - 1e-9:
+        v = np.append(v, req.wind_max)
+    return v
+
+
+def cm_curve(af: Airframe, cfg: Configuration, speed: float, alpha_deg=None):
+    """C_m about the confluence point versus alpha [deg] at wind ``speed`` [m/s] (> 0)."""
+    a = np.arange(-10.0, 30.01, 1.0) if alpha_deg is None else np.asarray(alpha_deg, float)
+    return a, moment_coefficient(af, cfg.aero, np.radians(a), max(float(speed), 1.0))

@@ -1,0 +1,57 @@
+"""Named parameter sets: the thesis baseline (Mahmood 2020) and its optimised configuration.
+
+Which numbers are calibrated and which are predicted (the tests say the same):
+
+* calibrated from thesis Table 2.2 (100 m3 hull, 300 m): hull fabric 130 g/m2 (sphere hull
+  13.54 kg), helium 0.169 kg/m3 (16.9 kg), tether 20 g/m (6 kg per 300 m), miscellaneous mass
+  0.30 x hull (4.7/15.57), fin planform ratio 0.227 of hull area (fins 7.8 kg with 4 fins of
+  fabric factor 2.2 at 130 g/m2);
+* chosen, not calibrated: fineness ratio 4.0 (the NPL standard shape, methods.md S7) and
+  volume 170 m3 (the tactical class, thesis §2.3.1);
+* predicted: the baseline total mass (thesis 90.65 kg) and the NPL hull mass of Table 2.2.
+"""
+
+from __future__ import annotations
+
+from dataclasses import replace
+
+from .inputs import Configuration, FinSpec, HullSpec, LiftingGas, Requirement
+
+#: Thesis preset: fin planform / hull area, calibrated to Table 2.2's 7.8 kg of fins.
+THESIS_FIN_AREA_RATIO = 0.227
+#: Blow-by limit of the thesis preset [m] (not found in the thesis: 0.1 x altitude, methods.md G5).
+THESIS_BLOW_BY_LIMIT = 30.0
+
+
+def thesis_requirement() -> Requirement:
+    """10 kg payload at 300 m, sea-level site, ISA, sweep 0-20 m/s, design wind 15 m/s."""
+    return Requirement(payload_mass=10.0, altitude=300.0, site_elevation=0.0, isa_offset=0.0,
+                       wind_max=20.0, wind_step=1.0, design_wind=15.0,
+                       blow_by_limit=THESIS_BLOW_BY_LIMIT)
+
+
+def thesis_configuration(volume: float | None = 170.0) -> Configuration:
+    """Thesis constants: fixed helium density 0.169 kg/m3, 130 g/m2 fabric, 20 g/m tether."""
+    return Configuration(
+        gas=LiftingGas(kind="helium", purity=1.0, superpressure=0.0, density_model="fixed"),
+        hull=HullSpec(fineness_ratio=4.0, nose_fraction=0.432, volume=volume),
+        fins=FinSpec(area_ratio=THESIS_FIN_AREA_RATIO),
+        misc_mass_ratio=0.30,
+    )
+
+
+def thesis_baseline() -> tuple[Requirement, Configuration]:
+    """(Requirement, Configuration) of the thesis baseline: 170 m3, f = 4.0."""
+    return thesis_requirement(), thesis_configuration(170.0)
+
+
+#: Design variables of the optimised configuration found by the optimisation module with the
+#: thesis preset (fineness ratio [-], fin-area change [%], fin position [-]); volume sized.
+THESIS_OPTIMUM = {"fineness_ratio": 4.0, "area_change": 0.0, "position": 0.68}
+
+
+def thesis_optimised() -> tuple[Requirement, Configuration]:
+    """(Requirement, Configuration) of the optimised design (volume sized to the blow-by limit)."""
+    req, cfg = thesis_baseline()
+    cfg = cfg.with_design_variables(volume=None, **THESIS_OPTIMUM)
+    return req, replace(cfg)

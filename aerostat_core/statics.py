@@ -1,0 +1,196 @@
+"""Aerodynamic loads, moment balance about the confluence point, equilibrium and stability.
+
+Sign conventions (methods.md §1): earth X downwind, Z up; the nose faces the wind; alpha is the
+nose-up pitch (= angle of attack in a horizontal wind); moments are nose-up positive.
+A body point (xi, z) sits at X = xi cos a + z sin a, Z = -xi sin a + z cos a from the nose.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from .aerodynamics import (
+    body_to_wind,
+    fin_lift_drag,
+    hoerner_volumetric_drag,
+    hull_axial,
+    hull_crossflow,
+    hull_inviscid,
+    reynolds_number,
+)
+from .airframe import Airframe
+from .inputs import AeroModel
+
+
+@dataclass(frozen=True)
+class AeroLoads:
+    """Loads at (alpha, q): lift and drag [N] of hull and fins, and the hull's couple about xi_m
+    [N m]. Hull forces act at xi_m (body axis), fin forces at the fin aerodynamic centre."""
+
+    hull_lift: np.ndarray
+    hull_drag: np.ndarray
+    hull_moment: np.ndarray
+    fin_lift: np.ndarray
+    fin_drag: np.ndarray
+
+    @property
+    def lift(self) -> np.ndarray:
+        """Total dynamic lift [N]."""
+        return self.hull_lift + self.fin_lift
+
+    @property
+    def drag(self) -> np.ndarray:
+        """Total drag [N]."""
+        return self.hull_drag + self.fin_drag
+
+
+def axial_drag_coefficient(af: Airframe, aero: AeroModel, speed):
+    """Hull zero-lift drag coefficient on V^(2/3): Hoerner's C_DV(f, Re) or the given value."""
+    if aero.hull_axial_drag is not None:
+        return np.full(np.broadcast(af.hull.length, speed).shape, aero.hull_axial_drag)
+    re = reynolds_number(af.air_density, speed, af.hull.length, af.viscosity)
+    return hoerner_volumetric_drag(af.hull.fineness_ratio, re)
+
+
+def aero_loads(af: Airframe, aero: AeroModel, alpha, speed, cd0=None) -> AeroLoads:
+    """Hull and fin loads at angle of attack ``alpha`` [rad] and airspeed ``speed`` [m/s].
+
+    Hull (Jones & DeLaurier): N_h = inviscid + cross-flow, A_h = axial + inviscid,
+    M_h about xi_m; fins: lift and drag from :func:`aerostat_core.aerodynamics.fin_lift_drag`.
+    ``cd0`` (volumetric drag coefficient) may be passed to avoid recomputing it.
+    """
+    q = 0.5 * af.air_density * np.asarray(speed, float) ** 2
+    if cd0 is None:
+        cd0 = axial_drag_coefficient(af, aero, speed)
+    h = af.hull
+    dk = h.k2 - h.k1
+    n_i, a_i, m_i = hull_inviscid(q, alpha, dk, aero.hull_efficiency, af.i1, af.i3)
+    n_c, m_c = hull_crossflow(q, alpha, aero.hull_crossflow_drag, af.j1, af.j2)
+    a_x = hull_axial(q, alpha, cd0, h.reference_area)
+    lift_h, drag_h = body_to_wind(n_i + n_c, a_i + a_x, alpha)
+    fn = af.fins
+    lift_f, drag_f = fin_lift_drag(
+        q, alpha, fn.lift_slope, aero.fin_efficiency, np.radians(aero.fin_stall_angle_deg),
+        fn.lifting_area, fn.area_total, aero.fin_zero_lift_drag, fn.aspect_ratio, fn.oswald,
+    )
+    return AeroLoads(lift_h, drag_h, m_i + m_c, lift_f, drag_f)
+
+
+def _ccw(dxi, dz, ca, sa, fx, fz):
+    """Counter-clockwise moment of earth force (fx, fz) at body offset (dxi, dz) from C."""
+    dx = dxi * ca + dz * sa
+    dzz = -dxi * sa + dz * ca
+    return dx * fz - dzz * fx
+
+
+def moment_about_confluence(af: Airframe, aero: AeroModel, alpha, speed, cd0=None):
+    """Nose-up pitching moment about the confluence point M_C(alpha) [N m].
+
+    M_C = -sum_P (dX_P F_Z,P - dZ_P F_X,P) + M_h, over buoyancy (0, F_B) at the centre of
+    buoyancy, weight (0, -W_a) at the CG, hull aero (D_h, L_h) at xi_m with its couple M_h, and
+    fin aero (D_f, L_f) at the fin aerodynamic centre. The tether acts at C: no moment.
+
+    Parameters
+    ----------
+    af : Airframe
+    aero : AeroModel
+    alpha : array_like
+        Pitch = angle of attack [rad].
+    speed : array_like
+        Horizontal wind at the hull [m/s].
+
+    Notes
+    -----
+    Source: methods.md §1.8 (Rajani et al. 2010 method, S2/S4).
+    """
+    ld = aero_loads(af, aero, alpha, speed, cd0)
+    ca, sa = np.cos(alpha), np.sin(alpha)
+    xc, zc = af.xi_c, af.z_c
+    m = _ccw(af.hull.xi_cb - xc, -zc, ca, sa, 0.0, af.buoyancy)
+    m = m + _ccw(af.mass.xi_cg - xc, af.mass.z_cg - zc, ca, sa, 0.0, -af.aerostat_weight)
+    m = m + _ccw(af.xi_m - xc, -zc, ca, sa, ld.hull_drag, ld.hull_lift)
+    m = m + _ccw(af.fins.xi_ac - xc, -zc, ca, sa, ld.fin_drag, ld.fin_lift)
+    return -m + ld.hull_moment
+
+
+#: Angle-of-attack grid used to bracket the equilibrium [rad].
+ALPHA_GRID = np.radians(np.arange(-30.0, 60.01, 1.0))
+
+
+@dataclass(frozen=True)
+class Equilibrium:
+    """Trim solution: alpha [rad], dM/dalpha there [N m/rad] (negative = statically stable),
+    and ``found`` (False where no stable root exists; alpha is then the least-moment angle)."""
+
+    alpha: np.ndarray
+    moment_slope: np.ndarray
+    found: np.ndarray
+
+
+def equilibrium(af: Airframe, aero: AeroModel, speed, iterations: int = 40) -> Equilibrium:
+    """Equilibrium pitch: the stable root of M_C(alpha) = 0 nearest to alpha = 0.
+
+    Brackets on a 1 deg grid over [-30, 60] deg (roots where M_C falls through zero), then refines
+    every bracket at once with the Illinois (modified regula falsi) method to 1e-10 rad.
+
+    Parameters
+    ----------
+    af : Airframe
+    aero : AeroModel
+    speed : array_like
+        Wind speed at the hull [m/s]; broadcasts with the airframe's arrays.
+
+    Returns
+    -------
+    Equilibrium
+    """
+    speed = np.asarray(speed, float)
+    shape = np.broadcast(af.hull.length, speed).shape
+    cd0 = axial_drag_coefficient(af, aero, speed)
+    grid = ALPHA_GRID.reshape((-1,) + (1,) * len(shape))
+    m = moment_about_confluence(af, aero, grid, speed, cd0) * np.ones((1,) + shape)
+    down = (m[:-1] > 0.0) & (m[1:] <= 0.0)
+    mid = 0.5 * (grid[:-1] + grid[1:]) * np.ones((1,) + shape)
+    score = np.where(down, np.abs(mid), np.inf)
+    k = np.argmin(score, axis=0)
+    found = np.isfinite(np.min(score, axis=0))
+    idx = np.indices(shape)
+    lo = ALPHA_GRID[k]
+    hi = ALPHA_GRID[k + 1]
+    f_lo = m[(k,) + tuple(idx)]
+    f_hi = m[(k + 1,) + tuple(idx)]
+    # Illinois iterations on all brackets at once; x is the running root estimate
+    side = np.zeros(shape)
+    x = 0.5 * (lo + hi)
+    for _ in range(iterations):
+        same = f_hi == f_lo
+        x = np.where(same, 0.5 * (lo + hi), (lo * f_hi - hi * f_lo) / np.where(same, 1.0, f_hi - f_lo))
+        fx = moment_about_confluence(af, aero, x, speed, cd0) * np.ones(shape)
+        pos = fx > 0.0
+        lo = np.where(pos, x, lo)
+        f_lo = np.where(pos, fx, np.where(side == -1, 0.5 * f_lo, f_lo))
+        hi = np.where(pos, hi, x)
+        f_hi = np.where(pos, np.where(side == 1, 0.5 * f_hi, f_hi), fx)
+        side = np.where(pos, 1, -1)
+        if np.all((np.abs(hi - lo) < 1e-10) | (np.abs(fx) <= 1e-9 * (1.0 + np.abs(f_lo) + np.abs(f_hi)))):
+            break
+    alpha = x
+    # where no stable root: the grid angle with the least |moment|
+    kmin = np.argmin(np.abs(m), axis=0)
+    alpha = np.where(found, alpha, ALPHA_GRID[kmin])
+    h = 1e-5
+    slope = (
+        moment_about_confluence(af, aero, alpha + h, speed, cd0)
+        - moment_about_confluence(af, aero, alpha - h, speed, cd0)
+    ) / (2 * h)
+    return Equilibrium(alpha=alpha, moment_slope=slope * np.ones(shape), found=found)
+
+
+def moment_coefficient(af: Airframe, aero: AeroModel, alpha, speed):
+    """C_m = M_C / (q V^(2/3) l) about the confluence point [-] (speed > 0)."""
+    q = 0.5 * af.air_density * np.asarray(speed, float) ** 2
+    return moment_about_confluence(af, aero, alpha, speed) / (
+        q * af.hull.reference_area * af.hull.length
+    )

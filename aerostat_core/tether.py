@@ -1,0 +1,202 @@
+"""Static tether: segment-by-segment march from the confluence point to the winch.
+
+The scheme of Rajani, Pant & Sudhakar (2010) (thesis Fig. 3.10; methods.md §1.9), written as an
+ODE in unstretched arc length and integrated with Heun's method (second order), vectorised over
+any batch of wind speeds or designs. Extensions over the thesis: elastic stretch (T/EA), air
+buoyancy of the line, tangential skin friction, and a height-varying wind.
+
+Going down the tether (ds > 0 towards the winch), with elevation theta = atan2(T_z, T_x):
+  dT_x/ds = f_x,  dT_z/ds = f_z - w',  dX/ds = -(1 + T/EA) cos theta,  dZ/ds = -(1 + T/EA) sin theta
+where w' is the weight per length net of air buoyancy, and the drag per length on the relative wind
+(U, 0) split into normal and tangential parts (MoorDyn convention):
+  f = 1/2 rho d C_dn |U sin theta| U sin theta (sin theta, -cos theta)
+    + 1/2 rho pi d C_dt |U cos theta| U cos theta (cos theta, sin theta).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+
+import numpy as np
+
+from .materials import TetherSpec
+
+
+@dataclass(frozen=True)
+class TetherSolution:
+    """Static tether shape and loads (arrays: first axis = node from the top (0) to the winch).
+
+    x, z : node positions relative to the winch [m] (x downwind, z up); top = confluence point.
+    tension : tension magnitude at each node [N].
+    elevation : tether elevation above the horizontal at each node [rad].
+    blow_by : horizontal offset of the top from the winch [m]; height : its height [m].
+    slack : True where the vertical tension fell to zero or below somewhere along the line.
+    """
+
+    x: np.ndarray
+    z: np.ndarray
+    tension: np.ndarray
+    elevation: np.ndarray
+    blow_by: np.ndarray
+    height: np.ndarray
+    slack: np.ndarray
+
+    @property
+    def tension_top(self) -> np.ndarray:
+        """Tension at the confluence point [N]."""
+        return self.tension[0]
+
+    @property
+    def tension_winch(self) -> np.ndarray:
+        """Tension at the winch [N]."""
+        return self.tension[-1]
+
+    @property
+    def max_angle_from_vertical(self) -> np.ndarray:
+        """Largest tether angle from the vertical along the line [rad]."""
+        return np.max(0.5 * np.pi - self.elevation, axis=0)
+
+
+def _line_load(tx, tz, u, rho, spec: TetherSpec, w_line):
+    t = np.hypot(tx, tz)
+    tsafe = np.where(t > 0.0, t, 1.0)
+    ct = np.where(t > 0.0, tx / tsafe, 0.0)
+    st = np.where(t > 0.0, tz / tsafe, 1.0)
+    un = u * st
+    ut = u * ct
+    kn = 0.5 * rho * spec.diameter * spec.normal_drag_coefficient * np.abs(un) * un
+    kt = 0.5 * rho * np.pi * spec.diameter * spec.tangential_drag_coefficient * np.abs(ut) * ut
+    fx = kn * st + kt * ct
+    fz = -kn * ct + kt * st - w_line
+    stretch = 1.0 + t / spec.axial_stiffness
+    return fx, fz, stretch * ct, stretch * st
+
+
+def march(
+    top_tension_x,
+    top_tension_z,
+    length: float,
+    spec: TetherSpec,
+    air_density,
+    wind: Callable[[np.ndarray], np.ndarray],
+    heights,
+    weight_per_length: float,
+    segments: int = 100,
+):
+    """Integrate the tether from the top (confluence point) down to the winch.
+
+    Parameters
+    ----------
+    top_tension_x, top_tension_z : array_like
+        Tension components at the top [N] = (aerostat drag, aerostat net lift).
+    length : float
+        Unstretched tether length [m].
+    spec : TetherSpec
+    air_density : array_like
+        [kg/m3] (uniform along the line).
+    wind : callable
+        ``wind(z)`` -> horizontal wind [m/s] at heights ``z`` [m] (broadcasts).
+    heights : array_like
+        Estimated node heights above the winch [m], shape (segments + 1, ...), used to look up
+        the wind (the caller iterates for sheared wind).
+    weight_per_length : float
+        Line weight in air net of buoyancy [N/m].
+    segments : int
+        Number of segments n_s.
+
+    Returns
+    -------
+    tx, tz, dx, dz : ndarray, shape (segments + 1, ...)
+        Tension components and node offsets from the top [m].
+    """
+    tx0 = np.asarray(top_tension_x, float)
+    tz0 = np.asarray(top_tension_z, float)
+    shape = np.broadcast(tx0, tz0, heights[0]).shape
+    ds = length / segments
+    tx = np.empty((segments + 1,) + shape)
+    tz = np.empty_like(tx)
+    x = np.empty_like(tx)
+    z = np.empty_like(tx)
+    tx[0], tz[0], x[0], z[0] = tx0, tz0, 0.0, 0.0
+    u_nodes = wind(heights) * np.ones((segments + 1,) + shape)
+    for i in range(segments):
+        fx1, fz1, cx1, cz1 = _line_load(tx[i], tz[i], u_nodes[i], air_density, spec,
+                                        weight_per_length)
+        px, pz = tx[i] + ds * fx1, tz[i] + ds * fz1
+        fx2, fz2, cx2, cz2 = _line_load(px, pz, u_nodes[i + 1], air_density, spec,
+                                        weight_per_length)
+        tx[i + 1] = tx[i] + 0.5 * ds * (fx1 + fx2)
+        tz[i + 1] = tz[i] + 0.5 * ds * (fz1 + fz2)
+        x[i + 1] = x[i] - 0.5 * ds * (cx1 + cx2)
+        z[i + 1] = z[i] - 0.5 * ds * (cz1 + cz2)
+    return tx, tz, x, z
+
+
+def solve_tether(
+    top_tension: Callable[[np.ndarray], tuple[np.ndarray, np.ndarray]],
+    length: float,
+    spec: TetherSpec,
+    air_density,
+    wind: Callable[[np.ndarray, np.ndarray], np.ndarray],
+    weight_per_length: float,
+    segments: int = 100,
+    sheared: bool = True,
+    max_passes: int = 8,
+    tol: float = 1e-6,
+) -> TetherSolution:
+    """Static tether shape with the wind evaluated at the converged node heights.
+
+    Parameters
+    ----------
+    top_tension : callable
+        ``top_tension(height)`` -> (T_x, T_z) at the top [N] given the top's height [m] (the
+        aerostat's drag can depend on the wind at its height).
+    length : float
+        Unstretched length [m].
+    spec : TetherSpec
+    air_density : array_like [kg/m3]
+    wind : callable
+        ``wind(z, height)`` -> wind [m/s] at heights ``z`` given the top height ``height``.
+    weight_per_length : float [N/m]
+    segments : int
+    sheared : bool
+        False when the wind is uniform in height (one pass is exact).
+    max_passes : int
+        Fixed-point passes on the node heights (sheared wind).
+    tol : float
+        Height convergence tolerance [m].
+
+    Returns
+    -------
+    TetherSolution
+    """
+    s = np.linspace(0.0, length, segments + 1)
+    height = np.asarray(length, float)
+    tx0, tz0 = top_tension(height)
+    shape = np.broadcast(tx0, tz0).shape
+    heights = (length - s).reshape((-1,) + (1,) * len(shape)) * np.ones((1,) + shape)
+    height = np.full(shape, float(length))
+    for _ in range(max_passes if sheared else 1):
+        tx0, tz0 = top_tension(height)
+        tx, tz, x, z = march(
+            tx0, tz0, length, spec, air_density, lambda zz, h=height: wind(zz, h), heights,
+            weight_per_length, segments,
+        )
+        new_height = -z[-1]
+        heights = np.maximum(z - z[-1], 0.0)
+        done = np.all(np.abs(new_height - height) < tol)
+        height = new_height
+        if done:
+            break
+    tension = np.hypot(tx, tz)
+    elevation = np.arctan2(tz, tx)
+    return TetherSolution(
+        x=x - x[-1],
+        z=z - z[-1],
+        tension=tension,
+        elevation=elevation,
+        blow_by=-x[-1],
+        height=-z[-1],
+        slack=np.any(tz <= 0.0, axis=0),
+    )

@@ -1,0 +1,48 @@
+"""Mean wind profiles for the static engine (methods.md §1.2; dynamics.md §2.1)."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .inputs import WindProfile
+
+#: Heights below this are clipped when evaluating sheared profiles [m].
+MIN_PROFILE_HEIGHT = 1.0
+
+
+def profile_speed(profile: WindProfile, z, top_speed, top_height):
+    """Wind speed at height ``z`` for a profile that gives ``top_speed`` at ``top_height``.
+
+    uniform: U = U_top;  power: U = U_top (z/z_top)^p;
+    log: U = U_top ln(z/z0)/ln(z_top/z0) (z0 = roughness length).
+
+    Parameters
+    ----------
+    profile : WindProfile
+    z : array_like
+        Height above the winch [m] (clipped to >= 1 m).
+    top_speed : array_like
+        Wind at the aerostat [m/s].
+    top_height : array_like
+        Aerostat height above the winch [m].
+
+    Notes
+    -----
+    Sources: Hellmann power law (exponent 1/7 for open terrain); logarithmic law of the neutral
+    surface layer (e.g. Stull, *An Introduction to Boundary Layer Meteorology*, 1988).
+
+    Examples
+    --------
+    >>> from aerostat_core.inputs import WindProfile
+    >>> round(float(profile_speed(WindProfile("power"), 150.0, 10.0, 300.0)), 3)
+    9.057
+    """
+    u = np.asarray(top_speed, float)
+    if profile.kind == "uniform":
+        return u * np.ones_like(np.asarray(z, float))
+    zc = np.maximum(np.asarray(z, float), MIN_PROFILE_HEIGHT)
+    ht = np.maximum(np.asarray(top_height, float), MIN_PROFILE_HEIGHT)
+    if profile.kind == "power":
+        return u * (zc / ht) ** profile.exponent
+    z0 = profile.roughness_length
+    return u * np.log(np.maximum(zc, 2 * z0) / z0) / np.log(np.maximum(ht, 2 * z0) / z0)
