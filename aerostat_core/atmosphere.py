@@ -1,6 +1,8 @@
 """International Standard Atmosphere (troposphere) with a temperature offset.
 
-Valid from -500 m to 11 km geopotential altitude. The offset shifts temperature at constant
+Inputs are geometric altitudes above mean sea level, converted to geopotential altitude
+H = r0 h/(r0 + h) before the ISA formulas (the difference is 19 m at 11 km). Valid from -500 m to
+11 km. The offset shifts temperature at constant
 pressure (the usual "ISA + dT" convention), so density falls on a hot day.
 """
 
@@ -33,15 +35,15 @@ class AtmosphereState:
 
 
 def isa(altitude, isa_offset=0.0) -> AtmosphereState:
-    """Air state at a geopotential altitude.
+    """Air state at a geometric altitude.
 
-    T_ISA = T0 - L h;  P = P0 (T_ISA/T0)^(g0/(R L));  T = T_ISA + dT;  rho = P/(R T);
+    H = r0 h/(r0 + h);  T_ISA = T0 - L H;  P = P0 (T_ISA/T0)^(g0/(R L));  T = T_ISA + dT;  rho = P/(R T);
     mu = beta T^1.5/(T + S) (Sutherland).
 
     Parameters
     ----------
     altitude : array_like
-        Geopotential altitude above mean sea level [m], valid [-500, 11000].
+        Geometric altitude above mean sea level [m], valid [-500, 11000].
     isa_offset : array_like
         Temperature offset dT [K].
 
@@ -60,7 +62,8 @@ def isa(altitude, isa_offset=0.0) -> AtmosphereState:
     """
     h = np.asarray(altitude, dtype=float)
     _check_altitude(np.atleast_1d(h))
-    t_isa = c.ISA_T0 - c.ISA_LAPSE * h
+    hp = c.ISA_EARTH_RADIUS * h / (c.ISA_EARTH_RADIUS + h)
+    t_isa = c.ISA_T0 - c.ISA_LAPSE * hp
     p = c.ISA_P0 * (t_isa / c.ISA_T0) ** (c.G0 / (c.R_AIR * c.ISA_LAPSE))
     t = t_isa + np.asarray(isa_offset, dtype=float)
     rho = p / (c.R_AIR * t)

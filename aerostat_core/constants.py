@@ -31,6 +31,8 @@ ISA_P0 = 101325.0
 ISA_LAPSE = 0.0065
 #: Upper limit of the troposphere model used here [m] (geopotential). Source: ISO 2533:1975.
 ISA_TROPOPAUSE = 11000.0
+#: Earth radius used to convert geometric to geopotential altitude [m]. Source: ISO 2533:1975.
+ISA_EARTH_RADIUS = 6356766.0
 #: Lowest altitude accepted by the atmosphere model [m] (Dead Sea shore is about -430 m).
 ISA_MIN_ALTITUDE = -500.0
 #: Sutherland's law reference constant [kg/(m s K^0.5)]. Source: U.S. Standard Atmosphere 1976.

@@ -311,7 +311,8 @@ class Configuration:
     gas_price : float or None
         Lifting-gas price [USD/m3], valid [0, 1000]; ``None`` takes the default of the gas kind.
     tether_segments : int
-        Segments of the static tether march, valid [10, 5000].
+        Segments of the static tether march, valid [10, 5000]. Heun's method with 50 segments is
+        within 1 mm of a 2000-segment solution for a 300 m tether (tests/core/test_tether.py).
     """
 
     gas: LiftingGas = field(default_factory=LiftingGas)
@@ -325,7 +326,7 @@ class Configuration:
     wind_profile: WindProfile = field(default_factory=WindProfile)
     misc_mass_ratio: float = 0.30
     gas_price: float | None = None
-    tether_segments: int = 100
+    tether_segments: int = 50
 
     def __post_init__(self) -> None:
         o = "Configuration"

@@ -58,19 +58,21 @@ class TetherSolution:
         return np.max(0.5 * np.pi - self.elevation, axis=0)
 
 
-def _line_load(tx, tz, u, rho, spec: TetherSpec, w_line):
-    t = np.hypot(tx, tz)
-    tsafe = np.where(t > 0.0, t, 1.0)
-    ct = np.where(t > 0.0, tx / tsafe, 0.0)
-    st = np.where(t > 0.0, tz / tsafe, 1.0)
+def _line_load(tx, tz, u, kn, kt, w_line, inv_ea):
+    """Line load per length (f_x, f_z) [N/m] and stretched direction (dX/ds, dZ/ds) [-].
+
+    ``kn`` = 1/2 rho d C_dn, ``kt`` = 1/2 rho pi d C_dt [kg/m2]; lean on purpose: it runs
+    2 x segments times per march on small arrays, where numpy's per-call overhead dominates.
+    """
+    t = np.sqrt(tx * tx + tz * tz) + 1e-300
+    ct = tx / t
+    st = tz / t
     un = u * st
     ut = u * ct
-    kn = 0.5 * rho * spec.diameter * spec.normal_drag_coefficient * np.abs(un) * un
-    kt = 0.5 * rho * np.pi * spec.diameter * spec.tangential_drag_coefficient * np.abs(ut) * ut
-    fx = kn * st + kt * ct
-    fz = -kn * ct + kt * st - w_line
-    stretch = 1.0 + t / spec.axial_stiffness
-    return fx, fz, stretch * ct, stretch * st
+    fn = kn * np.abs(un) * un
+    ft = kt * np.abs(ut) * ut
+    stretch = 1.0 + t * inv_ea
+    return fn * st + ft * ct, ft * st - fn * ct - w_line, stretch * ct, stretch * st
 
 
 def march(
@@ -82,7 +84,7 @@ def march(
     wind: Callable[[np.ndarray], np.ndarray],
     heights,
     weight_per_length: float,
-    segments: int = 100,
+    segments: int = 50,
 ):
     """Integrate the tether from the top (confluence point) down to the winch.
 
@@ -120,16 +122,20 @@ def march(
     z = np.empty_like(tx)
     tx[0], tz[0], x[0], z[0] = tx0, tz0, 0.0, 0.0
     u_nodes = wind(heights) * np.ones((segments + 1,) + shape)
+    rho = np.asarray(air_density, float)
+    kn = 0.5 * rho * spec.diameter * spec.normal_drag_coefficient
+    kt = 0.5 * rho * np.pi * spec.diameter * spec.tangential_drag_coefficient
+    inv_ea = 1.0 / spec.axial_stiffness
+    w = weight_per_length
+    h = 0.5 * ds
     for i in range(segments):
-        fx1, fz1, cx1, cz1 = _line_load(tx[i], tz[i], u_nodes[i], air_density, spec,
-                                        weight_per_length)
-        px, pz = tx[i] + ds * fx1, tz[i] + ds * fz1
-        fx2, fz2, cx2, cz2 = _line_load(px, pz, u_nodes[i + 1], air_density, spec,
-                                        weight_per_length)
-        tx[i + 1] = tx[i] + 0.5 * ds * (fx1 + fx2)
-        tz[i + 1] = tz[i] + 0.5 * ds * (fz1 + fz2)
-        x[i + 1] = x[i] - 0.5 * ds * (cx1 + cx2)
-        z[i + 1] = z[i] - 0.5 * ds * (cz1 + cz2)
+        fx1, fz1, cx1, cz1 = _line_load(tx[i], tz[i], u_nodes[i], kn, kt, w, inv_ea)
+        fx2, fz2, cx2, cz2 = _line_load(tx[i] + ds * fx1, tz[i] + ds * fz1, u_nodes[i + 1],
+                                        kn, kt, w, inv_ea)
+        tx[i + 1] = tx[i] + h * (fx1 + fx2)
+        tz[i + 1] = tz[i] + h * (fz1 + fz2)
+        x[i + 1] = x[i] - h * (cx1 + cx2)
+        z[i + 1] = z[i] - h * (cz1 + cz2)
     return tx, tz, x, z
 
 
@@ -140,7 +146,7 @@ def solve_tether(
     air_density,
     wind: Callable[[np.ndarray, np.ndarray], np.ndarray],
     weight_per_length: float,
-    segments: int = 100,
+    segments: int = 50,
     sheared: bool = True,
     max_passes: int = 8,
     tol: float = 1e-6,
@@ -200,3 +206,57 @@ def solve_tether(
         height=-z[-1],
         slack=np.any(tz <= 0.0, axis=0),
     )
+
+
+def point_aerostat_tether(
+    mass: float,
+    volume: float,
+    drag_area: float,
+    spec: TetherSpec,
+    length: float,
+    air_density: float,
+    wind: Callable[[np.ndarray], np.ndarray],
+    g: float,
+    segments: int = 200,
+    max_passes: int = 30,
+) -> TetherSolution:
+    """Static equilibrium of a point (spherical) aerostat on an elastic tether.
+
+    Top tension = (1/2 rho C_D A U(z_top)^2, rho V g - M g): drag along the wind at the aerostat's
+    height and net static lift; the tether shape from :func:`solve_tether`, iterated until the
+    top height (and so the wind there) converges. Used for the reference cases R1/R2 of
+    dynamics.md §3.1 and as the initial condition of the point-aerostat dynamic mode.
+
+    Parameters
+    ----------
+    mass : float
+        Aerostat mass [kg].
+    volume : float
+        Displaced volume [m3].
+    drag_area : float
+        C_D A [m2].
+    spec : TetherSpec
+    length : float
+        Unstretched tether length [m].
+    air_density : float
+        Uniform air density [kg/m3].
+    wind : callable
+        ``wind(z)`` -> horizontal wind [m/s] at height ``z`` [m] above the anchor.
+    g : float
+        Gravity [m/s2].
+    segments : int
+        Tether segments.
+
+    Returns
+    -------
+    TetherSolution
+    """
+    net = air_density * volume * g - mass * g
+    w_line = (spec.linear_density - air_density * np.pi * spec.diameter**2 / 4.0) * g
+
+    def top(h):
+        u = wind(h)
+        return 0.5 * air_density * drag_area * np.abs(u) * u, net * np.ones_like(u)
+
+    return solve_tether(top, length, spec, air_density, lambda z, h: wind(z), w_line,
+                        segments, sheared=True, max_passes=max_passes, tol=1e-9)

@@ -1,0 +1,68 @@
+"""Speed of the core engine: prints medians (no pass/fail; see issue #2 for the targets).
+
+Run from the repository root: ``.venv/bin/python -m benchmarks.bench_core``. Targets: full design with a 21-point sweep
+and tether profiles <= 5 ms; sizing to a blow-by limit <= 50 ms; batch evaluation >= 10,000
+designs per second.
+"""
+
+from __future__ import annotations
+
+import os
+import platform
+import statistics
+import time
+
+os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
+
+
+import numpy as np  # noqa: E402
+
+from aerostat_core import design, size_volume, thesis_baseline  # noqa: E402
+from aerostat_core.airframe import build_airframe  # noqa: E402
+from aerostat_core.performance import evaluate  # noqa: E402
+
+
+def median_time(fn, repeats: int) -> float:
+    fn()  # warm up
+    times = []
+    for _ in range(repeats):
+        t0 = time.perf_counter()
+        fn()
+        times.append(time.perf_counter() - t0)
+    return statistics.median(times)
+
+
+def main() -> None:
+    req, cfg = thesis_baseline()
+    sized_cfg = cfg.with_design_variables(volume=None)
+    print(f"machine: {platform.machine()}, {os.cpu_count()} cores, Python {platform.python_version()}")
+    t = median_time(lambda: design(req, cfg), 200)
+    print(f"design (given volume, 21-point sweep + tether profiles): median {t * 1e3:.2f} ms "
+          "(target <= 5 ms)")
+    t = median_time(lambda: design(req, sized_cfg), 30)
+    print(f"design (sized volume, 21-point sweep):                  median {t * 1e3:.2f} ms")
+    t = median_time(lambda: size_volume(req, sized_cfg), 30)
+    print(f"sizing to the blow-by limit:                            median {t * 1e3:.2f} ms "
+          "(target <= 50 ms)")
+    rng = np.random.default_rng(0)
+    n = 10_000
+    f = rng.uniform(2.5, 4.5, n)
+    dsf = rng.uniform(-50, 100, n)
+    pos = rng.uniform(0.6, 0.75, n)
+    vol = rng.uniform(80, 300, n)
+
+    def batch():
+        af = build_airframe(req, cfg, vol, f, dsf, pos)
+        return evaluate(req, cfg, af, req.design_wind)
+
+    t = median_time(batch, 7)
+    print(f"batch evaluation of {n} designs at the design wind:     median {t * 1e3:.0f} ms "
+          f"= {n / t:,.0f} designs/s (target >= 10,000/s)")
+    m = 200
+    t = median_time(lambda: size_volume(req, sized_cfg, f[:m], dsf[:m], pos[:m]), 5)
+    print(f"batch sizing of {m} designs:                           median {t * 1e3:.0f} ms "
+          f"= {m / t:,.0f} sized designs/s")
+
+
+if __name__ == "__main__":
+    main()
