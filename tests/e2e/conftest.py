@@ -50,10 +50,20 @@ CHROMIUM_ARGS = [
 
 
 def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item]) -> None:
-    """Every test under tests/e2e is an e2e test (``-m "not e2e"`` deselects them all)."""
+    """Mark every test under tests/e2e as ``e2e`` and run them after all the others.
+
+    Last, because the slow browser start should not delay the fast feedback of the core tests,
+    and because Playwright's sync API leaves its event loop registered as the running loop of the
+    main thread until the session ends (a later ``asyncio.run`` would refuse to start).
+    """
+    browser_items, other_items = [], []
     for item in items:
-        if E2E_DIR in item.path.parents or item.path.parent == E2E_DIR:
+        if item.path == E2E_DIR or E2E_DIR in item.path.parents:
             item.add_marker(pytest.mark.e2e)
+            browser_items.append(item)
+        else:
+            other_items.append(item)
+    items[:] = other_items + browser_items
 
 
 def _browser_required() -> bool:
