@@ -68,13 +68,18 @@ test: venv chromium
 lint: venv
 	$(PY) -m ruff check .
 
+# Each benchmarks/<name>.py runs as `python -m benchmarks.<name>` from the repository root, so it
+# imports aerostat_core as the tests do (files starting with "_" are skipped).
 bench: venv
-	@shopt -s nullglob; scripts=(benchmarks/*.py); \
-	if [ $${#scripts[@]} -eq 0 ]; then echo "no scripts in benchmarks/"; exit 0; fi; \
-	for script in "$${scripts[@]}"; do \
-	  echo "=== $$script"; \
-	  $(THREADS_ENV) PYTHONPATH=$(CURDIR) $(PY) "$$script" || exit 1; \
-	done
+	@shopt -s nullglob; status=0; ran=0; \
+	for script in benchmarks/*.py; do \
+	  name=$$(basename "$$script" .py); \
+	  case "$$name" in _*) continue;; esac; \
+	  echo "=== benchmarks.$$name"; ran=1; \
+	  $(THREADS_ENV) $(PY) -m "benchmarks.$$name" || status=1; \
+	done; \
+	[ $$ran = 1 ] || echo "no scripts in benchmarks/"; \
+	exit $$status
 
 docker-lint: venv
 	$(VENV)/bin/hadolint Dockerfile
