@@ -10,8 +10,8 @@ Typical use::
 from .design import Design, design
 from .inputs import (
     AeroModel,
-    ConfluenceSpec,
     Configuration,
+    ConfluenceSpec,
     FinSpec,
     HullSpec,
     LiftingGas,

@@ -37,7 +37,8 @@ class AtmosphereState:
 def isa(altitude, isa_offset=0.0) -> AtmosphereState:
     """Air state at a geometric altitude.
 
-    H = r0 h/(r0 + h);  T_ISA = T0 - L H;  P = P0 (T_ISA/T0)^(g0/(R L));  T = T_ISA + dT;  rho = P/(R T);
+    H = r0 h/(r0 + h);  T_ISA = T0 - L H;  P = P0 (T_ISA/T0)^(g0/(R L));
+    T = T_ISA + dT;  rho = P/(R T);
     mu = beta T^1.5/(T + S) (Sutherland).
 
     Parameters

@@ -48,7 +48,8 @@ def format_summary(d: Design) -> str:
         f"  volume            {s['volume_m3']:9.1f} m3",
         f"  length x diameter {s['length_m']:6.2f} x {s['diameter_m']:.2f} m",
         f"  total mass        {s['total_mass_kg']:9.2f} kg",
-        f"  free lift         {s['free_lift_kg']:9.2f} kg ({s['percent_static_lift']:.0f} % of buoyancy)",
+        f"  free lift         {s['free_lift_kg']:9.2f} kg "
+        f"({s['percent_static_lift']:.0f} % of buoyancy)",
         f"  at {req.design_wind:g} m/s: blow-by {s['blow_by_at_design_wind_m']:.1f} m, "
         f"alpha {s['alpha_at_design_wind_deg']:.1f} deg, tension "
         f"{s['tension_top_at_design_wind_N']:.0f} N, safety factor "

@@ -47,7 +47,8 @@ THESIS_HELIUM_DENSITY = 0.169
 THESIS_HYDROGEN_DENSITY = 0.085
 #: Helium price [USD/m3], INFERRED: USD 1925 saved for 50 m3 less volume (thesis abstract, App. H).
 HELIUM_PRICE_USD_PER_M3 = 38.5
-#: Hydrogen price [USD/m3]. Assumed order of magnitude for industrial cylinders (not from the thesis).
+#: Hydrogen price [USD/m3]. Assumed order of magnitude for industrial cylinders (not from the
+#: thesis).
 HYDROGEN_PRICE_USD_PER_M3 = 10.0
 
 # --- Aerodynamic defaults (methods.md §1.7, sources S1, S6, S10, S11) ---------------------------

@@ -11,7 +11,14 @@ from .airframe import Airframe, build_airframe
 from .cost import gas_fill_cost
 from .inputs import Configuration, Requirement
 from .mass import ITEM_NAMES
-from .performance import FLAG_TEXT, PerformanceTable, cm_curve, evaluate, performance_table, wind_speeds
+from .performance import (
+    FLAG_TEXT,
+    PerformanceTable,
+    cm_curve,
+    evaluate,
+    performance_table,
+    wind_speeds,
+)
 from .sizing import SizingResult, size_volume
 
 
@@ -197,7 +204,8 @@ def design(req: Requirement | None = None, cfg: Configuration | None = None) -> 
         b = str(np.asarray(sizing.binding).reshape(-1)[0])
         violations.append({
             "blow_by": f"blow-by limit {req.blow_by_limit:g} m at {req.design_wind:g} m/s cannot "
-                       f"be met by any hull up to 20000 m3 (best {design_point['blow_by_m']:.1f} m)",
+                       f"be met by any hull up to 20000 m3 "
+                       f"(best {design_point['blow_by_m']:.1f} m)",
             "free_lift": "no hull up to 20000 m3 has positive free lift (fabric too heavy for the "
                          "payload, gas and altitude)",
             "slack": "the tether goes slack at the design wind for every hull volume",

@@ -41,7 +41,7 @@ def hull_dimensions(volume, fineness_ratio, nose_fraction=0.432):
     --------
     >>> l, d, a1, a2, b = hull_dimensions(100.0, 2.7)
     >>> round(float(l), 2), round(float(d), 2)
-    (11.12, 4.12)
+    (11.17, 4.14)
     """
     v = np.asarray(volume, dtype=float)
     f = np.asarray(fineness_ratio, dtype=float)
@@ -288,8 +288,9 @@ def profile_quadrature(g: HullGeometry):
     u1 = 0.5 * (_GL_X - 1.0)
     u2 = 0.5 * (_GL_X + 1.0)
     xi = np.concatenate([a1 * (1.0 + u1), a1 + a2 * u2], axis=-1)
-    u = np.concatenate([np.broadcast_to(u1, xi[..., :48].shape), np.broadcast_to(u2, xi[..., 48:].shape)], axis=-1)
-    a = np.concatenate([np.broadcast_to(a1, xi[..., :48].shape), np.broadcast_to(a2, xi[..., 48:].shape)], axis=-1)
+    half = xi[..., :48].shape
+    u = np.concatenate([np.broadcast_to(u1, half), np.broadcast_to(u2, half)], axis=-1)
+    a = np.concatenate([np.broadcast_to(a1, half), np.broadcast_to(a2, half)], axis=-1)
     jac = 0.5 * a * np.concatenate([_GL_W, _GL_W])
     r = b * np.sqrt(1.0 - u**2)
     ds = 2.0 * np.pi * b * np.sqrt(1.0 - u**2 + (b / a) ** 2 * u**2)

@@ -75,7 +75,8 @@ class Requirement:
             raise ValueError(
                 f"Requirement.altitude = {self.altitude:g} m with site_elevation = "
                 f"{self.site_elevation:g} m puts the aerostat at {top:g} m above sea level, beyond "
-                f"the atmosphere model's valid range [{c.ISA_MIN_ALTITUDE:g}, {c.ISA_TROPOPAUSE:g}] m"
+                f"the atmosphere model's valid range "
+                f"[{c.ISA_MIN_ALTITUDE:g}, {c.ISA_TROPOPAUSE:g}] m"
             )
 
 
@@ -276,7 +277,8 @@ class WindProfile:
     """Mean wind versus height along the tether.
 
     The sweep's wind speed is the wind at the aerostat's flying height; the profile scales it down
-    to the tether below: power law U(z) = U_top (z/z_top)^p, log law U = U_top ln(z/z0)/ln(z_top/z0).
+    to the tether below: power law U(z) = U_top (z/z_top)^p,
+    log law U = U_top ln(z/z0)/ln(z_top/z0).
 
     Parameters
     ----------

@@ -22,8 +22,8 @@ from typing import Any
 
 from .inputs import (
     AeroModel,
-    ConfluenceSpec,
     Configuration,
+    ConfluenceSpec,
     FinSpec,
     HullSpec,
     LiftingGas,
@@ -91,7 +91,8 @@ def _build(cls: type, data: Any, where: str) -> Any:
             if value == "inf" and key == "axial_stiffness":
                 value = math.inf
             if isinstance(value, (dict, list)):
-                raise ValueError(f"{where}.{key} must be a single value, not {type(value).__name__}")
+                kind = type(value).__name__
+                raise ValueError(f"{where}.{key} must be a single value, not {kind}")
             kwargs[key] = value
     try:
         return cls(**kwargs)

@@ -10,7 +10,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .airframe import Airframe, build_airframe
+from .airframe import Airframe
 from .inputs import Configuration, Requirement
 from .statics import Equilibrium, aero_loads, equilibrium, moment_coefficient
 from .tether import TetherSolution, solve_tether

@@ -83,7 +83,8 @@ def size_volume(req: Requirement, cfg: Configuration, fineness_ratio=None, area_
         oks = oks * np.ones(vs.shape, bool)
         first = np.where(oks.any(axis=0), np.argmax(oks, axis=0), vs.shape[0])
         idx = np.indices(shape)
-        new_hi = np.where(first < vs.shape[0], vs[(np.minimum(first, vs.shape[0] - 1),) + tuple(idx)], hi)
+        last = vs.shape[0] - 1
+        new_hi = np.where(first <= last, vs[(np.minimum(first, last),) + tuple(idx)], hi)
         new_lo = np.where(first > 0, vs[(np.maximum(first - 1, 0),) + tuple(idx)], lo)
         lo, hi = np.where(any_ok, new_lo, lo), np.where(any_ok, new_hi, hi)
     # infeasible designs: volume of least blow-by among those with lift, and the binding reason

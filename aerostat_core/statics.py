@@ -166,7 +166,8 @@ def equilibrium(af: Airframe, aero: AeroModel, speed, iterations: int = 40) -> E
     x = 0.5 * (lo + hi)
     for _ in range(iterations):
         same = f_hi == f_lo
-        x = np.where(same, 0.5 * (lo + hi), (lo * f_hi - hi * f_lo) / np.where(same, 1.0, f_hi - f_lo))
+        secant = (lo * f_hi - hi * f_lo) / np.where(same, 1.0, f_hi - f_lo)
+        x = np.where(same, 0.5 * (lo + hi), secant)
         fx = moment_about_confluence(af, aero, x, speed, cd0) * np.ones(shape)
         pos = fx > 0.0
         lo = np.where(pos, x, lo)
@@ -174,7 +175,8 @@ def equilibrium(af: Airframe, aero: AeroModel, speed, iterations: int = 40) -> E
         hi = np.where(pos, hi, x)
         f_hi = np.where(pos, np.where(side == 1, 0.5 * f_hi, f_hi), fx)
         side = np.where(pos, 1, -1)
-        if np.all((np.abs(hi - lo) < 1e-10) | (np.abs(fx) <= 1e-9 * (1.0 + np.abs(f_lo) + np.abs(f_hi)))):
+        tiny = np.abs(fx) <= 1e-9 * (1.0 + np.abs(f_lo) + np.abs(f_hi))
+        if np.all((np.abs(hi - lo) < 1e-10) | tiny):
             break
     alpha = x
     # where no stable root: the grid angle with the least |moment|

@@ -1,6 +1,7 @@
 """Speed of the core engine: prints medians (no pass/fail; see issue #2 for the targets).
 
-Run from the repository root: ``.venv/bin/python -m benchmarks.bench_core``. Targets: full design with a 21-point sweep
+Run from the repository root: ``.venv/bin/python -m benchmarks.bench_core``.
+Targets: full design with a 21-point sweep
 and tether profiles <= 5 ms; sizing to a blow-by limit <= 50 ms; batch evaluation >= 10,000
 designs per second.
 """
@@ -35,7 +36,8 @@ def median_time(fn, repeats: int) -> float:
 def main() -> None:
     req, cfg = thesis_baseline()
     sized_cfg = cfg.with_design_variables(volume=None)
-    print(f"machine: {platform.machine()}, {os.cpu_count()} cores, Python {platform.python_version()}")
+    print(f"machine: {platform.machine()}, {os.cpu_count()} cores, "
+          f"Python {platform.python_version()}")
     t = median_time(lambda: design(req, cfg), 200)
     print(f"design (given volume, 21-point sweep + tether profiles): median {t * 1e3:.2f} ms "
           "(target <= 5 ms)")
