@@ -97,6 +97,14 @@ class Design:
         """PSL = 100 free lift / gross buoyancy [%] (methods.md §1.3, our definition)."""
         return 100.0 * self.free_lift / self.buoyancy
 
+    def tether_profile(self, speed: float) -> tuple[np.ndarray, np.ndarray]:
+        """Tether shape (x downwind, z up, from the winch) [m] at any wind ``speed`` [m/s].
+
+        Re-trims the aerostat at that speed and marches the tether (same model as the sweep).
+        """
+        ev = evaluate(self.requirement, self.configuration, self.airframe, float(speed))
+        return ev.tether.x, ev.tether.z
+
     def geometry_rows(self) -> list[dict]:
         """Hull and fin geometry as (quantity, value, unit) rows."""
         h, f, af = self.airframe.hull, self.airframe.fins, self.airframe

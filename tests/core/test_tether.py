@@ -115,3 +115,12 @@ def test_global_force_balance_of_the_line(h_t, v_t, u):
     assert np.all(np.isfinite(sol.x)) and np.all(np.isfinite(sol.z))
     if u == 0.0:
         assert sol.tension_winch == pytest.approx(np.hypot(h_t, v_t - w * 300.0), rel=1e-9)
+
+
+def test_profile_at_any_wind_matches_the_sweep_and_interpolates():
+    d = design(*thesis_baseline())
+    x10, z10 = d.tether_profile(10.0)
+    assert np.allclose(x10, d.tether_x[:, 10]) and np.allclose(z10, d.tether_z[:, 10])
+    x, z = d.tether_profile(10.5)
+    assert d.tether_x[0, 10] < x[0] < d.tether_x[0, 11]
+    assert x[-1] == 0.0 and z[-1] == 0.0  # from the winch
