@@ -138,7 +138,8 @@ def streamlit_server() -> Iterator[StreamlitServer]:
     port = _free_port()
     url = f"http://127.0.0.1:{port}"
     ARTIFACTS_DIR.mkdir(parents=True, exist_ok=True)
-    log_path = ARTIFACTS_DIR / "streamlit-server.log"
+    worker = os.environ.get("PYTEST_XDIST_WORKER", "")  # one server per xdist worker
+    log_path = ARTIFACTS_DIR / f"streamlit-server{'-' + worker if worker else ''}.log"
     env = {
         **os.environ,
         "OPENBLAS_NUM_THREADS": "1",
