@@ -1,0 +1,69 @@
+"""Index layout of the flat parameter vector ``prm`` shared by the numba kernels.
+
+Module-level integers are compile-time constants for numba. Keep this file in sync with
+:func:`aerostat_core.dynamics.model.DynamicSystem` (which fills ``prm``).
+"""
+
+# --- general ---------------------------------------------------------------------------------
+P_MODE = 0  # 0 = point aerostat, 1 = rigid hull (3 DOF)
+P_NSEG = 1  # number of tether segments N
+P_G = 2  # gravity [m/s2]
+P_RHO_Z0 = 3  # first height of the air-density table [m]
+P_RHO_DZ = 4  # spacing of the air-density table [m]
+P_RHO_REF = 5  # reference density for added masses [kg/m3]
+P_XA = 6  # winch x [m]
+P_ZA = 7  # winch z [m]
+# --- tether ----------------------------------------------------------------------------------
+P_L0 = 8  # unstretched segment length [m]
+P_W = 9  # mass per length [kg/m]
+P_D = 10  # diameter [m]
+P_EA = 11  # axial stiffness [N]
+P_CD = 12  # internal damping c/l0 [N s/m] (tension += c * ldot / l0)
+P_CDN = 13  # normal drag coefficient [-]
+P_CDT = 14  # tangential drag coefficient on pi d [-]
+P_TBUOY = 15  # 1: air buoyancy of the line on
+P_TDRAG = 16  # 1: tether drag on
+# --- point aerostat --------------------------------------------------------------------------
+P_PM = 17  # mass [kg]
+P_PV = 18  # volume [m3]
+P_PCDA = 19  # drag area C_D A [m2]
+P_PCA = 20  # added-mass coefficient [-]
+# --- hull ------------------------------------------------------------------------------------
+P_HM = 21  # hull mass incl. gas, payload ... [kg]
+P_HV = 22  # displaced volume [m3]
+P_XG = 23  # CG body x (forward of the CV) [m]
+P_ZG = 24  # CG body z (below the CV) [m]
+P_XC = 25  # confluence point body x [m]
+P_ZC = 26  # confluence point body z [m]
+P_XF = 27  # fin aerodynamic centre body x [m]
+P_ZF = 28  # fin aerodynamic centre body z [m]
+P_MX = 29  # axial added mass [kg]
+P_MZ = 30  # transverse added mass [kg]
+P_IA = 31  # rotational added inertia [kg m2]
+P_MINV = 32  # 9 entries: inverse of the 3x3 generalised mass matrix (row major)
+P_MT = 41  # rigid mass incl. the top half tether segment [kg]
+P_XGT = 42  # its CG body x [m]
+P_ZGT = 43  # its CG body z [m]
+P_CDC = 44  # hull cross-flow drag coefficient (C_dc)_h [-]
+P_UNSTEADY = 45  # 1: unsteady-wind inertia (added mass x fluid acceleration + Froude-Krylov)
+P_KIRCHHOFF = 46  # 1: add the Kirchhoff Munk moment (m_z - m_x) u_r w_r (only with J&D off!)
+P_AERO_INV = 47  # 1: J&D inviscid hull term
+P_AERO_AX = 48  # 1: hull axial drag
+P_AERO_CF = 49  # 1: hull cross-flow strips
+P_AERO_FIN = 50  # 1: fins
+P_AL0 = 51  # first angle of the aero tables [rad]
+P_DAL = 52  # spacing of the aero tables [rad]
+P_V0 = 53  # first airspeed of the drag-coefficient table [m/s]
+P_DV = 54  # spacing of the drag-coefficient table [m/s]
+P_THETA_MAX = 55  # pitch limit for the divergence check [rad]
+P_POINT_FK = 56  # point aerostat: 1 = Froude-Krylov + added mass x fluid acceleration
+P_SIZE = 57
+
+# rows of the aero table ``tab`` (per unit dynamic pressure, from the static engine's functions)
+T_N_INV = 0  # inviscid normal force / q [m2]
+T_A_INV = 1  # inviscid axial force / q [m2]
+T_M_INV = 2  # inviscid moment about the CV / q [m3]
+T_A_AX = 3  # axial drag / (q * C_DV ratio) [m2]
+T_FIN_L = 4  # fin lift / q [m2]
+T_FIN_D = 5  # fin drag / q [m2]
+T_ROWS = 6
