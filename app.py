@@ -1,14 +1,40 @@
-"""PLACEHOLDER entry point, so that `make run`, the Docker image and the browser smoke tests work
-before the real app lands. Replace it whole with the real frame (st.set_page_config, session state,
-st.navigation over pages/): see shared/design/engineering.md §1 and §4.
+"""Aerostat design app: page config, shared session state and navigation.
+
+Run with ``make run`` (or ``streamlit run app.py``). Pages live in ``pages/``; a page is listed
+only when its file exists, so pages written by other engineers appear as they land.
 """
+
+from pathlib import Path
 
 import streamlit as st
 
-st.set_page_config(page_title="Aerostat design", layout="wide")
-st.title("Aerostat design")
-st.write(
-    "Size a tethered aerostat for a payload and an altitude, then check its blow-by, tether "
-    "tension and dynamics. The design pages are on their way; meanwhile the command line works: "
-    "`python -m aerostat_core design --payload 10 --altitude 300`."
+from app_ui.state import init_state
+
+HERE = Path(__file__).resolve().parent
+
+#: (file, title, icon) in navigation order; the first is the default page.
+PAGES = (
+    ("pages/1_Design.py", "Design", ":material/design_services:"),
+    ("pages/2_Compare.py", "Compare", ":material/compare:"),
+    ("pages/3_Sensitivity.py", "Sensitivity", ":material/tune:"),
+    ("pages/4_Optimise.py", "Optimise", ":material/auto_graph:"),
+    ("pages/5_Dynamics.py", "Dynamics", ":material/airwave:"),
+    ("pages/6_Method.py", "Method", ":material/menu_book:"),
 )
+
+st.set_page_config(
+    page_title="Aerostat design",
+    page_icon=":material/cloud:",
+    layout="wide",
+    initial_sidebar_state="expanded",
+)
+init_state()
+
+pages = [
+    st.Page(str(HERE / path), title=title, icon=icon, default=(i == 0))
+    for i, (path, title, icon) in enumerate(PAGES)
+    if (HERE / path).is_file()
+]
+with st.sidebar:
+    st.caption("Tethered aerostat design · Mahmood (2020) method, rebuilt from public sources")
+st.navigation(pages).run()

@@ -1,0 +1,787 @@
+"""Plot and table builders: pure functions from the plain data of
+:func:`aerostat_core.report.design_report` to plotly figures and display-ready pandas frames (no
+Streamlit; tested directly).
+
+Conventions: SI units in every axis title; operating-limit rows marked with red crosses (trace
+name :data:`LIMIT_TRACE`); requirement limits drawn as dashed lines; tether and side views to
+scale (equal axis aspect).
+
+Speed: each figure is assembled as plain dicts and validated once by ``go.Figure(dict)``;
+building it with ``add_trace``/``add_hline``/templates was 5-10x slower (plotly re-validates on
+every incremental update), which mattered for the 300 ms rerun budget of the Design page.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping, Sequence
+from typing import Any
+
+import numpy as np
+import pandas as pd
+import plotly.graph_objects as go
+from pandas.io.formats.style import Styler
+
+from aerostat_core.report import hull_outline, hull_surface
+
+ACCENT = "#1f5fa8"
+LIMIT_COLOUR = "#d62728"
+LIMIT_TRACE = "operating limit exceeded"
+#: Qualitative palette for several cases / wind speeds (colour-blind friendly, Okabe-Ito based).
+PALETTE = (
+    "#1f5fa8",
+    "#e69f00",
+    "#009e73",
+    "#cc79a7",
+    "#56b4e9",
+    "#d55e00",
+    "#7f7f7f",
+    "#b8a200",
+    "#000000",
+)
+_FONT = dict(family="sans-serif", size=13)
+_MARGIN = dict(l=60, r=20, t=50, b=50)
+
+#: Performance quantities: key in rep["perf"] -> (title, axis label with unit).
+PERF_QUANTITIES: dict[str, tuple[str, str]] = {
+    "blow_by": ("Blow-by (downwind offset of the confluence point)", "Blow-by [m]"),
+    "alpha_eq": ("Equilibrium angle of attack", "α_eq [deg]"),
+    "dynamic_lift": ("Dynamic (aerodynamic) lift", "Dynamic lift [N]"),
+    "tension_top": ("Tether tension at the confluence point", "Tension [N]"),
+    "tension_winch": ("Tether tension at the winch", "Tension [N]"),
+    "safety_factor": ("Tether safety factor", "Safety factor [-]"),
+    "drag": ("Aerodynamic drag", "Drag [N]"),
+    "flying_height": ("Flying height", "Height [m]"),
+}
+WIND_AXIS = "Wind speed at the aerostat [m/s]"
+
+
+def _l(a: Any) -> list:
+    return np.asarray(a, dtype=float).tolist()
+
+
+def _axis(title: str, **kw: Any) -> dict:
+    return dict(title=dict(text=title), **kw)
+
+
+def _ref_line(
+    axis: str,
+    value: float,
+    text: str = "",
+    colour: str = "#7f7f7f",
+    dash: str = "dash",
+    yref: str = "y",
+) -> tuple[dict, dict | None]:
+    """A horizontal (``axis="y"``) or vertical (``axis="x"``) reference line across the plot."""
+    line = dict(color=colour, dash=dash, width=1.5)
+    if axis == "y":
+        shape = dict(
+            type="line", xref="paper", x0=0, x1=1, yref=yref, y0=value, y1=value, line=line
+        )
+        note = dict(
+            xref="paper",
+            x=0.01,
+            xanchor="left",
+            yref=yref,
+            y=value,
+            yanchor="bottom",
+            text=text,
+            showarrow=False,
+            font=dict(color=colour, size=11),
+        )
+    else:
+        shape = dict(type="line", yref="paper", y0=0, y1=1, xref="x", x0=value, x1=value, line=line)
+        note = dict(
+            yref="paper",
+            y=1.0,
+            yanchor="bottom",
+            xref="x",
+            x=value,
+            xanchor="left",
+            text=text,
+            showarrow=False,
+            font=dict(color=colour, size=11),
+        )
+    return shape, (note if text else None)
+
+
+def _figure(
+    traces: list[dict], title: str, *, lines: Sequence[dict] = (), **layout: Any
+) -> go.Figure:
+    """One validated figure from trace dicts, a title, reference lines and layout options.
+    No plotly template: ``st.plotly_chart`` applies the app's Streamlit theme."""
+    lay: dict[str, Any] = dict(
+        title=dict(text=title, font=dict(size=15)),
+        font=_FONT,
+        margin=_MARGIN,
+        legend=dict(orientation="h", y=-0.22),
+    )
+    shapes, notes = [], []
+    for ln in lines:
+        shape, note = _ref_line(**ln)
+        shapes.append(shape)
+        if note:
+            notes.append(note)
+    if shapes:
+        lay["shapes"] = shapes
+        lay["annotations"] = notes
+    lay.update(layout)
+    return go.Figure({"data": traces, "layout": lay})
+
+
+def _limit_trace(x: Any, y: Any, limited: Any, text: Sequence[str], **kw: Any) -> list[dict]:
+    """Red crosses on the rows that break an operating limit (hover says which); [] if none."""
+    idx = np.flatnonzero(np.asarray(limited, bool))
+    if idx.size == 0:
+        return []
+    trace = dict(
+        type="scatter",
+        x=np.asarray(x, float)[idx].tolist(),
+        y=np.asarray(y, float)[idx].tolist(),
+        mode="markers",
+        name=LIMIT_TRACE,
+        marker=dict(symbol="x", size=11, color=LIMIT_COLOUR, line=dict(width=1)),
+        text=[text[i] for i in idx],
+        hovertemplate="%{x:.1f} m/s: %{text}<extra></extra>",
+    )
+    trace.update(kw)
+    return [trace]
+
+
+# --- geometry ---------------------------------------------------------------------------------
+
+_POINTS = (
+    ("cb", "centre of buoyancy (CB)", "CB", "circle", "#009e73"),
+    ("cg", "centre of gravity (CG)", "CG", "diamond", "#000000"),
+    ("c", "confluence point (C)", "C", "triangle-down", LIMIT_COLOUR),
+)
+
+
+def hull_3d_figure(rep: Mapping[str, Any]) -> go.Figure:
+    """Interactive 3-D view: NPL hull (surface of revolution), fins, CB/CG/confluence point."""
+    h = rep["hull"]
+    x, y, z = hull_surface(h["a1"], h["a2"], h["b"])
+    traces: list[dict] = [
+        dict(
+            type="surface",
+            x=x,
+            y=y,
+            z=z,
+            name="hull",
+            showscale=False,
+            surfacecolor=z,
+            colorscale=[[0, "#c9d6e8"], [1, "#8fa9cc"]],
+            hoverinfo="skip",
+            lighting=dict(ambient=0.6, diffuse=0.6, specular=0.2),
+        )
+    ]
+    for i, outline in enumerate(rep["fins"]["outlines"]):
+        p = np.asarray(outline)[:4]
+        traces.append(
+            dict(
+                type="mesh3d",
+                x=_l(p[:, 0]),
+                y=_l(p[:, 1]),
+                z=_l(p[:, 2]),
+                i=[0, 0],
+                j=[1, 2],
+                k=[2, 3],
+                color="#e69f00",
+                opacity=0.95,
+                name="fins" if i == 0 else f"fin {i + 1}",
+                showlegend=i == 0,
+                legendgroup="fins",
+                hoverinfo="name",
+                flatshading=True,
+            )
+        )
+    for key, label, _short, _sym, colour in _POINTS:
+        xi, zz = rep["points"][key]
+        traces.append(
+            dict(
+                type="scatter3d",
+                x=[xi],
+                y=[0.0],
+                z=[zz],
+                mode="markers",
+                name=label,
+                marker=dict(size=5, color=colour),
+            )
+        )
+    lx: list = []
+    lz: list = []
+    for line in rep["confluence_lines"]:
+        lx += [float(line[0, 0]), float(line[1, 0]), None]
+        lz += [float(line[0, 1]), float(line[1, 1]), None]
+    traces.append(
+        dict(
+            type="scatter3d",
+            x=lx,
+            y=[None if v is None else 0.0 for v in lx],
+            z=lz,
+            mode="lines",
+            name="confluence lines (schematic)",
+            line=dict(color="#555555", width=2),
+        )
+    )
+    scene = dict(
+        aspectmode="data",
+        xaxis=_axis("ξ from nose [m]"),
+        yaxis=_axis("y [m]"),
+        zaxis=_axis("z [m]"),
+        camera=dict(eye=dict(x=-1.1, y=-1.6, z=0.7)),
+    )
+    return _figure(
+        traces,
+        "Hull and fins (3-D, to scale)",
+        scene=scene,
+        height=480,
+        margin=dict(l=0, r=0, t=40, b=0),
+    )
+
+
+def side_view_figure(rep: Mapping[str, Any]) -> go.Figure:
+    """Side view to scale: hull outline, fins, centre of buoyancy, centre of gravity,
+    confluence point and (schematic) confluence lines; nose on the left, z up."""
+    h = rep["hull"]
+    xi, r = hull_outline(h["a1"], h["a2"], h["b"])
+    traces: list[dict] = [
+        dict(
+            type="scatter",
+            x=_l(np.concatenate([xi, xi[::-1]])),
+            y=_l(np.concatenate([r, -r[::-1]])),
+            mode="lines",
+            fill="toself",
+            fillcolor="rgba(143,169,204,0.35)",
+            line=dict(color=ACCENT, width=2),
+            name="hull",
+            hoverinfo="skip",
+        )
+    ]
+    first = True
+    for outline in rep["fins"]["outlines"]:
+        p = np.asarray(outline)
+        if np.allclose(p[:, 2], 0.0, atol=1e-9):
+            continue  # a horizontal fin is edge-on in the side view
+        traces.append(
+            dict(
+                type="scatter",
+                x=_l(p[:, 0]),
+                y=_l(p[:, 2]),
+                mode="lines",
+                fill="toself",
+                fillcolor="rgba(230,159,0,0.45)",
+                line=dict(color="#b07800"),
+                name="fins",
+                legendgroup="fins",
+                showlegend=first,
+                hoverinfo="skip",
+            )
+        )
+        first = False
+    for k, line in enumerate(rep["confluence_lines"]):
+        traces.append(
+            dict(
+                type="scatter",
+                x=_l(line[:, 0]),
+                y=_l(line[:, 1]),
+                mode="lines",
+                line=dict(color="#555555", width=1.5),
+                name="confluence lines (schematic)",
+                legendgroup="cl",
+                showlegend=k == 0,
+                hoverinfo="skip",
+            )
+        )
+    for key, label, short, symbol, colour in _POINTS:
+        x0, z0 = rep["points"][key]
+        traces.append(
+            dict(
+                type="scatter",
+                x=[float(x0)],
+                y=[float(z0)],
+                mode="markers+text",
+                name=label,
+                text=[short],
+                textposition="top right",
+                marker=dict(symbol=symbol, size=11, color=colour),
+                hovertemplate=f"{label}: ξ = %{{x:.2f}} m, z = %{{y:.2f}} m<extra></extra>",
+            )
+        )
+    return _figure(
+        traces,
+        "Side view (to scale, level hull)",
+        height=420,
+        xaxis=_axis("Station from the nose ξ [m]", zeroline=False),
+        yaxis=_axis(
+            "Height above the hull axis z [m]", scaleanchor="x", scaleratio=1, zeroline=False
+        ),
+    )
+
+
+def mass_figure(rep: Mapping[str, Any]) -> go.Figure:
+    """Horizontal bars of the mass breakdown [kg] (the total is in the title)."""
+    rows = [r for r in rep["mass_rows"] if r["item"] != "total"]
+    total = next(r["mass_kg"] for r in rep["mass_rows"] if r["item"] == "total")
+    items = [r["item"] for r in rows][::-1]
+    masses = [float(r["mass_kg"]) for r in rows][::-1]
+    shares = [float(r["share_pct"]) for r in rows][::-1]
+    trace = dict(
+        type="bar",
+        x=masses,
+        y=items,
+        orientation="h",
+        marker_color=ACCENT,
+        name="mass",
+        text=[f"{m:.1f} kg ({s:.0f} %)" for m, s in zip(masses, shares)],
+        textposition="auto",
+        hovertemplate="%{y}: %{x:.2f} kg<extra></extra>",
+    )
+    return _figure(
+        [trace],
+        f"Mass breakdown (total {total:.1f} kg)",
+        height=360,
+        showlegend=False,
+        xaxis=_axis("Mass [kg]"),
+    )
+
+
+# --- performance ------------------------------------------------------------------------------
+
+
+def performance_figure(rep: Mapping[str, Any], key: str) -> go.Figure:
+    """One performance quantity versus wind speed, with limit markers and requirement lines."""
+    p, lim = rep["perf"], rep["limits"]
+    title, ylabel = PERF_QUANTITIES[key]
+    v, y = p["wind_speed"], p[key]
+    traces = [
+        dict(
+            type="scatter",
+            x=_l(v),
+            y=_l(y),
+            mode="lines+markers",
+            name=title,
+            line=dict(color=ACCENT, width=2.5),
+            marker=dict(size=5),
+        )
+    ]
+    traces += _limit_trace(v, y, p["limited"], p["flag_text"])
+    lines = [dict(axis="x", value=lim["design_wind"], text="design wind", dash="dot")]
+    if key == "blow_by":
+        lines.append(
+            dict(
+                axis="y",
+                value=lim["blow_by_limit"],
+                colour=LIMIT_COLOUR,
+                text=f"blow-by limit {lim['blow_by_limit']:g} m",
+            )
+        )
+    if key == "alpha_eq":
+        lines.append(
+            dict(
+                axis="y",
+                value=lim["stall_deg"],
+                colour=LIMIT_COLOUR,
+                text=f"fin stall {lim['stall_deg']:g} deg",
+            )
+        )
+    if key == "safety_factor":
+        lines.append(
+            dict(
+                axis="y",
+                value=lim["min_safety_factor"],
+                colour=LIMIT_COLOUR,
+                text=f"required {lim['min_safety_factor']:g}",
+            )
+        )
+    return _figure(
+        traces, title, lines=lines, height=360, xaxis=_axis(WIND_AXIS), yaxis=_axis(ylabel)
+    )
+
+
+def tension_figure(rep: Mapping[str, Any]) -> go.Figure:
+    """Tether tension at the top and at the winch [N] (left) and the safety factor (right)."""
+    p, lim = rep["perf"], rep["limits"]
+    v = p["wind_speed"]
+    traces = [
+        dict(
+            type="scatter",
+            x=_l(v),
+            y=_l(p["tension_top"]),
+            mode="lines+markers",
+            name="tension at the confluence point [N]",
+            line=dict(color=ACCENT, width=2.5),
+            marker=dict(size=5),
+        ),
+        dict(
+            type="scatter",
+            x=_l(v),
+            y=_l(p["tension_winch"]),
+            mode="lines",
+            name="tension at the winch [N]",
+            line=dict(color=ACCENT, width=1.5, dash="dash"),
+        ),
+        dict(
+            type="scatter",
+            x=_l(v),
+            y=_l(p["safety_factor"]),
+            mode="lines",
+            name="safety factor [-]",
+            yaxis="y2",
+            line=dict(color="#009e73", width=2),
+        ),
+    ]
+    traces += _limit_trace(v, p["tension_top"], p["limited"], p["flag_text"])
+    lines = [
+        dict(
+            axis="y",
+            value=lim["min_safety_factor"],
+            colour="#009e73",
+            dash="dot",
+            yref="y2",
+            text=f"required safety factor {lim['min_safety_factor']:g}",
+        ),
+        dict(axis="x", value=lim["design_wind"], text="design wind", dash="dot"),
+    ]
+    return _figure(
+        traces,
+        "Tether tension and safety factor",
+        lines=lines,
+        height=380,
+        xaxis=_axis(WIND_AXIS),
+        yaxis=_axis("Tether tension [N]", rangemode="tozero"),
+        yaxis2=_axis(
+            "Safety factor [-]", overlaying="y", side="right", rangemode="tozero", showgrid=False
+        ),
+    )
+
+
+def cm_figure(rep: Mapping[str, Any]) -> go.Figure:
+    """Pitching-moment coefficient about the confluence point versus angle of attack."""
+    c = rep["cm"]
+    a, cm = np.asarray(c["alpha_deg"], float), np.asarray(c["cm"], float)
+    a_eq = float(c["alpha_eq_deg"])
+    traces = [
+        dict(
+            type="scatter",
+            x=_l(a),
+            y=_l(cm),
+            mode="lines",
+            name="C_m",
+            line=dict(color=ACCENT, width=2.5),
+        ),
+        dict(
+            type="scatter",
+            x=[a_eq],
+            y=[float(np.interp(a_eq, a, cm))],
+            mode="markers",
+            name="trim (α_eq at the design wind)",
+            marker=dict(size=11, color="#009e73", symbol="circle"),
+        ),
+    ]
+    return _figure(
+        traces,
+        f"Moment coefficient at {c['wind']:g} m/s (stable: negative slope)",
+        lines=[dict(axis="y", value=0.0, dash="solid")],
+        height=360,
+        xaxis=_axis("Angle of attack α [deg]"),
+        yaxis=_axis("C_m about the confluence point [-]"),
+    )
+
+
+# --- tether -----------------------------------------------------------------------------------
+
+
+def default_tether_speeds(wind_speed: Sequence[float], n: int = 5) -> list[float]:
+    """About ``n`` evenly spread sweep speeds above zero (the largest included).
+
+    >>> default_tether_speeds([0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10], 5)
+    [2.0, 4.0, 6.0, 8.0, 10.0]
+    """
+    v = [float(s) for s in wind_speed if s > 0]
+    if len(v) <= n:
+        return v
+    idx = np.unique(np.round(np.linspace(-1, len(v) - 1, n + 1)[1:]).astype(int))
+    return [v[i] for i in idx]
+
+
+def tether_figure(rep: Mapping[str, Any], speeds: Sequence[float] | None = None) -> go.Figure:
+    """Tether profiles for several wind speeds, to scale, with the winch and the aerostat."""
+    t, lim = rep["tether"], rep["limits"]
+    ws = np.asarray(t["wind_speed"], float)
+    speeds = default_tether_speeds(ws) if speeds is None else list(speeds)
+    traces: list[dict] = []
+    tops_x, tops_z, tops_t = [], [], []
+    for k, s in enumerate(speeds):
+        j = int(np.argmin(np.abs(ws - s)))
+        x, z = np.asarray(t["x"])[:, j], np.asarray(t["z"])[:, j]
+        traces.append(
+            dict(
+                type="scatter",
+                x=_l(x),
+                y=_l(z),
+                mode="lines",
+                name=f"{ws[j]:g} m/s",
+                line=dict(color=PALETTE[k % len(PALETTE)], width=2.2),
+            )
+        )
+        top = int(np.argmax(z))
+        tops_x.append(float(x[top]))
+        tops_z.append(float(z[top]))
+        tops_t.append(f"{ws[j]:g} m/s: blow-by {x[top]:.1f} m, height {z[top]:.1f} m")
+    traces.append(
+        dict(
+            type="scatter",
+            x=tops_x,
+            y=tops_z,
+            mode="markers",
+            name="aerostat (confluence point)",
+            text=tops_t,
+            hovertemplate="%{text}<extra></extra>",
+            marker=dict(
+                symbol="circle", size=12, color="#8fa9cc", line=dict(color=ACCENT, width=2)
+            ),
+        )
+    )
+    traces.append(
+        dict(
+            type="scatter",
+            x=[0.0],
+            y=[0.0],
+            mode="markers+text",
+            name="winch",
+            text=["winch"],
+            textposition="bottom center",
+            marker=dict(symbol="square", size=12, color="#000000"),
+        )
+    )
+    lines = [
+        dict(
+            axis="x",
+            value=lim["blow_by_limit"],
+            colour=LIMIT_COLOUR,
+            text=f"blow-by limit {lim['blow_by_limit']:g} m",
+        )
+    ]
+    return _figure(
+        traces,
+        "Tether profiles (to scale)",
+        lines=lines,
+        height=560,
+        xaxis=_axis("Downwind distance from the winch [m]"),
+        yaxis=_axis(
+            "Height above the winch [m]", scaleanchor="x", scaleratio=1, rangemode="tozero"
+        ),
+    )
+
+
+# --- comparison of saved cases --------------------------------------------------------------
+
+
+def compare_performance_figure(reps: Mapping[str, Mapping[str, Any]], key: str) -> go.Figure:
+    """One performance quantity versus wind speed, one line per case (limit rows marked)."""
+    title, ylabel = PERF_QUANTITIES[key]
+    traces: list[dict] = []
+    for k, (name, rep) in enumerate(reps.items()):
+        p = rep["perf"]
+        colour = PALETTE[k % len(PALETTE)]
+        traces.append(
+            dict(
+                type="scatter",
+                x=_l(p["wind_speed"]),
+                y=_l(p[key]),
+                mode="lines",
+                name=name,
+                legendgroup=name,
+                line=dict(color=colour, width=2.2),
+            )
+        )
+        traces += _limit_trace(
+            p["wind_speed"],
+            p[key],
+            p["limited"],
+            p["flag_text"],
+            name=f"{name}: {LIMIT_TRACE}",
+            legendgroup=name,
+            showlegend=False,
+            marker=dict(symbol="x", size=10, color=colour, line=dict(width=1)),
+        )
+    return _figure(traces, title, height=360, xaxis=_axis(WIND_AXIS), yaxis=_axis(ylabel))
+
+
+def compare_tether_figure(reps: Mapping[str, Mapping[str, Any]], wind: float) -> go.Figure:
+    """Tether profiles of every case at the sweep speed nearest ``wind``, to scale."""
+    traces: list[dict] = []
+    for k, (name, rep) in enumerate(reps.items()):
+        t = rep["tether"]
+        ws = np.asarray(t["wind_speed"], float)
+        j = int(np.argmin(np.abs(ws - wind)))
+        x, z = np.asarray(t["x"])[:, j], np.asarray(t["z"])[:, j]
+        colour = PALETTE[k % len(PALETTE)]
+        top = int(np.argmax(z))
+        traces.append(
+            dict(
+                type="scatter",
+                x=_l(x),
+                y=_l(z),
+                mode="lines",
+                name=f"{name} ({ws[j]:g} m/s)",
+                legendgroup=name,
+                line=dict(color=colour, width=2.2),
+            )
+        )
+        traces.append(
+            dict(
+                type="scatter",
+                x=[float(x[top])],
+                y=[float(z[top])],
+                mode="markers",
+                name=f"{name}: aerostat",
+                legendgroup=name,
+                showlegend=False,
+                marker=dict(size=11, color=colour, line=dict(color="#000", width=1)),
+            )
+        )
+    traces.append(
+        dict(
+            type="scatter",
+            x=[0.0],
+            y=[0.0],
+            mode="markers",
+            name="winch",
+            marker=dict(symbol="square", size=12, color="#000000"),
+        )
+    )
+    return _figure(
+        traces,
+        f"Tether profiles at {wind:g} m/s (to scale)",
+        height=560,
+        xaxis=_axis("Downwind distance from the winch [m]"),
+        yaxis=_axis(
+            "Height above the winch [m]", scaleanchor="x", scaleratio=1, rangemode="tozero"
+        ),
+    )
+
+
+# --- tables (display frames: units in every column name) -----------------------------------
+
+_UNIT_TEXT = {"m3": "m³", "m2": "m²", "-": "-"}
+
+#: Performance-row keys -> display column names (units in brackets).
+PERF_COLUMNS: dict[str, str] = {
+    "wind_speed_m_s": "Wind [m/s]",
+    "alpha_eq_deg": "α_eq [deg]",
+    "dynamic_lift_N": "Dynamic lift [N]",
+    "drag_N": "Drag [N]",
+    "blow_by_m": "Blow-by [m]",
+    "flying_height_m": "Flying height [m]",
+    "altitude_loss_m": "Altitude loss [m]",
+    "tension_top_N": "Tension at top [N]",
+    "tension_winch_N": "Tension at winch [N]",
+    "tether_angle_top_deg": "Tether angle at top [deg from vertical]",
+    "tether_angle_winch_deg": "Tether angle at winch [deg from vertical]",
+    "safety_factor": "Safety factor [-]",
+    "cm_alpha_per_rad": "C_mα [1/rad]",
+    "flags": "Limits exceeded",
+}
+#: Decimals per performance column.
+_PERF_DECIMALS = {"Wind [m/s]": 1, "α_eq [deg]": 2, "Safety factor [-]": 2, "C_mα [1/rad]": 3}
+LIMIT_ROW_STYLE = "background-color: #fde2e2"
+
+
+def geometry_frame(rows: Sequence[Mapping[str, Any]]) -> pd.DataFrame:
+    """Geometry rows as a frame: Quantity, Value, Unit."""
+    return pd.DataFrame(
+        {
+            "Quantity": [r["quantity"] for r in rows],
+            "Value": [float(r["value"]) for r in rows],
+            "Unit": [_UNIT_TEXT.get(r["unit"], r["unit"]) for r in rows],
+        }
+    )
+
+
+def mass_frame(rows: Sequence[Mapping[str, Any]]) -> pd.DataFrame:
+    """Mass rows as a frame: Item, Mass [kg], Share [%]."""
+    return pd.DataFrame(
+        {
+            "Item": [r["item"] for r in rows],
+            "Mass [kg]": [float(r["mass_kg"]) for r in rows],
+            "Share [%]": [float(r["share_pct"]) for r in rows],
+        }
+    )
+
+
+def performance_frame(rows: Sequence[Mapping[str, Any]]) -> pd.DataFrame:
+    """Performance rows with display column names; ``limit_exceeded`` kept as the last column
+    (the styler hides it)."""
+    df = pd.DataFrame([{PERF_COLUMNS.get(k, k): v for k, v in r.items()} for r in rows])
+    return df
+
+
+def performance_styler(df: pd.DataFrame) -> Styler:
+    """Red background on rows that break an operating limit; fixed decimals per column."""
+    limited = df["limit_exceeded"].to_numpy(bool) if "limit_exceeded" in df else np.zeros(len(df))
+    shown = df.drop(columns=["limit_exceeded"], errors="ignore")
+
+    def rowstyle(row: pd.Series) -> list[str]:
+        return [LIMIT_ROW_STYLE if limited[row.name] else ""] * len(row)
+
+    fmt = {c: f"{{:.{_PERF_DECIMALS.get(c, 1)}f}}" for c in shown.columns if c != "Limits exceeded"}
+    return shown.style.apply(rowstyle, axis=1).format(fmt)
+
+
+def format_value(v: Any) -> str:
+    """A table cell as text: numbers with sensible digits, booleans as yes/no, None as auto.
+
+    >>> [format_value(x) for x in (372.96, 12.345, 0.6789, 0.0123, 12000.0, True, None, "+")]
+    ['373.0', '12.35', '0.679', '0.0123', '12,000', 'yes', 'auto', '+']
+    """
+    if isinstance(v, bool):
+        return "yes" if v else "no"
+    if v is None:
+        return "auto"
+    if isinstance(v, (int, float, np.floating, np.integer)):
+        x = float(v)
+        if isinstance(v, (int, np.integer)) and abs(x) < 1e6:
+            return f"{int(v):d}"
+        if x == 0.0:
+            return "0"
+        a = abs(x)
+        if a >= 1000:
+            return f"{x:,.0f}"
+        if a >= 100:
+            return f"{x:.1f}"
+        if a >= 1:
+            return f"{x:.2f}"
+        if a >= 0.1:
+            return f"{x:.3f}"
+        return f"{x:.3g}"
+    return str(v)
+
+
+def comparison_frame(
+    rows: Sequence[Mapping[str, Any]], names: Sequence[str], only_differences: bool = False
+) -> pd.DataFrame:
+    """Side-by-side table (one column per case, values as text) from
+    :func:`aerostat_core.report.comparison_rows`; ``Differs`` says where the cases disagree."""
+    keep = [r for r in rows if r["differs"] or not only_differences]
+    data: dict[str, list] = {
+        "Section": [r["section"] for r in keep],
+        "Quantity": [r["quantity"] for r in keep],
+    }
+    for n in names:
+        data[n] = [format_value(r.get(n)) for r in keep]
+    data["Differs"] = [bool(r["differs"]) for r in keep]
+    return pd.DataFrame(data)
+
+
+DIFF_ROW_STYLE = "background-color: #fff3c4"
+
+
+def comparison_styler(df: pd.DataFrame) -> Styler:
+    """Yellow background on the rows where the cases differ."""
+    differs = df["Differs"].to_numpy(bool)
+
+    def rowstyle(row: pd.Series) -> list[str]:
+        return [DIFF_ROW_STYLE if differs[row.name] else ""] * len(row)
+
+    return df.style.apply(rowstyle, axis=1)

@@ -1,0 +1,930 @@
+"""The design-input form: grouped, labelled widgets with units, one submit per change set.
+
+Pure parts (testable without a running app):
+
+* :data:`FIELDS` - every numeric widget: key, input path, label with unit, display scale, help;
+* :func:`widget_values` - inputs dict -> widget values (display units);
+* :func:`build_inputs` - widget values + the current inputs -> (Requirement, Configuration), or
+  :class:`InputError` naming the group of widgets the problem belongs to;
+* :func:`error_group` - which group an engine ``ValueError`` message concerns.
+
+Streamlit parts: :func:`sync_widgets` (before the form renders) and :func:`input_form`.
+Inputs the form does not show (e.g. the tether's axial stiffness) are carried over unchanged from
+the current inputs, so a JSON file's values are never lost by submitting the form.
+"""
+
+from __future__ import annotations
+
+import copy
+import re
+from collections.abc import Mapping, MutableMapping
+from dataclasses import dataclass
+from typing import Any
+
+import streamlit as st
+
+from aerostat_core import FABRICS, TETHERS, Configuration, Requirement
+from aerostat_core.io import inputs_from_dict, inputs_to_dict
+
+from .state import DESIGN_KEY, init_state
+
+CUSTOM = "Custom"
+#: Where the last rejected submit's message goes: {"group": str, "text": str}.
+ERROR_KEY = "input_error"
+#: The inputs dict the widgets were last filled from.
+SRC_KEY = "_widgets_src"
+
+GROUPS = {
+    "requirement": "Requirement",
+    "wind": "Wind and operating limits",
+    "gas": "Lifting gas",
+    "materials": "Materials",
+    "configuration": "Configuration (design variables)",
+    "advanced": "Advanced model parameters",
+}
+
+
+class InputError(ValueError):
+    """An input the engine rejected; ``group`` is a key of :data:`GROUPS`."""
+
+    def __init__(self, group: str, message: str) -> None:
+        super().__init__(message)
+        self.group = group
+
+
+@dataclass(frozen=True)
+class Field:
+    """One numeric widget. ``display = SI value * scale``; ``optional`` allows an empty box
+    (``None``: the engine's automatic value)."""
+
+    key: str
+    path: str
+    label: str
+    group: str
+    scale: float = 1.0
+    step: float = 1.0
+    fmt: str = "%.2f"
+    help: str = ""
+    optional: bool = False
+    integer: bool = False
+
+
+def _F(key, path, label, group, **kw) -> Field:  # noqa: N802 - table constructor
+    return Field(key, path, label, group, **kw)
+
+
+#: Numeric widgets in display order (selects and fabric/tether choices are handled separately).
+FIELDS: tuple[Field, ...] = (
+    # requirement
+    _F(
+        "in_payload",
+        "requirement.payload_mass",
+        "Payload mass [kg]",
+        "requirement",
+        step=1.0,
+        fmt="%.1f",
+        help="Mass hung below the hull (camera, radio...). Valid (0, 500] kg.",
+    ),
+    _F(
+        "in_altitude",
+        "requirement.altitude",
+        "Operating altitude [m]",
+        "requirement",
+        step=10.0,
+        fmt="%.0f",
+        help="Height above the launch site; the tether length equals it. Valid 10-3000 m.",
+    ),
+    _F(
+        "in_site",
+        "requirement.site_elevation",
+        "Site elevation [m above sea level]",
+        "requirement",
+        step=50.0,
+        fmt="%.0f",
+        help="Launch-site elevation; air density is taken at site + altitude. Valid -400-5000 m.",
+    ),
+    _F(
+        "in_isa",
+        "requirement.isa_offset",
+        "Temperature offset from ISA [K]",
+        "requirement",
+        step=1.0,
+        fmt="%.1f",
+        help="Hot tropical day about +15 K. Valid -40 to +40 K.",
+    ),
+    # wind and limits
+    _F(
+        "in_wind_max",
+        "requirement.wind_max",
+        "Maximum wind of the sweep [m/s]",
+        "wind",
+        step=1.0,
+        fmt="%.1f",
+        help="Performance is computed from 0 to this speed. Valid (0, 40].",
+    ),
+    _F(
+        "in_wind_step",
+        "requirement.wind_step",
+        "Wind step of the sweep [m/s]",
+        "wind",
+        step=0.5,
+        fmt="%.1f",
+        help="Spacing of the wind sweep. Valid 0.1-10 m/s.",
+    ),
+    _F(
+        "in_design_wind",
+        "requirement.design_wind",
+        "Design wind [m/s]",
+        "wind",
+        step=1.0,
+        fmt="%.1f",
+        help="Wind at which the blow-by limit and the safety factor are checked "
+        "(thesis Table 2.2 uses 15 m/s). Valid 0-40 m/s.",
+    ),
+    _F(
+        "in_blow_by",
+        "requirement.blow_by_limit",
+        "Blow-by limit at the design wind [m]",
+        "wind",
+        step=5.0,
+        fmt="%.1f",
+        help="Largest acceptable downwind offset of the confluence point "
+        "from the winch; must not exceed the altitude.",
+    ),
+    _F(
+        "in_min_sf",
+        "requirement.min_tether_safety_factor",
+        "Required tether safety factor [-]",
+        "wind",
+        step=0.5,
+        fmt="%.2f",
+        help="Breaking strength / largest tether tension must reach this. Valid 1-20.",
+    ),
+    # gas
+    _F(
+        "in_purity",
+        "configuration.gas.purity",
+        "Gas purity [% by volume]",
+        "gas",
+        scale=100.0,
+        step=0.5,
+        fmt="%.1f",
+        help="The rest is air. Helium is supplied at about 98 %.",
+    ),
+    _F(
+        "in_superpressure",
+        "configuration.gas.superpressure",
+        "Hull superpressure [Pa]",
+        "gas",
+        step=50.0,
+        fmt="%.0f",
+        help="Pressure above ambient (250-400 Pa typical). Valid 0-5000.",
+    ),
+    _F(
+        "in_fixed_density",
+        "configuration.gas.fixed_density",
+        "Fixed gas density [kg/m³] (empty = thesis value)",
+        "gas",
+        step=0.001,
+        fmt="%.3f",
+        optional=True,
+        help="Used by the 'fixed' model only: thesis 0.169 (He), 0.085 (H₂).",
+    ),
+    _F(
+        "in_gas_price",
+        "configuration.gas_price",
+        "Gas price [USD/m³] (empty = default)",
+        "gas",
+        step=1.0,
+        fmt="%.2f",
+        optional=True,
+        help="Fill cost per cubic metre. Default helium 38.5 USD/m³ (thesis App. H).",
+    ),
+    # materials (custom values; used when 'Custom' is chosen)
+    _F(
+        "in_hull_gsm",
+        "configuration.hull_fabric.areal_density",
+        "Custom hull fabric [g/m²]",
+        "materials",
+        scale=1000.0,
+        step=10.0,
+        fmt="%.0f",
+        help="Used when the hull fabric is 'Custom'. Thesis fabric 130 g/m².",
+    ),
+    _F(
+        "in_fin_gsm",
+        "configuration.fin_fabric.areal_density",
+        "Custom fin fabric [g/m²]",
+        "materials",
+        scale=1000.0,
+        step=10.0,
+        fmt="%.0f",
+        help="Used when the fin fabric is 'Custom'.",
+    ),
+    _F(
+        "in_tether_lin",
+        "configuration.tether.linear_density",
+        "Custom tether linear density [g/m]",
+        "materials",
+        scale=1000.0,
+        step=1.0,
+        fmt="%.1f",
+        help="Used when the tether is 'Custom'. Thesis 20 g/m (6 kg per 300 m).",
+    ),
+    _F(
+        "in_tether_dia",
+        "configuration.tether.diameter",
+        "Custom tether diameter [mm]",
+        "materials",
+        scale=1000.0,
+        step=0.5,
+        fmt="%.1f",
+        help="Used when the tether is 'Custom'; sets the tether drag.",
+    ),
+    _F(
+        "in_tether_mbl",
+        "configuration.tether.breaking_strength",
+        "Custom tether breaking strength [kN]",
+        "materials",
+        scale=1e-3,
+        step=1.0,
+        fmt="%.2f",
+        help="Used when the tether is 'Custom'.",
+    ),
+    _F(
+        "in_tether_cd",
+        "configuration.tether.normal_drag_coefficient",
+        "Custom tether drag coefficient [-]",
+        "materials",
+        step=0.1,
+        fmt="%.2f",
+        help="Cross-flow drag coefficient of the cable (round cable 1.0-1.2).",
+    ),
+    # configuration
+    _F(
+        "in_volume",
+        "configuration.hull.volume",
+        "Hull volume [m³] (when given)",
+        "configuration",
+        step=10.0,
+        fmt="%.1f",
+        help="Used when the volume is 'Given'; the thesis baseline is 170 m³.",
+    ),
+    _F(
+        "in_fineness",
+        "configuration.hull.fineness_ratio",
+        "Fineness ratio l/d [-]",
+        "configuration",
+        step=0.1,
+        fmt="%.2f",
+        help="Design variable 1: hull length / maximum diameter (NPL standard 4.0, tactical "
+        "aerostats 2.9-3.1). Valid 1.5-8.",
+    ),
+    _F(
+        "in_fin_area",
+        "configuration.fins.area_change",
+        "Fin area change ΔS_f [%]",
+        "configuration",
+        step=5.0,
+        fmt="%.1f",
+        help="Design variable 2: change of the fin area from the statistical size. "
+        "Valid -50 to +200 %.",
+    ),
+    _F(
+        "in_fin_pos",
+        "configuration.fins.position",
+        "Fin position Δl_f [% of hull length]",
+        "configuration",
+        scale=100.0,
+        step=1.0,
+        fmt="%.1f",
+        help="Design variable 3: station of the fin root leading edge from the nose. "
+        "Valid 40-95 %; the trailing edge must stay on the hull.",
+    ),
+    _F(
+        "in_nose",
+        "configuration.hull.nose_fraction",
+        "Max-diameter station a1/l [-]",
+        "configuration",
+        step=0.01,
+        fmt="%.3f",
+        help="Where the two ellipsoids meet; NPL standard 0.432. Valid 0.2-0.8.",
+    ),
+    # advanced
+    _F(
+        "in_fin_ratio",
+        "configuration.fins.area_ratio",
+        "Fin area / hull area [-]",
+        "advanced",
+        step=0.01,
+        fmt="%.3f",
+        help="Statistical fin size (thesis preset 0.227, calibrated).",
+    ),
+    _F(
+        "in_fin_ar",
+        "configuration.fins.aspect_ratio",
+        "Fin pair aspect ratio [-]",
+        "advanced",
+        step=0.1,
+        fmt="%.2f",
+        help="Opposite pair as one wing: 2 S_p²/S_1. Valid 0.5-6.",
+    ),
+    _F(
+        "in_fin_taper",
+        "configuration.fins.taper_ratio",
+        "Fin taper ratio [-]",
+        "advanced",
+        step=0.05,
+        fmt="%.2f",
+        help="Tip chord / root chord. Valid 0.1-1.",
+    ),
+    _F(
+        "in_fin_fabric_factor",
+        "configuration.fins.fabric_factor",
+        "Fin fabric / planform area [-]",
+        "advanced",
+        step=0.1,
+        fmt="%.2f",
+        help="Two faces plus ribs and seams. Valid 1-4.",
+    ),
+    _F(
+        "in_misc",
+        "configuration.misc_mass_ratio",
+        "Miscellaneous mass / hull mass [-]",
+        "advanced",
+        step=0.05,
+        fmt="%.2f",
+        help="Confluence lines, patches, valves (thesis Table 2.2: 0.30). Valid 0-2.",
+    ),
+    _F(
+        "in_eta_k",
+        "configuration.aero.hull_efficiency",
+        "Hull efficiency η_k [-]",
+        "advanced",
+        step=0.01,
+        fmt="%.2f",
+        help="Jones & DeLaurier potential-flow factor (1.19).",
+    ),
+    _F(
+        "in_cdc",
+        "configuration.aero.hull_crossflow_drag",
+        "Hull cross-flow drag (C_dc)_h [-]",
+        "advanced",
+        step=0.01,
+        fmt="%.2f",
+        help="Viscous cross-flow drag coefficient (0.32).",
+    ),
+    _F(
+        "in_cdv",
+        "configuration.aero.hull_axial_drag",
+        "Hull drag C_DV [-] (empty = Hoerner)",
+        "advanced",
+        step=0.001,
+        fmt="%.4f",
+        optional=True,
+        help="Zero-α hull drag on V^(2/3); empty uses Hoerner's C_DV(f, Re).",
+    ),
+    _F(
+        "in_eta_f",
+        "configuration.aero.fin_efficiency",
+        "Fin efficiency η_f [-]",
+        "advanced",
+        step=0.05,
+        fmt="%.2f",
+        help="Factor on the 3-D fin lift slope (1.0). Valid 0-1.5.",
+    ),
+    _F(
+        "in_cla",
+        "configuration.aero.section_lift_slope",
+        "Fin section lift slope [1/rad]",
+        "advanced",
+        step=0.1,
+        fmt="%.3f",
+        help="Thin-aerofoil value 2π = 6.283.",
+    ),
+    _F(
+        "in_cd0_fin",
+        "configuration.aero.fin_zero_lift_drag",
+        "Fin zero-lift drag C_D0 [-]",
+        "advanced",
+        step=0.001,
+        fmt="%.4f",
+        help="On fin planform area (0.003-0.010).",
+    ),
+    _F(
+        "in_stall",
+        "configuration.aero.fin_stall_angle_deg",
+        "Fin stall angle [deg]",
+        "advanced",
+        step=1.0,
+        fmt="%.1f",
+        help="Trim beyond it is flagged. Valid 5-40 deg.",
+    ),
+    _F(
+        "in_drop",
+        "configuration.confluence.drop_ratio",
+        "Confluence point below hull / diameter [-]",
+        "advanced",
+        step=0.05,
+        fmt="%.2f",
+        help="Not given in the thesis; 0.6 is an engineering guess. Valid 0.05-3.",
+    ),
+    _F(
+        "in_xi_off",
+        "configuration.confluence.xi_offset",
+        "Confluence station offset / length [-]",
+        "advanced",
+        step=0.01,
+        fmt="%.3f",
+        help="Shift aft (+) from below the centre of net static lift. Valid -0.2 to 0.2.",
+    ),
+    _F(
+        "in_wind_exp",
+        "configuration.wind_profile.exponent",
+        "Power-law exponent [-]",
+        "advanced",
+        step=0.01,
+        fmt="%.3f",
+        help="Used by the power-law profile (1/7 open land).",
+    ),
+    _F(
+        "in_z0",
+        "configuration.wind_profile.roughness_length",
+        "Log-law roughness length [m]",
+        "advanced",
+        step=0.01,
+        fmt="%.3f",
+        help="Used by the log-law profile (0.03 m open land).",
+    ),
+    _F(
+        "in_segments",
+        "configuration.tether_segments",
+        "Tether segments [-]",
+        "advanced",
+        step=10,
+        fmt="%d",
+        integer=True,
+        help="Segments of the static tether march (50 is within 1 mm of 2000). Valid 10-5000.",
+    ),
+)
+
+FIELD_BY_KEY = {f.key: f for f in FIELDS}
+
+#: Choice widgets: key -> (path, label, options {value: shown text}, group, help).
+CHOICES: dict[str, tuple[str, str, dict[str, str], str, str]] = {
+    "in_gas_kind": (
+        "configuration.gas.kind",
+        "Lifting gas",
+        {"helium": "Helium", "hydrogen": "Hydrogen"},
+        "gas",
+        "Hydrogen lifts about 8 % more but burns.",
+    ),
+    "in_density_model": (
+        "configuration.gas.density_model",
+        "Gas density model",
+        {"ideal": "Ideal gas at altitude (physics)", "fixed": "Fixed density (thesis constants)"},
+        "gas",
+        "Ideal: gas density from pressure, temperature, purity and "
+        "superpressure. Fixed: the thesis' 0.169 kg/m³ for helium.",
+    ),
+    "in_arrangement": (
+        "configuration.fins.arrangement",
+        "Fin arrangement",
+        {"+": "4 fins, + (cross)", "x": "4 fins, x", "inverted-y": "3 fins, inverted Y"},
+        "configuration",
+        "Number and layout of the tail fins.",
+    ),
+    "in_cutoff": (
+        "configuration.aero.cutoff",
+        "Potential-flow cut-off station l_h",
+        {"fin": "At the fin root (thesis symbol list)", "tail": "At the tail"},
+        "advanced",
+        "Station where the Jones & DeLaurier potential-flow term stops.",
+    ),
+    "in_wind_kind": (
+        "configuration.wind_profile.kind",
+        "Wind profile along the tether",
+        {"uniform": "Uniform (thesis plots)", "power": "Power law", "log": "Log law"},
+        "advanced",
+        "The sweep speed is the wind at the aerostat; the profile scales it down along the tether.",
+    ),
+}
+
+VOLUME_MODE_KEY = "in_volume_mode"
+VOLUME_MODES = {"given": "Given", "sized": "Sized to meet the blow-by limit"}
+HULL_FABRIC_KEY, FIN_FABRIC_KEY, TETHER_KEY = "in_hull_fabric", "in_fin_fabric", "in_tether"
+SUBMIT_KEY = "in_submit"
+
+WIDGET_KEYS: tuple[str, ...] = (
+    *FIELD_BY_KEY,
+    *CHOICES,
+    VOLUME_MODE_KEY,
+    HULL_FABRIC_KEY,
+    FIN_FABRIC_KEY,
+    TETHER_KEY,
+)
+
+#: Engine class (and optional field) -> widget group, for placing an error message.
+_CLASS_GROUP = {
+    "LiftingGas": "gas",
+    "Fabric": "materials",
+    "TetherSpec": "materials",
+    "HullSpec": "configuration",
+    "AeroModel": "advanced",
+    "ConfluenceSpec": "advanced",
+    "WindProfile": "advanced",
+}
+_FIELD_GROUP = {
+    "Requirement.payload_mass": "requirement",
+    "Requirement.altitude": "requirement",
+    "Requirement.site_elevation": "requirement",
+    "Requirement.isa_offset": "requirement",
+    "Configuration.gas_price": "gas",
+    "Configuration.misc_mass_ratio": "advanced",
+    "Configuration.tether_segments": "advanced",
+    "FinSpec.count": "configuration",
+    "FinSpec.arrangement": "configuration",
+    "FinSpec.area_change": "configuration",
+    "FinSpec.position": "configuration",
+}
+_ERR_RE = re.compile(r"([A-Za-z]+)\.([a-z_]+)")
+
+
+def error_group(message: str) -> str:
+    """The widget group an engine message concerns ("Requirement.altitude = ..." ->
+    "requirement"); "general" when it names no known field.
+
+    >>> error_group("Requirement.blow_by_limit = 400 m is outside the valid range (0, 300] m")
+    'wind'
+    >>> error_group("FinSpec.aspect_ratio = 9 is outside the valid range [0.5, 6]")
+    'advanced'
+    >>> error_group("something else")
+    'general'
+    """
+    m = _ERR_RE.search(message)
+    if not m:
+        return "general"
+    cls, field = m.group(1), m.group(2)
+    if f"{cls}.{field}" in _FIELD_GROUP:
+        return _FIELD_GROUP[f"{cls}.{field}"]
+    if cls == "Requirement":
+        return "wind"
+    if cls == "FinSpec":
+        return "advanced"
+    return _CLASS_GROUP.get(cls, "general")
+
+
+# --- pure conversions ---------------------------------------------------------------------------
+
+
+def _clean(x: float) -> float:
+    """Round to 12 significant digits so that 0.68 -> 68 % -> 0.68 round-trips exactly."""
+    return float(f"{x:.12g}")
+
+
+def _get(d: Mapping[str, Any], path: str) -> Any:
+    obj: Any = d
+    for part in path.split("."):
+        if not isinstance(obj, Mapping) or part not in obj:
+            return None
+        obj = obj[part]
+    return obj
+
+
+def _set(d: MutableMapping[str, Any], path: str, value: Any) -> None:
+    parts = path.split(".")
+    obj = d
+    for part in parts[:-1]:
+        obj = obj.setdefault(part, {})
+    obj[parts[-1]] = value
+
+
+def _catalogue_name(current: Mapping[str, Any] | None, catalogue: Mapping[str, Any]) -> str:
+    """The catalogue entry equal to ``current`` (an inputs sub-dict), else "Custom"."""
+    if isinstance(current, Mapping):
+        name = current.get("name")
+        if name in catalogue:
+            entry = inputs_to_dict_part(catalogue[name])
+            if all(current.get(k) == v for k, v in entry.items()):
+                return str(name)
+    return CUSTOM
+
+
+def inputs_to_dict_part(obj: Any) -> dict[str, Any]:
+    """A catalogue item (Fabric/TetherSpec) as the plain dict used in inputs dicts."""
+    from dataclasses import fields
+
+    out = {}
+    for f in fields(obj):
+        v = getattr(obj, f.name)
+        out[f.name] = "inf" if isinstance(v, float) and v == float("inf") else v
+    return out
+
+
+def widget_values(
+    inputs: Mapping[str, Any], previous: Mapping[str, Any] | None = None
+) -> dict[str, Any]:
+    """Widget values (display units) that show ``inputs``; ``previous`` widget values fill the
+    boxes the inputs leave open (the given-volume box while the volume is sized)."""
+    previous = previous or {}
+    out: dict[str, Any] = {}
+    for f in FIELDS:
+        v = _get(inputs, f.path)
+        if v is None or isinstance(v, str):
+            if f.optional:
+                out[f.key] = None
+                continue
+            prev = previous.get(f.key)
+            out[f.key] = (
+                prev if isinstance(prev, (int, float)) else (170.0 if f.key == "in_volume" else 0.0)
+            )
+            continue
+        out[f.key] = int(v) if f.integer else _clean(float(v) * f.scale)
+    for key, (path, _label, options, _g, _h) in CHOICES.items():
+        v = _get(inputs, path)
+        out[key] = v if v in options else next(iter(options))
+    vol = _get(inputs, "configuration.hull.volume")
+    out[VOLUME_MODE_KEY] = "sized" if vol is None else "given"
+    cfg = inputs.get("configuration", {}) if isinstance(inputs, Mapping) else {}
+    out[HULL_FABRIC_KEY] = _catalogue_name(cfg.get("hull_fabric"), FABRICS)
+    out[FIN_FABRIC_KEY] = _catalogue_name(cfg.get("fin_fabric"), FABRICS)
+    out[TETHER_KEY] = _catalogue_name(cfg.get("tether"), TETHERS)
+    return out
+
+
+def build_inputs(
+    values: Mapping[str, Any], base: Mapping[str, Any]
+) -> tuple[Requirement, Configuration]:
+    """Validated (Requirement, Configuration) from widget ``values``; anything the widgets do not
+    cover is taken from ``base`` (the current inputs dict). Raises :class:`InputError`."""
+    d = copy.deepcopy(dict(base))
+    d.pop("name", None)
+    shown = widget_values(base)
+    for f in FIELDS:
+        if f.key not in values:
+            continue
+        v = values[f.key]
+        if v == shown.get(f.key) and _get(base, f.path) is not None:
+            continue  # untouched: keep the exact value (no rounding drift through the display)
+        if f.key == "in_volume":
+            continue  # handled with the volume mode below
+        if f.key in ("in_hull_gsm", "in_fin_gsm") or f.key.startswith("in_tether_"):
+            continue  # handled with the material choice below
+        if v is None:
+            if f.optional:
+                _set(d, f.path, None)
+                continue
+            raise InputError(f.group, f"{f.label}: enter a value.")
+        _set(d, f.path, int(v) if f.integer else _clean(float(v) / f.scale))
+    for key, (path, _label, _options, _g, _h) in CHOICES.items():
+        if key in values:
+            _set(d, path, values[key])
+    arrangement = _get(d, "configuration.fins.arrangement")
+    _set(d, "configuration.fins.count", 3 if arrangement == "inverted-y" else 4)
+    # volume
+    if values.get(VOLUME_MODE_KEY, "given") == "sized":
+        _set(d, "configuration.hull.volume", None)
+    elif "in_volume" in values:
+        v = values["in_volume"]
+        if v is None:
+            raise InputError("configuration", "Hull volume [m³]: enter a value or choose 'Sized'.")
+        _set(d, "configuration.hull.volume", _clean(float(v)))
+    # materials
+    for sel_key, gsm_key, part in (
+        (HULL_FABRIC_KEY, "in_hull_gsm", "hull_fabric"),
+        (FIN_FABRIC_KEY, "in_fin_gsm", "fin_fabric"),
+    ):
+        choice = values.get(sel_key)
+        if choice is None:
+            continue
+        if choice != CUSTOM:
+            if choice not in FABRICS:
+                raise InputError("materials", f"Unknown fabric {choice!r}.")
+            _set(d, f"configuration.{part}", inputs_to_dict_part(FABRICS[choice]))
+            continue
+        gsm = values.get(gsm_key)
+        if gsm is None:
+            raise InputError("materials", f"{FIELD_BY_KEY[gsm_key].label}: enter a value.")
+        old = _get(d, f"configuration.{part}") or {}
+        areal = _clean(float(gsm) / 1000.0)
+        name = (
+            old.get("name")
+            if (old.get("areal_density") == areal and old.get("name") not in FABRICS)
+            else f"Custom {gsm:g} g/m2"
+        )
+        _set(d, f"configuration.{part}", {"name": name, "areal_density": areal})
+    choice = values.get(TETHER_KEY)
+    if choice is not None:
+        if choice != CUSTOM:
+            if choice not in TETHERS:
+                raise InputError("materials", f"Unknown tether {choice!r}.")
+            _set(d, "configuration.tether", inputs_to_dict_part(TETHERS[choice]))
+        else:
+            old = dict(_get(d, "configuration.tether") or {})
+            new = dict(old)
+            for key in ("in_tether_lin", "in_tether_dia", "in_tether_mbl", "in_tether_cd"):
+                f = FIELD_BY_KEY[key]
+                v = values.get(key)
+                if v is None:
+                    raise InputError("materials", f"{f.label}: enter a value.")
+                new[f.path.rsplit(".", 1)[1]] = _clean(float(v) / f.scale)
+            if new != old or old.get("name") in TETHERS or not old.get("name"):
+                new["name"] = f"Custom tether {new['linear_density'] * 1000:g} g/m"
+            _set(d, "configuration.tether", new)
+    try:
+        return inputs_from_dict(d)
+    except ValueError as exc:
+        msg = str(exc)
+        raise InputError(error_group(msg), msg) from None
+
+
+# --- Streamlit side -----------------------------------------------------------------------------
+
+
+def sync_widgets(state: MutableMapping[str, Any] | None = None, *, force: bool = False) -> None:
+    """Fill the form's widgets from the current inputs when those changed elsewhere (baseline
+    button, file import, another page) or when a widget value is missing. Call before the form
+    renders, or from a callback."""
+    s = st.session_state if state is None else state
+    init_state(s)
+    inputs = s[DESIGN_KEY]
+    missing = any(k not in s for k in WIDGET_KEYS)
+    if force or missing or s.get(SRC_KEY) != inputs:
+        previous = {k: s[k] for k in WIDGET_KEYS if k in s}
+        for k, v in widget_values(inputs, previous).items():
+            s[k] = v
+        s[SRC_KEY] = copy.deepcopy(inputs)
+
+
+def _on_submit() -> None:
+    s = st.session_state
+    values = {k: s[k] for k in WIDGET_KEYS if k in s}
+    try:
+        req, cfg = build_inputs(values, s[DESIGN_KEY])
+    except InputError as exc:
+        s[ERROR_KEY] = {"group": exc.group, "text": str(exc)}
+        return
+    s.pop(ERROR_KEY, None)
+    s[DESIGN_KEY] = inputs_to_dict(req, cfg)
+    sync_widgets(s, force=True)  # show the canonical values (catalogue materials, rounding)
+
+
+def _group_error(group: str) -> None:
+    err = st.session_state.get(ERROR_KEY)
+    if err and err.get("group") == group:
+        st.error(f"Not applied: {err['text']}", icon=":material/error:")
+
+
+def _number(f: Field) -> None:
+    kw: dict[str, Any] = dict(
+        step=f.step, format=f.fmt, help=f.help, key=f.key, persist_state="session"
+    )
+    if f.optional:
+        kw["placeholder"] = "auto"
+    st.number_input(f.label, **kw)
+
+
+def _choice(key: str, horizontal: bool = False) -> None:
+    path, label, options, _g, help_ = CHOICES[key]
+    if len(options) <= 3 and horizontal:
+        st.radio(
+            label,
+            list(options),
+            format_func=options.get,
+            key=key,
+            help=help_,
+            horizontal=True,
+            persist_state="session",
+        )
+    else:
+        st.selectbox(
+            label,
+            list(options),
+            format_func=options.get,
+            key=key,
+            help=help_,
+            persist_state="session",
+        )
+
+
+def input_form() -> None:
+    """The grouped design-input form (one rerun per submit)."""
+    sync_widgets()
+    err = st.session_state.get(ERROR_KEY)
+    with st.form("design_inputs_form", border=False, enter_to_submit=False):
+        if err and err.get("group") == "general":
+            st.error(f"Not applied: {err['text']}", icon=":material/error:")
+        elif err:
+            st.warning(
+                f"Inputs not applied: see **{GROUPS.get(err['group'], '')}** below.",
+                icon=":material/warning:",
+            )
+        with st.expander(GROUPS["requirement"], expanded=True, icon=":material/flag:"):
+            _group_error("requirement")
+            c1, c2 = st.columns(2)
+            with c1:
+                _number(FIELD_BY_KEY["in_payload"])
+                _number(FIELD_BY_KEY["in_site"])
+            with c2:
+                _number(FIELD_BY_KEY["in_altitude"])
+                _number(FIELD_BY_KEY["in_isa"])
+        with st.expander(GROUPS["wind"], expanded=True, icon=":material/air:"):
+            _group_error("wind")
+            c1, c2 = st.columns(2)
+            with c1:
+                _number(FIELD_BY_KEY["in_design_wind"])
+                _number(FIELD_BY_KEY["in_wind_max"])
+                _number(FIELD_BY_KEY["in_min_sf"])
+            with c2:
+                _number(FIELD_BY_KEY["in_blow_by"])
+                _number(FIELD_BY_KEY["in_wind_step"])
+        with st.expander(GROUPS["configuration"], expanded=True, icon=":material/tune:"):
+            _group_error("configuration")
+            st.radio(
+                "Hull volume",
+                list(VOLUME_MODES),
+                format_func=VOLUME_MODES.get,
+                key=VOLUME_MODE_KEY,
+                horizontal=True,
+                persist_state="session",
+                help="Given: use the volume below. Sized: the smallest hull that meets "
+                "the blow-by limit at the design wind with positive free lift.",
+            )
+            c1, c2 = st.columns(2)
+            with c1:
+                _number(FIELD_BY_KEY["in_volume"])
+                _number(FIELD_BY_KEY["in_fin_area"])
+                _choice("in_arrangement")
+            with c2:
+                _number(FIELD_BY_KEY["in_fineness"])
+                _number(FIELD_BY_KEY["in_fin_pos"])
+                _number(FIELD_BY_KEY["in_nose"])
+        with st.expander(GROUPS["gas"], expanded=False, icon=":material/bubble_chart:"):
+            _group_error("gas")
+            c1, c2 = st.columns(2)
+            with c1:
+                _choice("in_gas_kind")
+                _number(FIELD_BY_KEY["in_purity"])
+                _number(FIELD_BY_KEY["in_gas_price"])
+            with c2:
+                _choice("in_density_model")
+                _number(FIELD_BY_KEY["in_superpressure"])
+                _number(FIELD_BY_KEY["in_fixed_density"])
+        with st.expander(GROUPS["materials"], expanded=False, icon=":material/layers:"):
+            _group_error("materials")
+            fabric_opts = [*FABRICS, CUSTOM]
+            c1, c2 = st.columns(2)
+            with c1:
+                st.selectbox(
+                    "Hull fabric",
+                    fabric_opts,
+                    key=HULL_FABRIC_KEY,
+                    persist_state="session",
+                    help="Catalogue fabric, or 'Custom' to use the value below.",
+                )
+                _number(FIELD_BY_KEY["in_hull_gsm"])
+            with c2:
+                st.selectbox(
+                    "Fin fabric",
+                    fabric_opts,
+                    key=FIN_FABRIC_KEY,
+                    persist_state="session",
+                    help="Catalogue fabric, or 'Custom' to use the value below.",
+                )
+                _number(FIELD_BY_KEY["in_fin_gsm"])
+            st.selectbox(
+                "Tether",
+                [*TETHERS, CUSTOM],
+                key=TETHER_KEY,
+                persist_state="session",
+                help="Catalogue tether, or 'Custom' to use the values below.",
+            )
+            c1, c2 = st.columns(2)
+            with c1:
+                _number(FIELD_BY_KEY["in_tether_lin"])
+                _number(FIELD_BY_KEY["in_tether_mbl"])
+            with c2:
+                _number(FIELD_BY_KEY["in_tether_dia"])
+                _number(FIELD_BY_KEY["in_tether_cd"])
+        with st.expander(GROUPS["advanced"], expanded=False, icon=":material/science:"):
+            _group_error("advanced")
+            st.caption("Model coefficients with documented defaults (see the Method page).")
+            c1, c2 = st.columns(2)
+            adv = [f for f in FIELDS if f.group == "advanced"]
+            half = (len(adv) + 1) // 2
+            with c1:
+                _choice("in_cutoff")
+                for f in adv[:half]:
+                    _number(f)
+            with c2:
+                _choice("in_wind_kind")
+                for f in adv[half:]:
+                    _number(f)
+        st.form_submit_button(
+            "Update design",
+            type="primary",
+            on_click=_on_submit,
+            key=SUBMIT_KEY,
+            icon=":material/refresh:",
+            width="stretch",
+        )

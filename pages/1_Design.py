@@ -1,0 +1,295 @@
+"""Design page: inputs (one submit per change set) -> sized aerostat, geometry, mass,
+performance versus wind, tether profiles; save as a case; JSON/CSV export and import."""
+
+from __future__ import annotations
+
+import streamlit as st
+
+from aerostat_core import thesis_baseline
+from aerostat_core.io import design_to_json
+from aerostat_core.report import tether_profile_rows
+from app_ui import cache, plots, state, widgets
+from app_ui.plots import geometry_frame, mass_frame, performance_frame, performance_styler
+
+st.title("Aerostat design")
+st.caption(
+    "Enter the requirement and the design choices, then press **Update design**. "
+    "Everything is recomputed from the inputs; units are SI unless a label says otherwise."
+)
+
+
+def _load_baseline() -> None:
+    state.set_current_inputs(*thesis_baseline())
+    st.session_state.pop(widgets.ERROR_KEY, None)
+
+
+def _save_case() -> None:
+    name = st.session_state.get("case_name", "") or st.session_state.get("_case_name_default", "")
+    try:
+        used = state.save_case(name, *state.current_inputs())
+    except ValueError as exc:
+        st.session_state["case_feedback"] = ("error", str(exc))
+    else:
+        st.session_state["case_feedback"] = (
+            "success",
+            f"Saved case “{used}”. Compare saved cases on the Compare page.",
+        )
+        st.session_state["case_name"] = ""
+
+
+def _on_upload() -> None:
+    uploaded = st.session_state.get("design_upload")
+    if uploaded is not None:
+        state.handle_upload(uploaded, "design")
+        st.session_state.pop(widgets.ERROR_KEY, None)
+
+
+def _fmt(v: float, digits: int = 1) -> str:
+    return f"{v:,.{digits}f}"
+
+
+col_in, col_out = st.columns([1.05, 2.2], gap="large")
+
+# --- inputs ------------------------------------------------------------------------------------
+with col_in:
+    st.subheader("Inputs", anchor=False)
+    st.button(
+        "Load thesis baseline",
+        on_click=_load_baseline,
+        icon=":material/restart_alt:",
+        help="10 kg payload at 300 m, 170 m³ NPL hull with fineness ratio 4.0, thesis "
+        "constants (helium 0.169 kg/m³, 130 g/m² fabric, 20 g/m tether).",
+    )
+    widgets.input_form()
+    with st.expander("Design file: export / import", icon=":material/folder_open:"):
+        req_cur, cfg_cur = state.current_inputs()
+        st.download_button(
+            "Download design inputs (JSON)",
+            data=design_to_json(req_cur, cfg_cur),
+            file_name="aerostat-design.json",
+            mime="application/json",
+            on_click="ignore",
+            icon=":material/download:",
+            key="dl_design_json",
+            help="Every input, including those not shown in the form. Upload it again to "
+            "restore the design.",
+        )
+        st.file_uploader(
+            "Upload a design or cases file (JSON)",
+            type=["json"],
+            key="design_upload",
+            on_change=_on_upload,
+            help="A design file replaces the current inputs; a cases file adds saved cases. "
+            "A file with a problem changes nothing.",
+        )
+        fb = st.session_state.get(state.IMPORT_MSG_KEY)
+        if fb and fb.get("where") == "design":
+            (st.success if fb["level"] == "success" else st.error)(fb["text"])
+
+# --- results -----------------------------------------------------------------------------------
+with col_out:
+    try:
+        rep = cache.cached_report(state.current_inputs_key())
+    except Exception as exc:  # noqa: BLE001 - never show a traceback
+        st.error(
+            f"The design could not be evaluated with these inputs: {exc}", icon=":material/error:"
+        )
+        st.stop()
+    s, lim = rep["summary"], rep["limits"]
+
+    st.subheader("Result", anchor=False)
+    c = st.columns(5)
+    c[0].metric(
+        "Hull volume [m³]",
+        _fmt(s["volume_m3"]),
+        help="Sized: smallest hull meeting the blow-by limit with positive free lift."
+        if rep["sized"]
+        else "Given in the inputs.",
+        delta="sized" if rep["sized"] else "given",
+        delta_color="off",
+        delta_arrow="off",
+    )
+    c[1].metric("Hull length [m]", _fmt(s["length_m"], 2))
+    c[2].metric("Hull diameter [m]", _fmt(s["diameter_m"], 2))
+    c[3].metric(
+        "Total mass [kg]",
+        _fmt(s["total_mass_kg"]),
+        help="Hull, fins, lifting gas, miscellaneous, payload and tether.",
+    )
+    c[4].metric(
+        "Free lift [kg]",
+        _fmt(s["free_lift_kg"]),
+        help="Gross buoyancy minus total weight, in kilograms "
+        f"({s['percent_static_lift']:.0f} % of the gross buoyancy).",
+    )
+    c = st.columns(5)
+    bb = s["blow_by_at_design_wind_m"]
+    c[0].metric(
+        f"Blow-by at {lim['design_wind']:g} m/s [m]",
+        _fmt(bb),
+        delta=f"{bb - lim['blow_by_limit']:+.1f} m vs limit",
+        delta_color="inverse",
+        help=f"Downwind offset of the confluence point; limit {lim['blow_by_limit']:g} m.",
+    )
+    c[1].metric(
+        f"α_eq at {lim['design_wind']:g} m/s [deg]",
+        _fmt(s["alpha_at_design_wind_deg"], 2),
+        help="Equilibrium angle of attack (moment balance about the confluence point).",
+    )
+    c[2].metric(
+        f"Tether tension at {lim['design_wind']:g} m/s [N]",
+        _fmt(s["tension_top_at_design_wind_N"], 0),
+        help="Tension at the confluence point.",
+    )
+    sf = s["safety_factor_at_design_wind"]
+    c[3].metric(
+        "Tether safety factor [-]",
+        _fmt(sf, 2),
+        delta=f"{sf - lim['min_safety_factor']:+.2f} vs required",
+        help="Breaking strength / largest tension along the tether at the design wind.",
+    )
+    c[4].metric("Gas fill cost [USD]", _fmt(s["gas_cost_USD"], 0), help="Hull volume × gas price.")
+
+    if rep["feasible"]:
+        st.success("Meets every requirement at the design wind.", icon=":material/check_circle:")
+    else:
+        st.error(
+            "**Requirements not met:**\n" + "\n".join(f"- {v}" for v in rep["violations"]),
+            icon=":material/error:",
+        )
+    p = rep["perf"]
+    lim_speeds = [f"{v:g}" for v, flag in zip(p["wind_speed"], p["limited"]) if flag]
+    if lim_speeds:
+        st.warning(
+            f"Operating limits exceeded in the sweep at {', '.join(lim_speeds)} m/s "
+            "(marked in red in the table and plots).",
+            icon=":material/warning:",
+        )
+
+    with st.form("save_case_form", border=False, enter_to_submit=True):
+        req_cur, _ = state.current_inputs()
+        default_name = (
+            f"Case {len(state.get_cases()) + 1}: {req_cur.payload_mass:g} kg at "
+            f"{req_cur.altitude:g} m"
+        )
+        st.session_state["_case_name_default"] = default_name
+        c1, c2 = st.columns([3, 1], vertical_alignment="bottom")
+        c1.text_input(
+            "Save the current design as a case",
+            key="case_name",
+            placeholder=default_name,
+            max_chars=state.MAX_NAME_CHARS,
+            help="Saved cases are compared on the Compare page. They last for this "
+            "browser session: export them there as JSON to keep them.",
+        )
+        c2.form_submit_button(
+            "Save case", on_click=_save_case, icon=":material/bookmark_add:", width="stretch"
+        )
+    fb = st.session_state.pop("case_feedback", None)
+    if fb:
+        (st.success if fb[0] == "success" else st.error)(fb[1])
+
+    tab_geo, tab_mass, tab_perf, tab_teth = st.tabs(
+        ["Geometry", "Mass", "Performance", "Tether profiles"]
+    )
+
+    with tab_geo:
+        g1, g2 = st.columns([1, 1.6])
+        with g1:
+            gdf = geometry_frame(rep["geometry_rows"])
+            st.dataframe(
+                gdf,
+                hide_index=True,
+                width="stretch",
+                height=420,
+                column_config={"Value": st.column_config.NumberColumn(format="%.3f")},
+                key="geometry_table",
+            )
+            st.download_button(
+                "Geometry table (CSV)",
+                data=cache.csv_bytes(rep["geometry_rows"]),
+                file_name="geometry.csv",
+                mime="text/csv",
+                on_click="ignore",
+                icon=":material/download:",
+                key="dl_geometry",
+            )
+        with g2:
+            st.plotly_chart(plots.side_view_figure(rep), key="side_view")
+        st.plotly_chart(plots.hull_3d_figure(rep), key="hull_3d")
+
+    with tab_mass:
+        m1, m2 = st.columns([1, 1.4])
+        with m1:
+            st.dataframe(
+                mass_frame(rep["mass_rows"]),
+                hide_index=True,
+                width="stretch",
+                column_config={
+                    "Mass [kg]": st.column_config.NumberColumn(format="%.2f"),
+                    "Share [%]": st.column_config.NumberColumn(format="%.1f"),
+                },
+                key="mass_table",
+            )
+            st.download_button(
+                "Mass table (CSV)",
+                data=cache.csv_bytes(rep["mass_rows"]),
+                file_name="mass.csv",
+                mime="text/csv",
+                on_click="ignore",
+                icon=":material/download:",
+                key="dl_mass",
+            )
+        with m2:
+            st.plotly_chart(plots.mass_figure(rep), key="mass_chart")
+
+    with tab_perf:
+        pdf = performance_frame(rep["performance_rows"])
+        st.dataframe(
+            performance_styler(pdf), hide_index=True, width="stretch", key="performance_table"
+        )
+        st.caption("Rows with a red background break an operating limit (last column says which).")
+        st.download_button(
+            "Performance table (CSV)",
+            data=cache.csv_bytes(rep["performance_rows"]),
+            file_name="performance.csv",
+            mime="text/csv",
+            on_click="ignore",
+            icon=":material/download:",
+            key="dl_performance",
+        )
+        r1 = st.columns(2)
+        r1[0].plotly_chart(plots.performance_figure(rep, "blow_by"), key="perf_blow_by")
+        r1[1].plotly_chart(plots.performance_figure(rep, "alpha_eq"), key="perf_alpha")
+        r2 = st.columns(2)
+        r2[0].plotly_chart(plots.performance_figure(rep, "dynamic_lift"), key="perf_lift")
+        r2[1].plotly_chart(plots.tension_figure(rep), key="perf_tension")
+        r3 = st.columns(2)
+        r3[0].plotly_chart(plots.cm_figure(rep), key="perf_cm")
+
+    with tab_teth:
+
+        @st.fragment
+        def _tether_panel() -> None:
+            speeds = [float(v) for v in rep["tether"]["wind_speed"]]
+            default = plots.default_tether_speeds(speeds)
+            chosen = st.multiselect(
+                "Wind speeds to show [m/s]",
+                speeds,
+                default=default,
+                key="tether_speeds",
+                format_func=lambda v: f"{v:g}",
+                help="Tether profiles of the sweep, drawn to scale.",
+            )
+            st.plotly_chart(plots.tether_figure(rep, sorted(chosen) or default), key="tether_plot")
+
+        _tether_panel()
+        st.download_button(
+            "Tether profiles (CSV)",
+            data=lambda: cache.csv_bytes(tether_profile_rows(rep["tether"])),
+            file_name="tether-profiles.csv",
+            mime="text/csv",
+            on_click="ignore",
+            icon=":material/download:",
+            key="dl_tether",
+        )

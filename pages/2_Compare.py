@@ -1,0 +1,243 @@
+"""Compare page: saved cases side by side (differences highlighted), overlaid performance curves
+and tether profiles; load the thesis' GUI test cases; rename, delete, export and import cases."""
+
+from __future__ import annotations
+
+import streamlit as st
+
+from aerostat_core.io import inputs_from_dict
+from aerostat_core.report import thesis_gui_cases
+from app_ui import cache, plots, state
+
+st.title("Compare saved cases")
+st.caption(
+    "Save designs on the Design page (or load the thesis' GUI test cases) and compare them here. "
+    "Saved cases last for this browser session: download them as JSON to keep them."
+)
+
+
+def _load_gui_cases() -> None:
+    names = state.add_cases(thesis_gui_cases())
+    st.session_state["compare_feedback"] = (
+        "success",
+        f"Added the thesis' GUI test cases: {', '.join(names)}.",
+    )
+
+
+def _rename() -> None:
+    old = st.session_state.get("rename_from")
+    new = st.session_state.get("rename_to", "")
+    try:
+        used = state.rename_case(old, new)
+    except ValueError as exc:
+        st.session_state["compare_feedback"] = ("error", str(exc))
+    else:
+        st.session_state["compare_feedback"] = ("success", f"Renamed “{old}” to “{used}”.")
+        st.session_state["rename_to"] = ""
+
+
+def _delete() -> None:
+    names = st.session_state.get("delete_names") or []
+    for n in names:
+        state.delete_case(n)
+    st.session_state["delete_names"] = []
+    if names:
+        st.session_state["compare_feedback"] = ("success", f"Deleted {len(names)} case(s).")
+
+
+def _load_into_design() -> None:
+    name = st.session_state.get("load_name")
+    cases = state.get_cases()
+    if name in cases:
+        state.set_current_inputs(*inputs_from_dict(cases[name]))
+        st.session_state["compare_feedback"] = (
+            "success",
+            f"“{name}” is now the current design: open the Design page to edit it.",
+        )
+
+
+def _on_upload() -> None:
+    uploaded = st.session_state.get("cases_upload")
+    if uploaded is not None:
+        state.handle_upload(uploaded, "compare")
+
+
+top = st.columns([1, 1, 2], vertical_alignment="center")
+top[0].button(
+    "Load the thesis' GUI test cases",
+    on_click=_load_gui_cases,
+    icon=":material/playlist_add:",
+    help="Payload 10 vs 30 kg at 300 m, and altitude 100 vs 500 m with 10 kg "
+    "(thesis §4.5), each from the thesis baseline with the volume sized.",
+)
+
+fb = st.session_state.pop("compare_feedback", None)
+if fb:
+    (st.success if fb[0] == "success" else st.error)(fb[1])
+
+cases = state.get_cases()
+
+with st.expander("Cases file: export / import", icon=":material/folder_open:", expanded=not cases):
+    c1, c2 = st.columns(2)
+    with c1:
+        st.download_button(
+            "Download all cases (JSON)",
+            data=cache.cases_json_bytes(cases),
+            file_name="aerostat-cases.json",
+            mime="application/json",
+            on_click="ignore",
+            icon=":material/download:",
+            key="dl_cases_json",
+            disabled=not cases,
+            help="Every input of every case; upload it again to restore them.",
+        )
+        cases_json = cache.cases_key(cases)
+        st.download_button(
+            "Download all cases (CSV)",
+            data=lambda: cache.cached_cases_csv(cases_json).encode("utf-8"),
+            file_name="aerostat-cases.csv",
+            mime="text/csv",
+            on_click="ignore",
+            icon=":material/table:",
+            key="dl_cases_csv",
+            disabled=not cases,
+            help="One tidy table: a row per case and wind speed, with every input, the headline "
+            "results and the performance at that wind. Units are in the column names.",
+        )
+    with c2:
+        st.file_uploader(
+            "Upload a cases or design file (JSON)",
+            type=["json"],
+            key="cases_upload",
+            on_change=_on_upload,
+            help="Cases are added (a name that exists gets a number); a design "
+            "file replaces the current inputs. A file with a problem "
+            "changes nothing.",
+        )
+    fb = st.session_state.get(state.IMPORT_MSG_KEY)
+    if fb and fb.get("where") == "compare":
+        (st.success if fb["level"] == "success" else st.error)(fb["text"])
+
+if not cases:
+    st.info(
+        "No saved cases yet. Save the current design on the **Design** page, or load the "
+        "thesis' GUI test cases above.",
+        icon=":material/info:",
+    )
+    st.stop()
+
+names = list(cases)
+# Keep the selection in step with the saved cases: new (or renamed) cases join it, deleted ones
+# leave it; the user's own deselections stay.
+_prev = st.session_state.get("_compare_names")
+if _prev != names or "compare_selected" not in st.session_state:
+    _sel = st.session_state.get("compare_selected")
+    st.session_state["compare_selected"] = [
+        n for n in names if _sel is None or _prev is None or n in _sel or n not in _prev
+    ]
+    st.session_state["_compare_names"] = names
+for _key in ("rename_from", "load_name"):
+    if st.session_state.get(_key) not in names:
+        st.session_state.pop(_key, None)
+selected = st.multiselect(
+    "Cases to compare",
+    names,
+    key="compare_selected",
+    help="One column per case in the table, one line per case in the plots.",
+)
+if not selected:
+    st.info("Choose at least one case to compare.")
+    st.stop()
+
+reports: dict[str, dict] = {}
+for name in selected:
+    try:
+        reports[name] = cache.report_for(cases[name])
+    except Exception as exc:  # noqa: BLE001 - never show a traceback
+        st.error(f"Case “{name}” could not be evaluated: {exc}", icon=":material/error:")
+
+tab_table, tab_perf, tab_tether, tab_manage = st.tabs(
+    ["Side by side", "Performance", "Tether profiles", "Manage cases"]
+)
+
+with tab_table:
+    ok = [n for n in selected if n in reports]
+    sub = {n: cases[n] for n in ok}
+    only_diff = st.toggle("Show only the rows that differ", key="compare_only_diff", value=False)
+    try:
+        rows = cache.cached_comparison(cache.cases_key(sub)) if sub else []
+    except Exception as exc:  # noqa: BLE001
+        st.error(f"The comparison could not be built: {exc}")
+        rows = []
+    if rows:
+        df = plots.comparison_frame(rows, ok, only_differences=only_diff)
+        n_diff = int(sum(r["differs"] for r in rows))
+        st.caption(f"{n_diff} of {len(rows)} rows differ between the cases (highlighted).")
+        st.dataframe(
+            plots.comparison_styler(df),
+            hide_index=True,
+            width="stretch",
+            height=560,
+            key="comparison_table",
+            column_config={"Differs": st.column_config.CheckboxColumn("Differs")},
+        )
+        st.download_button(
+            "Comparison table (CSV)",
+            data=cache.csv_bytes(rows),
+            file_name="comparison.csv",
+            mime="text/csv",
+            on_click="ignore",
+            icon=":material/download:",
+            key="dl_comparison",
+        )
+
+with tab_perf:
+    if reports:
+        r1 = st.columns(2)
+        r1[0].plotly_chart(plots.compare_performance_figure(reports, "blow_by"), key="cmp_blow_by")
+        r1[1].plotly_chart(plots.compare_performance_figure(reports, "alpha_eq"), key="cmp_alpha")
+        r2 = st.columns(2)
+        r2[0].plotly_chart(
+            plots.compare_performance_figure(reports, "dynamic_lift"), key="cmp_lift"
+        )
+        r2[1].plotly_chart(
+            plots.compare_performance_figure(reports, "tension_top"), key="cmp_tension"
+        )
+        st.caption("Crosses mark wind speeds where a case breaks an operating limit.")
+
+with tab_tether:
+    if reports:
+        speeds = sorted({float(v) for r in reports.values() for v in r["tether"]["wind_speed"]})
+        design_winds = {r["limits"]["design_wind"] for r in reports.values()}
+        default = next(iter(design_winds)) if len(design_winds) == 1 else max(speeds)
+        default = min(speeds, key=lambda v: abs(v - default))
+        wind = st.select_slider(
+            "Wind speed [m/s]",
+            options=speeds,
+            value=default,
+            key="compare_wind",
+            format_func=lambda v: f"{v:g}",
+            help="Each case's profile at the sweep speed nearest this.",
+        )
+        st.plotly_chart(plots.compare_tether_figure(reports, wind), key="cmp_tether")
+
+with tab_manage:
+    m1, m2, m3 = st.columns(3)
+    with m1:
+        st.markdown("**Rename**")
+        st.selectbox("Case", names, key="rename_from")
+        st.text_input("New name", key="rename_to", max_chars=state.MAX_NAME_CHARS)
+        st.button("Rename", on_click=_rename, icon=":material/edit:", key="rename_button")
+    with m2:
+        st.markdown("**Delete**")
+        st.multiselect("Cases to delete", names, key="delete_names")
+        st.button("Delete", on_click=_delete, icon=":material/delete:", key="delete_button")
+    with m3:
+        st.markdown("**Open on the Design page**")
+        st.selectbox("Case", names, key="load_name")
+        st.button(
+            "Make it the current design",
+            on_click=_load_into_design,
+            icon=":material/open_in_new:",
+            key="load_button",
+        )
