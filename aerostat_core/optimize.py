@@ -31,7 +31,7 @@ fins_on_hull     xi_TE / l - 1                                fin trailing edge 
 Solvers (each seeded, each returns its convergence history and number of evaluations)
 -------------------------------------------------------------------------------------
 * :func:`solve_slsqp` - gradient-based SLSQP (``scipy.optimize.minimize``) from several starts,
-  forward-difference gradients. All starts run in lock-step and every finite-difference stencil
+  second-order finite-difference gradients. All starts run in lock-step and every stencil
   of every start is evaluated in one vectorised call (MATLAB ``fmincon`` + ``MultiStart``).
 * :func:`solve_surrogate` - RBF surrogate loop (``scipy.stats.qmc`` Sobol start,
   ``scipy.interpolate.RBFInterpolator`` for the objective and every constraint, batches chosen by
@@ -573,6 +573,11 @@ class OptimisationProblem:
             out[k] = x[:, j]
         return out
 
+    def variables_dict(self, x) -> dict[str, float]:
+        """All three design variables of one design x (n_var,) as {name: value}."""
+        v = self.full_variables(np.asarray(x, float)[None, :])
+        return {k: float(v[k][0]) for k in VARIABLES}
+
     # -- evaluation ---------------------------------------------------------------------------
     def evaluate(self, x) -> DesignBatch:
         """Evaluate a batch of designs x (n, n_var) in physical units (one vectorised call)."""
@@ -617,6 +622,122 @@ class OptimisationProblem:
         for k in CONSTRAINTS:
             rows.append({"item": f"constraint {k}", "definition": CONSTRAINT_TEXT[k]})
         return rows
+
+
+@dataclass(frozen=True)
+class FunctionBatch:
+    """Evaluated points of a :class:`FunctionProblem` (the solver-facing part of
+    :class:`DesignBatch`): x (n, d), values (n,), constraints (n, m), variable names."""
+
+    x: np.ndarray
+    values: np.ndarray
+    constraints: np.ndarray
+    names: tuple
+
+    def __len__(self) -> int:
+        return int(self.values.shape[0])
+
+    @property
+    def max_violation(self) -> np.ndarray:
+        """max(0, max_i g_i) per point [-]."""
+        if self.constraints.shape[1] == 0:
+            return np.zeros(len(self))
+        return np.maximum(np.max(self.constraints, axis=1), 0.0)
+
+    @property
+    def feasible(self) -> np.ndarray:
+        """Every g <= :data:`FEASIBILITY_TOL`."""
+        return np.all(self.constraints <= FEASIBILITY_TOL, axis=1)
+
+    def objective(self, name: str = "value") -> np.ndarray:
+        """Objective values (``name`` is ignored: a function problem has one objective)."""
+        return self.values
+
+    def violations(self, i: int) -> list[str]:
+        """Violated constraints of point ``i`` as text (``g[k] = value > 0``)."""
+        return [f"g[{k}] = {v:.3g} > 0" for k, v in enumerate(self.constraints[i])
+                if v > FEASIBILITY_TOL]
+
+    def row(self, i: int) -> dict[str, Any]:
+        """Point ``i`` as a flat dict (variables, objective, feasibility)."""
+        out = {n: float(v) for n, v in zip(self.names, self.x[i])}
+        out.update(objective=float(self.values[i]), feasible=bool(self.feasible[i]))
+        return out
+
+    def take(self, index) -> FunctionBatch:
+        """Sub-batch selected by ``index``."""
+        return FunctionBatch(self.x[index], self.values[index], self.constraints[index],
+                             self.names)
+
+
+class FunctionProblem:
+    """A vectorised analytic problem min f(x) s.t. g(x) <= 0, lower <= x <= upper, with the
+    interface the solvers use. It verifies the solvers against problems with known optima.
+
+    Parameters
+    ----------
+    objective : callable
+        ``objective(X) -> (n,)`` for X of shape (n, d), vectorised.
+    constraints : callable or None
+        ``constraints(X) -> (n, m)`` (g <= 0 feasible); ``None`` for bounds only.
+    bounds : mapping
+        {name: (lower, upper)} in order, lower < upper, finite.
+    start : array_like or None
+        Starting point (default: the centre of the box).
+    """
+
+    def __init__(self, objective: Callable, constraints: Callable | None,
+                 bounds: Mapping[str, Sequence[float]], start=None) -> None:
+        if not isinstance(bounds, Mapping) or len(bounds) == 0:
+            raise ValueError("bounds are empty: give {name: (lower, upper)} for each variable")
+        lo, hi = [], []
+        for name, pair in bounds.items():
+            a, b = (float(v) for v in pair)
+            if not (math.isfinite(a) and math.isfinite(b)) or a >= b:
+                raise ValueError(f"bounds of {name} must be finite with lower < upper, got "
+                                 f"({a:g}, {b:g})")
+            lo.append(a)
+            hi.append(b)
+        self.names = tuple(bounds)
+        self.lower, self.upper = np.array(lo), np.array(hi)
+        self._f = objective
+        self._g = constraints
+        self.objective = "value"
+        self._start = (0.5 * (self.lower + self.upper) if start is None
+                       else np.asarray(start, float))
+        self.n_constr = int(np.shape(self._constraints(self._start[None, :]))[1])
+
+    @property
+    def n_var(self) -> int:
+        """Number of variables."""
+        return len(self.names)
+
+    def _constraints(self, x: np.ndarray) -> np.ndarray:
+        if self._g is None:
+            return np.zeros((x.shape[0], 0))
+        return np.asarray(self._g(x), float).reshape(x.shape[0], -1)
+
+    def from_unit(self, u) -> np.ndarray:
+        """x = lower + u (upper - lower)."""
+        return self.lower + np.asarray(u, float) * (self.upper - self.lower)
+
+    def to_unit(self, x) -> np.ndarray:
+        """u = (x - lower)/(upper - lower)."""
+        return (np.asarray(x, float) - self.lower) / (self.upper - self.lower)
+
+    def start(self) -> np.ndarray:
+        """Starting point, clipped into the bounds."""
+        return np.clip(self._start, self.lower, self.upper)
+
+    def variables_dict(self, x) -> dict[str, float]:
+        """{name: value} of one point."""
+        return {n: float(v) for n, v in zip(self.names, np.asarray(x, float))}
+
+    def evaluate(self, x) -> FunctionBatch:
+        """Evaluate a batch x (n, d)."""
+        x = np.atleast_2d(np.asarray(x, float))
+        return FunctionBatch(x, np.asarray(self._f(x), float).reshape(-1), self._constraints(x),
+                             self.names)
 
 
 # ------------------------------------------------------------------------------------------------
@@ -703,7 +824,7 @@ class _Tracker:
 
     Parameters
     ----------
-    problem : OptimisationProblem
+    problem : OptimisationProblem or FunctionProblem
     budget : int
         Nominal number of evaluations (for the progress fraction only).
     progress : callable or None
@@ -785,7 +906,8 @@ class _Tracker:
         if where is None:
             nan = float("nan")
             return OptimisationResult(
-                solver, label, {k: nan for k in VARIABLES}, nan, p.objective, {}, False,
+                solver, label, {k: nan for k in p.variables_dict(p.start())}, nan,
+                p.objective, {}, False,
                 "cancelled", message or "stopped before any evaluation", (), 0, 0,
                 time.perf_counter() - self.t0, seed, self.history(), settings)
         i, j = where
@@ -804,10 +926,9 @@ class _Tracker:
             why = "; ".join(b.violations(0)) or "constraint tolerance not met"
             message = (f"no feasible design found; at the least-violating design: {why}"
                        + (f" ({message})" if message else ""))
-        v = p.full_variables(xs[None, :])
         return OptimisationResult(
             solver=solver, label=label,
-            x={k: float(v[k][0]) for k in VARIABLES},
+            x=p.variables_dict(xs),
             objective=float(b.objective(p.objective)[0]), objective_name=p.objective,
             design=b.row(0), feasible=feas, status=status, message=message,
             active=tuple(active), n_evaluations=int(self.n), n_batches=len(self.batches),
@@ -823,6 +944,10 @@ class _Tracker:
 
 class _Aborted(Exception):
     """Raised in worker threads when the lock-step run is torn down."""
+
+
+class _BudgetExhausted(Exception):
+    """Raised in the main thread when a lock-step run reaches its round cap."""
 
 
 def _run_lockstep(tasks: list[Callable], evaluate_requests: Callable) -> list[Any]:
@@ -902,22 +1027,43 @@ def _run_lockstep(tasks: list[Callable], evaluate_requests: Callable) -> list[An
 
 
 def _stencil(u: np.ndarray, h: float) -> tuple[np.ndarray, np.ndarray]:
-    """Forward-difference stencil in the unit cube: u and u + s_j h e_j (s_j = -1 at the top).
+    """Second-order finite-difference stencil in the unit cube.
 
-    Returns the points (d + 1, d) and the signed steps (d,).
+    Per coordinate j two points: u -/+ h e_j (central) where both lie in [0, 1], else
+    u + h e_j, u + 2h e_j (one-sided, at the lower bound) or u - h e_j, u - 2h e_j (upper).
+    Returns the points (2d + 1, d) (centre first) and the per-coordinate kind (d,):
+    0 central, +1 forward, -1 backward. See :func:`_fd_gradient`.
     """
     d = u.size
-    steps = np.where(u + h <= 1.0, h, -h)
-    pts = np.repeat(u[None, :], d + 1, axis=0)
-    pts[1:][np.arange(d), np.arange(d)] += steps
-    return pts, steps
+    kind = np.where(u - h < 0.0, 1, np.where(u + h > 1.0, -1, 0))
+    a = np.where(kind == 0, -h, kind * h)
+    b = np.where(kind == 0, h, 2.0 * kind * h)
+    pts = np.repeat(u[None, :], 2 * d + 1, axis=0)
+    idx = np.arange(d)
+    pts[1 + 2 * idx, idx] += a
+    pts[2 + 2 * idx, idx] += b
+    return pts, kind
+
+
+def _fd_gradient(values: np.ndarray, kind: np.ndarray, h: float) -> np.ndarray:
+    """Gradient from values on a :func:`_stencil` (first axis: the 2d + 1 points).
+
+    Central: (f(u+h) - f(u-h))/2h; forward: (-3 f(u) + 4 f(u+h) - f(u+2h))/2h; backward: the
+    mirror image. All O(h^2). Returns shape (d,) + values.shape[1:].
+    """
+    f0 = values[0]
+    fa, fb = values[1::2], values[2::2]
+    k = kind.reshape((-1,) + (1,) * (values.ndim - 1))
+    central = (fb - fa) / (2.0 * h)
+    onesided = k * (-3.0 * f0[None] + 4.0 * fa - fb) / (2.0 * h)
+    return np.where(k == 0, central, onesided)
 
 
 def _slsqp_task(u0, bounds, maxiter, ftol):
     """A scipy SLSQP run whose function values come from a pooled ``request``.
 
     ``request(u)`` returns (F, G, dF, dG) at u: objective/scale, constraints g (m,), and their
-    forward-difference gradient (d,) and Jacobian (m, d). SLSQP wants c(u) >= 0: c = -g.
+    finite-difference gradient (d,) and Jacobian (m, d). SLSQP wants c(u) >= 0: c = -g.
     """
     from scipy.optimize import minimize
 
@@ -944,7 +1090,8 @@ def _slsqp_task(u0, bounds, maxiter, ftol):
 
 def _stencil_evaluator(fn_eval: Callable, d: int, h: float, objective_of: Callable,
                        scale: dict) -> Callable:
-    """Build ``evaluate_requests`` for :func:`_run_lockstep` from a batch evaluator.
+    """Build ``evaluate_requests`` for :func:`_run_lockstep` from a batch evaluator: every
+    request's point and its :func:`_stencil` go into one batch; the reply is (F, g, dF, dg).
 
     Parameters
     ----------
@@ -960,25 +1107,27 @@ def _stencil_evaluator(fn_eval: Callable, d: int, h: float, objective_of: Callab
         ``{"value": float or None}``; set from the first batch (median |objective|) when None.
     """
 
+    m = 2 * d + 1
+
     def evaluate_requests(batch: dict[int, np.ndarray]) -> dict[int, tuple]:
         ids = list(batch)
         stencils = [_stencil(batch[i], h) for i in ids]
         pts = np.concatenate([s[0] for s in stencils])
-        owners = np.repeat(ids, d + 1)
+        owners = np.repeat(ids, m)
         b = fn_eval(pts, owners)
         obj = objective_of(b)
         if scale["value"] is None:
-            first = obj[:: d + 1]
+            first = obj[::m]
             scale["value"] = float(np.median(np.abs(first))) or 1.0
         fval = obj / scale["value"]
         g = b.constraints
         out = {}
         for k, i in enumerate(ids):
-            sl = slice(k * (d + 1), (k + 1) * (d + 1))
+            sl = slice(k * m, (k + 1) * m)
             f_k, g_k = fval[sl], g[sl]
-            steps = stencils[k][1]
-            df = (f_k[1:] - f_k[0]) / steps
-            dg = ((g_k[1:] - g_k[0]) / steps[:, None]).T
+            kind = stencils[k][1]
+            df = _fd_gradient(f_k, kind, h)
+            dg = _fd_gradient(g_k, kind, h).T
             out[i] = (float(f_k[0]), g_k[0].copy(), df, dg)
         return out
 
@@ -1009,20 +1158,22 @@ def solve_slsqp(
     maxiter: int = 60,
     ftol: float = 1e-8,
     fd_step: float = 1e-3,
+    max_rounds: int | None = None,
     progress: Callable | None = None,
     stop: Callable | None = None,
 ) -> OptimisationResult:
     """Gradient-based SLSQP from several starts (fmincon + MultiStart analogue).
 
     Each start is a ``scipy.optimize.minimize(method="SLSQP")`` run in the unit cube with the
-    objective scaled by its median at the starts and forward-difference gradients of the
+    objective scaled by its median at the starts and second-order finite-difference gradients
+    (central; one-sided three-point at a bound) of the
     objective and every constraint (step ``fd_step`` in the unit cube, i.e. 1e-3 of each range).
     All starts advance in lock-step: at every round the pending points of all starts and their
     d finite-difference neighbours form one batch, so a round costs one vectorised sizing call.
 
     Parameters
     ----------
-    problem : OptimisationProblem
+    problem : OptimisationProblem or FunctionProblem
     n_starts : int
         Starting points: the configuration's design plus ``n_starts - 1`` scrambled-Halton points.
     seed : int
@@ -1032,7 +1183,10 @@ def solve_slsqp(
     ftol : float
         SLSQP objective tolerance (objective scaled to about 1).
     fd_step : float
-        Forward-difference step in the unit cube [-]; larger than the ~1e-7 smoothness of V*(x).
+        Finite-difference step in the unit cube [-]; larger than the ~1e-7 smoothness of V*(x).
+    max_rounds : int or None
+        Cap on lock-step rounds (batches); ``None``: ``maxiter``. A converging run needs far
+        fewer; the cap stops line searches that wander when the problem is infeasible.
     progress, stop : callable or None
         ``progress(fraction, text)`` after every batch; ``stop() -> bool`` cancels.
 
@@ -1050,14 +1204,21 @@ def solve_slsqp(
         raise ValueError(f"n_starts = {n_starts}: need at least 1 start")
     settings = {"n_starts": n_starts, "maxiter": int(maxiter), "ftol": ftol, "fd_step": fd_step}
     d = problem.n_var
-    budget = n_starts * (d + 1) * max(int(maxiter) // 3, 8)
+    budget = n_starts * (2 * d + 1) * max(int(maxiter) // 3, 8)
     tr = _Tracker(problem, budget, progress, stop, "SLSQP")
     label = f"SLSQP ({n_starts} starts)"
     starts = _start_points(problem, n_starts, seed)
     scale: dict[str, float | None] = {"value": None}
+    cap = int(maxiter) if max_rounds is None else int(max_rounds)
+    settings["max_rounds"] = cap
+
+    def fn_eval(pts, owners):
+        if len(tr.batches) >= cap:
+            raise _BudgetExhausted
+        return tr(pts)
+
     evaluate_requests = _stencil_evaluator(
-        lambda pts, owners: tr(pts), d, fd_step,
-        lambda b: b.objective(problem.objective), scale,
+        fn_eval, d, fd_step, lambda b: b.objective(problem.objective), scale,
     )
     bounds = [(0.0, 1.0)] * d
     tasks = [_slsqp_task(u0, bounds, int(maxiter), ftol) for u0 in starts]
@@ -1065,6 +1226,9 @@ def solve_slsqp(
         outcome = _run_lockstep(tasks, evaluate_requests)
     except OptimisationCancelled:
         return tr.result("slsqp", label, "cancelled", "cancelled by the user", seed, settings)
+    except _BudgetExhausted:
+        return tr.result("slsqp", label, "budget", f"stopped after {cap} rounds", seed,
+                         settings)
     msgs = []
     n_iter_limit = 0
     for res in outcome:
@@ -1092,6 +1256,43 @@ def _min_distance(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     return np.sqrt(np.min(d2, axis=1))
 
 
+def _surrogate_minimiser(rbf, u0: np.ndarray, d: int) -> np.ndarray | None:
+    """Minimise the surrogate objective subject to the surrogate constraints (SLSQP with
+    finite differences on the RBF, which is cheap), from ``u0``; None if it fails.
+
+    Parameters
+    ----------
+    rbf : callable
+        ``rbf(U) -> (n, 1 + m)``: objective then constraints.
+    u0 : ndarray
+        Start in the unit cube.
+    d : int
+        Number of variables.
+    """
+    from scipy.optimize import minimize
+
+    cache: dict[bytes, np.ndarray] = {}
+
+    def pred(u):
+        key = np.asarray(u, float).tobytes()
+        if key not in cache:
+            cache.clear()
+            cache[key] = rbf(np.clip(np.asarray(u, float), 0, 1)[None, :])[0]
+        return cache[key]
+
+    try:
+        with np.errstate(all="ignore"):
+            res = minimize(lambda u: pred(u)[0], u0, method="SLSQP", bounds=[(0.0, 1.0)] * d,
+                           constraints=[{"type": "ineq", "fun": lambda u: -pred(u)[1:]}],
+                           options={"maxiter": 50, "ftol": 1e-10})
+    except (ValueError, np.linalg.LinAlgError):
+        return None
+    u = np.clip(res.x, 0.0, 1.0)
+    if not np.all(np.isfinite(u)) or np.max(rbf(u[None, :])[0, 1:]) > 1e-6:
+        return None
+    return u
+
+
 def solve_surrogate(
     problem: OptimisationProblem,
     max_evaluations: int = 160,
@@ -1116,13 +1317,15 @@ def solve_surrogate(
        (all g_hat <= 0; otherwise the least predicted violation), score each with
        w s_f + (1 - w) s_d, s_f = scaled predicted objective, s_d = scaled closeness to
        evaluated points, w cycling through 0.3, 0.5, 0.8, 0.95, and pick ``batch_size`` points.
+       The first point of every batch is the surrogate's own constrained minimiser (SLSQP on
+       the RBF from the incumbent), which gives the fast final convergence of a local method.
     4. Evaluate the batch in one call; halve sigma after ``max(3, d)`` batches without
        improvement, double it (up to ``sigma_init``) after 3 improving batches; stop when sigma
        < ``sigma_min`` or the budget is spent.
 
     Parameters
     ----------
-    problem : OptimisationProblem
+    problem : OptimisationProblem or FunctionProblem
     max_evaluations : int
         Evaluation budget (designs) [-].
     batch_size : int
@@ -1196,9 +1399,13 @@ def solve_surrogate(
             ok = pv <= 0.0
             if ok.any():
                 cand, fh = cand[ok], fh[ok]
-            else:
-                keep = pv <= np.quantile(pv, 0.1)
-                cand, fh = cand[keep], pv[keep]
+            else:  # nothing predicted feasible: the predicted violation takes the objective's role
+                fh = pv
+            # the surrogate's own constrained minimiser, from the incumbent (cheap: RBF only)
+            polish = _surrogate_minimiser(rbf, U[ib], d)
+            if polish is not None:
+                fp = rbf(polish[None, :])[0, 0] if ok.any() else 0.0
+                cand, fh = np.vstack([polish[None, :], cand]), np.append(fp, fh)
             dist = _min_distance(cand, U)
             chosen = []
             n_take = min(batch_size, max_evaluations - tr.n)
@@ -1212,6 +1419,8 @@ def solve_surrogate(
                 w = weights[wk % len(weights)]
                 wk += 1
                 k = int(np.argmin(np.where(valid, w * sf_ + (1 - w) * sd, np.inf)))
+                if not chosen and polish is not None and valid[0]:
+                    k = 0  # the surrogate minimiser leads every batch
                 chosen.append(cand[k])
                 dist = np.minimum(dist, np.linalg.norm(cand - cand[k], axis=1))
             if not chosen:
@@ -1265,7 +1474,7 @@ def solve_pso(
 
     Parameters
     ----------
-    problem : OptimisationProblem
+    problem : OptimisationProblem or FunctionProblem
     pop_size : int
         Swarm size.
     max_generations : int
@@ -1303,7 +1512,7 @@ def solve_pso(
 
     class _Swarm(Problem):
         def __init__(self):
-            super().__init__(n_var=d, n_obj=1, n_ieq_constr=len(CONSTRAINTS),
+            super().__init__(n_var=d, n_obj=1, n_ieq_constr=problem.n_constr,
                              xl=np.full(d, -margin), xu=np.full(d, 1.0 + margin))
 
         def _evaluate(self, X, out, *args, **kwargs):
@@ -1365,7 +1574,7 @@ def solve(
 
     Parameters
     ----------
-    problem : OptimisationProblem
+    problem : OptimisationProblem or FunctionProblem
     solver : {"slsqp", "surrogate", "pso"}
     setting : {"quick", "normal"}
         Run level (:data:`SETTINGS`); ``overrides`` replace individual settings.
@@ -1734,7 +1943,7 @@ def pareto_front(
     maxiter : int
         SLSQP iterations per epsilon problem.
     fd_step : float
-        Forward-difference step in the unit cube (no sizing noise here, so small).
+        Finite-difference step in the unit cube (no sizing noise here, so small).
     progress, stop : callable or None
         ``progress(fraction, text)``; ``stop() -> bool`` cancels (raises
         :class:`OptimisationCancelled`).
@@ -1768,7 +1977,7 @@ def pareto_front(
             owner_limit.append(e)
     owner_limit = np.array(owner_limit)
     counter = {"n": 0, "rounds": 0}
-    budget = len(tasks) * (d + 1) * 25
+    budget = len(tasks) * (2 * d + 1) * 25
 
     def fn_eval(pts, owners):
         x = problem.from_unit(pts[:, :-1])
