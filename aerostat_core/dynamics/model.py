@@ -691,28 +691,15 @@ class DynamicSystem:
         return dy, dict(zip(DIAG_NAMES, diag))
 
     def structure(self):
-        """Sparsity of the Jacobian as (kl, ku) band widths, found by probing the kernel."""
-        if self._structure is None:
-            n = self.n_state
-            rng = np.random.default_rng(0)
-            y = np.zeros(n)
-            pos = np.zeros((self.tether.segments + 1, 2))
-            pos[:, 1] = np.linspace(0.0, self.tether.length, self.tether.segments + 1)
-            vel = rng.normal(size=pos.shape)
-            if self.is_hull:
-                body = np.array([0.0, self.tether.length + 3.0, 0.05, 1.0, 0.2, 0.01])
-            else:
-                body = np.array([0.0, self.tether.length, 0.3, 0.1])
-            y = self.pack_state(pos + rng.normal(size=pos.shape) * 0.1, vel, body)
-            from .wind import WindScenario
+        """Band widths (kl, ku) of the Jacobian of the state derivative.
 
-            f = WindScenario.steady(7.0).realise(100.0, 10.0)
-            jac = _dense_fd(self, y, f)
-            rows, cols = np.nonzero(np.abs(jac) > 0)
-            kl = int(np.max(rows - cols, initial=0))
-            ku = int(np.max(cols - rows, initial=0))
-            self._structure = (kl, ku)
-        return self._structure
+        With the node-interleaved layout (x, z, v_x, v_z per node) node i's accelerations depend
+        on nodes i-1..i+1 (tension, damping, drag tangent): kl = 7, ku = 5. The hull's three
+        accelerations depend on the top free node (segment N): kl = 9; that node depends on the
+        hull's six states through C: ku = 7. (``tests/core/test_dynamics_solver.py`` checks these
+        against a dense finite-difference Jacobian.)
+        """
+        return (9, 7) if self.is_hull else (7, 5)
 
     def energy(self, y, rho: float | None = None) -> float:
         """Mechanical energy [J] (V4): hull or point kinetic energy with the added masses, the
@@ -1016,3 +1003,47 @@ def rhs_kernel(y, dy, data, wt, diag):  # pragma: no cover - numba
     diag[16] = fin_l
     diag[17] = m_aero
     diag[19] = axw
+
+
+def system_from_design(design, *, segments: int = 20, damping_ratio: float = 1.0,
+                       unsteady_wind_inertia: bool = True, axial_stiffness: float | None = None,
+                       atmosphere: str = "constant", **hull_options) -> DynamicSystem:
+    """The dynamic system of a static-engine :class:`aerostat_core.design.Design`.
+
+    Parameters
+    ----------
+    design : aerostat_core.Design
+    segments : int
+        Tether segments N, valid [2, 400].
+    damping_ratio : float
+        Tether internal damping ratio zeta [-].
+    unsteady_wind_inertia : bool
+        Added-mass and Froude-Krylov forces of the accelerating wind.
+    axial_stiffness : float or None
+        Override the tether's EA [N] (``None``: the design's tether).
+    atmosphere : {"constant", "isa"}
+        "constant": the engine's air density at the operating altitude everywhere (exactly the
+        static engine's assumption, so steady runs match it); "isa": ISA density versus height.
+    **hull_options
+        :class:`HullModel` switches (``aero_fins`` ...).
+
+    Notes
+    -----
+    Gravity is the engine's (``aerostat_core.constants.G0``). The hull's mass, CG, inertia,
+    confluence point, fins and aerodynamics come from the design (:func:`hull_from_airframe`).
+    """
+    af = design.airframe
+    cfg = design.configuration
+    req = design.requirement
+    hull = hull_from_airframe(af, cfg.aero, unsteady_wind_inertia=unsteady_wind_inertia,
+                              **hull_options)
+    tether = TetherModel.from_spec(cfg.tether, af.tether_length, segments, damping_ratio)
+    if axial_stiffness is not None:
+        tether = replace(tether, axial_stiffness=float(axial_stiffness))
+    if atmosphere == "constant":
+        atm = Atmosphere(float(np.asarray(af.air_density).reshape(-1)[0]))
+    elif atmosphere == "isa":
+        atm = Atmosphere.isa(req.site_elevation, req.isa_offset, top=af.tether_length + 100.0)
+    else:
+        raise ValueError(f"atmosphere = {atmosphere!r}; valid options ('constant', 'isa')")
+    return DynamicSystem(hull, tether, g=float(af.g), atmosphere=atm)

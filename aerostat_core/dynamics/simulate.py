@@ -720,3 +720,33 @@ def _final(fun, a, b, y, kw):
     kw["t_eval"] = None
     sol = solve_ivp(fun, (a, b), y, **kw)
     return sol.y[:, -1].copy()
+
+
+def engine_guess(system: DynamicSystem, design, speed: float) -> np.ndarray:
+    """Rest state from the static engine's solution at wind ``speed`` [m/s] at the hull.
+
+    The hull at the engine's trim alpha_eq with its confluence point on the top of the engine's
+    tether profile; the lumped-mass nodes on that profile at their unstretched arc lengths.
+    :func:`equilibrium` then polishes it (the shift it reports is the difference between the
+    engine's continuous march and the lumped-mass line).
+    """
+    from ..performance import evaluate
+
+    ev = evaluate(design.requirement, design.configuration, design.airframe, float(speed))
+    x = np.asarray(ev.tether.x, float).reshape(-1)
+    z = np.asarray(ev.tether.z, float).reshape(-1)
+    alpha = float(np.asarray(ev.equilibrium.alpha).reshape(-1)[0])
+    n_eng = x.size - 1
+    length = system.tether.length
+    s_eng = np.linspace(0.0, length, n_eng + 1)  # from the top
+    n = system.tether.segments
+    s = length - np.arange(n + 1) * length / n  # node i from the winch
+    pos = np.column_stack([np.interp(s, s_eng, x), np.interp(s, s_eng, z)])
+    pos = pos + np.array(system.winch)
+    vel = np.zeros_like(pos)
+    if system.is_hull:
+        xo, zo = system.hull_pose_from_confluence(pos[-1, 0], pos[-1, 1], alpha)
+        body = np.array([xo, zo, alpha, 0.0, 0.0, 0.0])
+    else:
+        body = np.array([pos[-1, 0], pos[-1, 1], 0.0, 0.0])
+    return system.pack_state(pos, vel, body)

@@ -31,7 +31,15 @@ import math
 import numpy as np
 from numba import njit
 
-from ._layout import P_MODE, P_NSEG, P_THETA_MAX
+from ._layout import (
+    P_AERO_AX,
+    P_AERO_CF,
+    P_AERO_FIN,
+    P_AERO_INV,
+    P_MODE,
+    P_NSEG,
+    P_THETA_MAX,
+)
 from .model import ND, rhs_kernel
 from .wind import NT, wind_time_terms
 
@@ -176,7 +184,8 @@ def check_state(y, data, diag):  # pragma: no cover - numba
             return 4
         if diag[10] < 0.0:
             return 5
-        if diag[1] > 1.0 and abs(diag[0]) > 0.5 * math.pi:
+        aero = prm[P_AERO_INV] + prm[P_AERO_AX] + prm[P_AERO_CF] + prm[P_AERO_FIN]
+        if aero > 0.0 and diag[1] > 2.0 and abs(diag[0]) > 0.5 * math.pi:
             return 7
     else:
         if y[b + 1] < 0.0:
