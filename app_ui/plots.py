@@ -565,6 +565,7 @@ def tether_figure(rep: Mapping[str, Any], speeds: Sequence[float] | None = None)
     return _figure(
         traces,
         "Tether profiles (to scale)",
+        legend=dict(orientation="v", x=1.02, y=1.0),
         lines=lines,
         height=560,
         xaxis=_axis("Downwind distance from the winch [m]"),
@@ -714,6 +715,9 @@ def performance_frame(rows: Sequence[Mapping[str, Any]]) -> pd.DataFrame:
     """Performance rows with display column names; ``limit_exceeded`` kept as the last column
     (the styler hides it)."""
     df = pd.DataFrame([{PERF_COLUMNS.get(k, k): v for k, v in r.items()} for r in rows])
+    for col in df.columns:
+        if df[col].dtype.kind == "f":
+            df[col] = df[col].round(9) + 0.0  # no "-0.0" for values that are zero
     return df
 
 
@@ -730,31 +734,21 @@ def performance_styler(df: pd.DataFrame) -> Styler:
 
 
 def format_value(v: Any) -> str:
-    """A table cell as text: numbers with sensible digits, booleans as yes/no, None as auto.
+    """A table cell as text: 4 significant digits (thousands separated above 1000), booleans as
+    yes/no, None as auto.
 
-    >>> [format_value(x) for x in (372.96, 12.345, 0.6789, 0.0123, 12000.0, True, None, "+")]
-    ['373.0', '12.35', '0.679', '0.0123', '12,000', 'yes', 'auto', '+']
+    >>> [format_value(x) for x in (372.96, 12.345, 10.0, 0.6789, 0.0123, 12000.0, True, None, "+")]
+    ['373', '12.35', '10', '0.6789', '0.0123', '12,000', 'yes', 'auto', '+']
     """
-    if isinstance(v, bool):
+    if isinstance(v, (bool, np.bool_)):
         return "yes" if v else "no"
     if v is None:
         return "auto"
     if isinstance(v, (int, float, np.floating, np.integer)):
         x = float(v)
-        if isinstance(v, (int, np.integer)) and abs(x) < 1e6:
-            return f"{int(v):d}"
-        if x == 0.0:
-            return "0"
-        a = abs(x)
-        if a >= 1000:
+        if abs(x) >= 1000:
             return f"{x:,.0f}"
-        if a >= 100:
-            return f"{x:.1f}"
-        if a >= 1:
-            return f"{x:.2f}"
-        if a >= 0.1:
-            return f"{x:.3f}"
-        return f"{x:.3g}"
+        return f"{x:.4g}"
     return str(v)
 
 

@@ -807,8 +807,89 @@ def _choice(key: str, horizontal: bool = False) -> None:
         )
 
 
+#: Form layout: group -> widgets in order (field keys, choice keys, or the special keys).
+LAYOUT: dict[str, tuple[str, ...]] = {
+    "requirement": ("in_payload", "in_altitude", "in_site", "in_isa"),
+    "wind": ("in_design_wind", "in_blow_by", "in_wind_max", "in_wind_step", "in_min_sf"),
+    "configuration": (
+        VOLUME_MODE_KEY,
+        "in_volume",
+        "in_fineness",
+        "in_fin_area",
+        "in_fin_pos",
+        "in_arrangement",
+        "in_nose",
+    ),
+    "gas": (
+        "in_gas_kind",
+        "in_density_model",
+        "in_purity",
+        "in_superpressure",
+        "in_fixed_density",
+        "in_gas_price",
+    ),
+    "materials": (
+        HULL_FABRIC_KEY,
+        "in_hull_gsm",
+        FIN_FABRIC_KEY,
+        "in_fin_gsm",
+        TETHER_KEY,
+        "in_tether_lin",
+        "in_tether_dia",
+        "in_tether_mbl",
+        "in_tether_cd",
+    ),
+    "advanced": ("in_cutoff", "in_wind_kind", *(f.key for f in FIELDS if f.group == "advanced")),
+}
+_GROUP_ICONS = {
+    "requirement": ":material/flag:",
+    "wind": ":material/air:",
+    "configuration": ":material/tune:",
+    "gas": ":material/bubble_chart:",
+    "materials": ":material/layers:",
+    "advanced": ":material/science:",
+}
+_EXPANDED = {"requirement", "wind", "configuration"}
+
+
+def _widget(key: str) -> None:
+    if key in FIELD_BY_KEY:
+        _number(FIELD_BY_KEY[key])
+    elif key in CHOICES:
+        _choice(key)
+    elif key == VOLUME_MODE_KEY:
+        st.radio(
+            "Hull volume",
+            list(VOLUME_MODES),
+            format_func=VOLUME_MODES.get,
+            key=VOLUME_MODE_KEY,
+            persist_state="session",
+            help="Given: use the volume below. Sized: the smallest hull that meets the "
+            "blow-by limit at the design wind with positive free lift.",
+        )
+    elif key in (HULL_FABRIC_KEY, FIN_FABRIC_KEY):
+        what = "Hull" if key == HULL_FABRIC_KEY else "Fin"
+        st.selectbox(
+            f"{what} fabric",
+            [*FABRICS, CUSTOM],
+            key=key,
+            persist_state="session",
+            help="Catalogue fabric (areal density in the name), or 'Custom' to use "
+            "the value below.",
+        )
+    elif key == TETHER_KEY:
+        st.selectbox(
+            "Tether",
+            [*TETHERS, CUSTOM],
+            key=TETHER_KEY,
+            persist_state="session",
+            help="Catalogue tether, or 'Custom' to use the values below.",
+        )
+
+
 def input_form() -> None:
-    """The grouped design-input form (one rerun per submit)."""
+    """The grouped design-input form (one rerun per submit); an input the engine rejects is
+    reported inside its group and nothing is applied."""
     sync_widgets()
     err = st.session_state.get(ERROR_KEY)
     with st.form("design_inputs_form", border=False, enter_to_submit=False):
@@ -819,107 +900,18 @@ def input_form() -> None:
                 f"Inputs not applied: see **{GROUPS.get(err['group'], '')}** below.",
                 icon=":material/warning:",
             )
-        with st.expander(GROUPS["requirement"], expanded=True, icon=":material/flag:"):
-            _group_error("requirement")
-            c1, c2 = st.columns(2)
-            with c1:
-                _number(FIELD_BY_KEY["in_payload"])
-                _number(FIELD_BY_KEY["in_site"])
-            with c2:
-                _number(FIELD_BY_KEY["in_altitude"])
-                _number(FIELD_BY_KEY["in_isa"])
-        with st.expander(GROUPS["wind"], expanded=True, icon=":material/air:"):
-            _group_error("wind")
-            c1, c2 = st.columns(2)
-            with c1:
-                _number(FIELD_BY_KEY["in_design_wind"])
-                _number(FIELD_BY_KEY["in_wind_max"])
-                _number(FIELD_BY_KEY["in_min_sf"])
-            with c2:
-                _number(FIELD_BY_KEY["in_blow_by"])
-                _number(FIELD_BY_KEY["in_wind_step"])
-        with st.expander(GROUPS["configuration"], expanded=True, icon=":material/tune:"):
-            _group_error("configuration")
-            st.radio(
-                "Hull volume",
-                list(VOLUME_MODES),
-                format_func=VOLUME_MODES.get,
-                key=VOLUME_MODE_KEY,
-                horizontal=True,
-                persist_state="session",
-                help="Given: use the volume below. Sized: the smallest hull that meets "
-                "the blow-by limit at the design wind with positive free lift.",
-            )
-            c1, c2 = st.columns(2)
-            with c1:
-                _number(FIELD_BY_KEY["in_volume"])
-                _number(FIELD_BY_KEY["in_fin_area"])
-                _choice("in_arrangement")
-            with c2:
-                _number(FIELD_BY_KEY["in_fineness"])
-                _number(FIELD_BY_KEY["in_fin_pos"])
-                _number(FIELD_BY_KEY["in_nose"])
-        with st.expander(GROUPS["gas"], expanded=False, icon=":material/bubble_chart:"):
-            _group_error("gas")
-            c1, c2 = st.columns(2)
-            with c1:
-                _choice("in_gas_kind")
-                _number(FIELD_BY_KEY["in_purity"])
-                _number(FIELD_BY_KEY["in_gas_price"])
-            with c2:
-                _choice("in_density_model")
-                _number(FIELD_BY_KEY["in_superpressure"])
-                _number(FIELD_BY_KEY["in_fixed_density"])
-        with st.expander(GROUPS["materials"], expanded=False, icon=":material/layers:"):
-            _group_error("materials")
-            fabric_opts = [*FABRICS, CUSTOM]
-            c1, c2 = st.columns(2)
-            with c1:
-                st.selectbox(
-                    "Hull fabric",
-                    fabric_opts,
-                    key=HULL_FABRIC_KEY,
-                    persist_state="session",
-                    help="Catalogue fabric, or 'Custom' to use the value below.",
-                )
-                _number(FIELD_BY_KEY["in_hull_gsm"])
-            with c2:
-                st.selectbox(
-                    "Fin fabric",
-                    fabric_opts,
-                    key=FIN_FABRIC_KEY,
-                    persist_state="session",
-                    help="Catalogue fabric, or 'Custom' to use the value below.",
-                )
-                _number(FIELD_BY_KEY["in_fin_gsm"])
-            st.selectbox(
-                "Tether",
-                [*TETHERS, CUSTOM],
-                key=TETHER_KEY,
-                persist_state="session",
-                help="Catalogue tether, or 'Custom' to use the values below.",
-            )
-            c1, c2 = st.columns(2)
-            with c1:
-                _number(FIELD_BY_KEY["in_tether_lin"])
-                _number(FIELD_BY_KEY["in_tether_mbl"])
-            with c2:
-                _number(FIELD_BY_KEY["in_tether_dia"])
-                _number(FIELD_BY_KEY["in_tether_cd"])
-        with st.expander(GROUPS["advanced"], expanded=False, icon=":material/science:"):
-            _group_error("advanced")
-            st.caption("Model coefficients with documented defaults (see the Method page).")
-            c1, c2 = st.columns(2)
-            adv = [f for f in FIELDS if f.group == "advanced"]
-            half = (len(adv) + 1) // 2
-            with c1:
-                _choice("in_cutoff")
-                for f in adv[:half]:
-                    _number(f)
-            with c2:
-                _choice("in_wind_kind")
-                for f in adv[half:]:
-                    _number(f)
+        for group, keys in LAYOUT.items():
+            has_error = bool(err and err.get("group") == group)
+            with st.expander(
+                GROUPS[group], expanded=group in _EXPANDED or has_error, icon=_GROUP_ICONS[group]
+            ):
+                _group_error(group)
+                if group == "advanced":
+                    st.caption("Model coefficients with documented defaults (Method page).")
+                if group == "materials":
+                    st.caption("The custom values are used when 'Custom' is chosen above them.")
+                for key in keys:
+                    _widget(key)
         st.form_submit_button(
             "Update design",
             type="primary",

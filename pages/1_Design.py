@@ -48,7 +48,7 @@ def _fmt(v: float, digits: int = 1) -> str:
     return f"{v:,.{digits}f}"
 
 
-col_in, col_out = st.columns([1.05, 2.2], gap="large")
+col_in, col_out = st.columns([1, 2.7], gap="large")
 
 # --- inputs ------------------------------------------------------------------------------------
 with col_in:
@@ -60,7 +60,6 @@ with col_in:
         help="10 kg payload at 300 m, 170 m³ NPL hull with fineness ratio 4.0, thesis "
         "constants (helium 0.169 kg/m³, 130 g/m² fabric, 20 g/m tether).",
     )
-    widgets.input_form()
     with st.expander("Design file: export / import", icon=":material/folder_open:"):
         req_cur, cfg_cur = state.current_inputs()
         st.download_button(
@@ -85,6 +84,7 @@ with col_in:
         fb = st.session_state.get(state.IMPORT_MSG_KEY)
         if fb and fb.get("where") == "design":
             (st.success if fb["level"] == "success" else st.error)(fb["text"])
+    widgets.input_form()
 
 # --- results -----------------------------------------------------------------------------------
 with col_out:
@@ -100,17 +100,18 @@ with col_out:
     st.subheader("Result", anchor=False)
     c = st.columns(5)
     c[0].metric(
-        "Hull volume [m³]",
+        "Volume [m³]",
         _fmt(s["volume_m3"]),
-        help="Sized: smallest hull meeting the blow-by limit with positive free lift."
+        help="Hull volume. Sized: the smallest hull meeting the blow-by limit with positive "
+        "free lift."
         if rep["sized"]
-        else "Given in the inputs.",
+        else "Hull volume, given in the inputs.",
         delta="sized" if rep["sized"] else "given",
         delta_color="off",
         delta_arrow="off",
     )
-    c[1].metric("Hull length [m]", _fmt(s["length_m"], 2))
-    c[2].metric("Hull diameter [m]", _fmt(s["diameter_m"], 2))
+    c[1].metric("Length [m]", _fmt(s["length_m"], 2), help="Hull length l.")
+    c[2].metric("Diameter [m]", _fmt(s["diameter_m"], 2), help="Maximum hull diameter d.")
     c[3].metric(
         "Total mass [kg]",
         _fmt(s["total_mass_kg"]),
@@ -122,33 +123,36 @@ with col_out:
         help="Gross buoyancy minus total weight, in kilograms "
         f"({s['percent_static_lift']:.0f} % of the gross buoyancy).",
     )
+    st.caption(f"At the design wind, {lim['design_wind']:g} m/s:")
     c = st.columns(5)
     bb = s["blow_by_at_design_wind_m"]
     c[0].metric(
-        f"Blow-by at {lim['design_wind']:g} m/s [m]",
+        "Blow-by [m]",
         _fmt(bb),
-        delta=f"{bb - lim['blow_by_limit']:+.1f} m vs limit",
+        delta=f"{bb - lim['blow_by_limit']:+.1f} m",
         delta_color="inverse",
-        help=f"Downwind offset of the confluence point; limit {lim['blow_by_limit']:g} m.",
+        help=f"Downwind offset of the confluence point from the winch; limit "
+        f"{lim['blow_by_limit']:g} m (the delta is blow-by minus limit).",
     )
     c[1].metric(
-        f"α_eq at {lim['design_wind']:g} m/s [deg]",
+        "α_eq [deg]",
         _fmt(s["alpha_at_design_wind_deg"], 2),
         help="Equilibrium angle of attack (moment balance about the confluence point).",
     )
     c[2].metric(
-        f"Tether tension at {lim['design_wind']:g} m/s [N]",
+        "Tension [N]",
         _fmt(s["tension_top_at_design_wind_N"], 0),
-        help="Tension at the confluence point.",
+        help="Tether tension at the confluence point.",
     )
     sf = s["safety_factor_at_design_wind"]
     c[3].metric(
-        "Tether safety factor [-]",
+        "Safety factor [-]",
         _fmt(sf, 2),
-        delta=f"{sf - lim['min_safety_factor']:+.2f} vs required",
-        help="Breaking strength / largest tension along the tether at the design wind.",
+        delta=f"{sf - lim['min_safety_factor']:+.2f}",
+        help="Tether breaking strength / largest tension along the tether; required "
+        f"{lim['min_safety_factor']:g} (the delta is the margin).",
     )
-    c[4].metric("Gas fill cost [USD]", _fmt(s["gas_cost_USD"], 0), help="Hull volume × gas price.")
+    c[4].metric("Gas cost [USD]", _fmt(s["gas_cost_USD"], 0), help="Hull volume × gas price.")
 
     if rep["feasible"]:
         st.success("Meets every requirement at the design wind.", icon=":material/check_circle:")
@@ -194,15 +198,17 @@ with col_out:
     )
 
     with tab_geo:
-        g1, g2 = st.columns([1, 1.6])
+        st.plotly_chart(plots.side_view_figure(rep), key="side_view")
+        g1, g2 = st.columns([1.25, 1.2])
         with g1:
-            gdf = geometry_frame(rep["geometry_rows"])
             st.dataframe(
-                gdf,
+                geometry_frame(rep["geometry_rows"]),
                 hide_index=True,
                 width="stretch",
-                height=420,
-                column_config={"Value": st.column_config.NumberColumn(format="%.3f")},
+                height=460,
+                column_config={
+                    "Value": st.column_config.NumberColumn(format="%.3f"),
+                },
                 key="geometry_table",
             )
             st.download_button(
@@ -215,8 +221,7 @@ with col_out:
                 key="dl_geometry",
             )
         with g2:
-            st.plotly_chart(plots.side_view_figure(rep), key="side_view")
-        st.plotly_chart(plots.hull_3d_figure(rep), key="hull_3d")
+            st.plotly_chart(plots.hull_3d_figure(rep), key="hull_3d")
 
     with tab_mass:
         m1, m2 = st.columns([1, 1.4])

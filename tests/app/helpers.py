@@ -1,0 +1,98 @@
+"""Helpers for the AppTest tests: read plotted data, tables and messages; drive the form."""
+
+from __future__ import annotations
+
+import base64
+import json
+from typing import Any
+
+import numpy as np
+import pandas as pd
+from streamlit.testing.v1 import AppTest
+
+DESIGN_PAGE = "pages/1_Design.py"
+COMPARE_PAGE = "pages/2_Compare.py"
+METHOD_PAGE = "pages/6_Method.py"
+
+
+def chart(at: AppTest, key: str) -> dict:
+    """The plotly figure JSON (data + layout) of the chart with this key."""
+    for el in at.get("plotly_chart"):
+        if getattr(el, "key", None) == key:
+            return json.loads(el.proto.spec)
+    keys = [getattr(el, "key", None) for el in at.get("plotly_chart")]
+    raise KeyError(f"no plotly chart with key {key!r}; charts: {keys}")
+
+
+def chart_keys(at: AppTest) -> list[str]:
+    return [getattr(el, "key", None) for el in at.get("plotly_chart")]
+
+
+def trace(fig: dict, name: str) -> dict:
+    """The first trace with this name."""
+    for t in fig["data"]:
+        if t.get("name") == name:
+            return t
+    raise KeyError(f"no trace {name!r}; traces: {[t.get('name') for t in fig['data']]}")
+
+
+def values(tr: dict, axis: str) -> np.ndarray:
+    """A trace's data along ``axis`` as floats (plain lists or plotly's typed-array encoding)."""
+    v = tr[axis]
+    if isinstance(v, dict) and "bdata" in v:
+        arr = np.frombuffer(base64.b64decode(v["bdata"]), dtype=np.dtype(v["dtype"]))
+        shape = v.get("shape")
+        if isinstance(shape, str):  # plotly writes "37, 62"
+            shape = tuple(int(n) for n in shape.split(","))
+        return arr.reshape(shape) if shape else arr
+    return np.array([np.nan if x is None else x for x in v], dtype=float)
+
+
+def table(at: AppTest, first_column: str) -> pd.DataFrame:
+    """The dataframe element whose first column has this name."""
+    for df in at.dataframe:
+        if len(df.value.columns) and df.value.columns[0] == first_column:
+            return df.value
+    cols = [df.value.columns[0] for df in at.dataframe if len(df.value.columns)]
+    raise KeyError(f"no table starting with {first_column!r}; tables start with {cols}")
+
+
+def metric(at: AppTest, label: str) -> str:
+    for m in at.metric:
+        if m.label == label:
+            return m.value
+    raise KeyError(f"no metric {label!r}; metrics: {[m.label for m in at.metric]}")
+
+
+def metric_float(at: AppTest, label: str) -> float:
+    return float(metric(at, label).replace(",", ""))
+
+
+def messages(at: AppTest, kind: str) -> list[str]:
+    """Texts of st.error / st.warning / st.success / st.info elements."""
+    return [str(e.value) for e in getattr(at, kind)]
+
+
+def submit(at: AppTest, **widget_values: Any) -> AppTest:
+    """Set form widgets by key (number inputs, radios, selectboxes) and press Update design."""
+    for key, value in widget_values.items():
+        widget = _widget(at, key)
+        widget.set_value(value)
+    at.button(key="in_submit").click()
+    at.run()
+    return at
+
+
+def _widget(at: AppTest, key: str):
+    for kind in ("number_input", "radio", "selectbox", "text_input", "multiselect", "toggle"):
+        elements = getattr(at, kind)
+        for el in elements:
+            if getattr(el, "key", None) == key:
+                return el
+    raise KeyError(key)
+
+
+def goto(at: AppTest, page: str) -> AppTest:
+    at.switch_page(page)
+    at.run()
+    return at

@@ -1,0 +1,365 @@
+"""Design page (AppTest): inputs -> metrics, tables and plotted data; errors next to their group;
+save case; file import through the page's handler; state kept across page switches."""
+
+from __future__ import annotations
+
+import json
+from dataclasses import replace
+
+import numpy as np
+import pytest
+
+from aerostat_core import FABRICS, design, thesis_baseline
+from aerostat_core.io import design_to_json, inputs_from_dict, inputs_to_dict
+from app_ui import state
+from tests.app.helpers import (
+    COMPARE_PAGE,
+    DESIGN_PAGE,
+    chart,
+    goto,
+    messages,
+    metric,
+    metric_float,
+    submit,
+    table,
+    trace,
+    values,
+)
+
+
+def _baseline():
+    return design(*thesis_baseline())
+
+
+def test_opens_on_the_thesis_baseline(at):
+    d = _baseline()
+    assert at.session_state["design_inputs"] == inputs_to_dict(*thesis_baseline())
+    assert at.session_state["cases"] == {}
+    assert at.title[0].value == "Aerostat design"
+    assert metric(at, "Volume [m³]") == "170.0"
+    assert metric_float(at, "Total mass [kg]") == pytest.approx(d.total_mass, abs=0.05)
+    assert metric_float(at, "Free lift [kg]") == pytest.approx(d.free_lift_kg, abs=0.05)
+    assert metric_float(at, "Blow-by [m]") == pytest.approx(d.design_point["blow_by_m"], abs=0.05)
+    assert metric_float(at, "Safety factor [-]") == pytest.approx(
+        d.design_point["safety_factor"], abs=0.005
+    )
+    assert metric_float(at, "Gas cost [USD]") == pytest.approx(d.gas_cost, abs=0.5)
+    # the baseline breaks its blow-by limit at the design wind: the page says so
+    errors = messages(at, "error")
+    assert any("Requirements not met" in e and "blow-by" in e for e in errors)
+    # every input widget shows the baseline
+    assert at.number_input(key="in_payload").value == 10.0
+    assert at.number_input(key="in_fin_pos").value == pytest.approx(68.0)
+    assert at.number_input(key="in_hull_gsm").value == pytest.approx(130.0)
+    assert at.radio(key="in_volume_mode").value == "given"
+
+
+def test_payload_change_updates_mass_and_lift(at):
+    before_mass = metric_float(at, "Total mass [kg]")
+    before_lift = metric_float(at, "Free lift [kg]")
+    submit(at, in_payload=30.0)
+    assert not at.exception
+    assert at.session_state["design_inputs"]["requirement"]["payload_mass"] == 30.0
+    # the volume is given, so 20 kg more payload is 20 kg more mass and 20 kg less free lift
+    assert metric_float(at, "Total mass [kg]") - before_mass == pytest.approx(20.0, abs=0.11)
+    assert before_lift - metric_float(at, "Free lift [kg]") == pytest.approx(20.0, abs=0.11)
+    masses = table(at, "Item")
+    assert masses.loc[masses["Item"] == "payload", "Mass [kg]"].item() == pytest.approx(30.0)
+
+
+def test_sized_volume_follows_the_payload(at):
+    submit(at, in_volume_mode="sized", in_payload=30.0)
+    req, cfg = thesis_baseline()
+    expected = design(replace(req, payload_mass=30.0), cfg.with_design_variables(volume=None))
+    assert at.session_state["design_inputs"]["configuration"]["hull"]["volume"] is None
+    assert metric_float(at, "Volume [m³]") == pytest.approx(expected.volume, abs=0.05)
+    assert metric(at, "Volume [m³]") != "170.0"
+    geo = table(at, "Quantity")
+    row = geo.loc[geo["Quantity"] == "Hull length l"]
+    assert row["Value"].item() == pytest.approx(float(expected.airframe.hull.length))
+    side = chart(at, "side_view")
+    hull_x = values(trace(side, "hull"), "x")
+    assert hull_x.max() == pytest.approx(float(expected.airframe.hull.length))
+    # the 3-D view is the same hull: its surface spans the new length
+    surf = next(t for t in chart(at, "hull_3d")["data"] if t["type"] == "surface")
+    assert values(surf, "x").max() == pytest.approx(float(expected.airframe.hull.length))
+
+
+def test_performance_plots_show_the_engine_curves(at):
+    d = _baseline()
+    blow = chart(at, "perf_blow_by")
+    main = blow["data"][0]
+    np.testing.assert_allclose(values(main, "x"), d.performance.wind_speed)
+    np.testing.assert_allclose(values(main, "y"), d.performance.blow_by, rtol=1e-9)
+    limit_lines = [s for s in blow["layout"]["shapes"] if s["y0"] == s["y1"]]
+    assert any(s["y0"] == d.requirement.blow_by_limit for s in limit_lines)
+    alpha = chart(at, "perf_alpha")
+    np.testing.assert_allclose(values(alpha["data"][0], "y"), d.performance.alpha_eq, rtol=1e-9)
+    lift = chart(at, "perf_lift")
+    np.testing.assert_allclose(values(lift["data"][0], "y"), d.performance.dynamic_lift, rtol=1e-9)
+    tension = chart(at, "perf_tension")
+    np.testing.assert_allclose(
+        values(trace(tension, "tension at the confluence point [N]"), "y"),
+        d.performance.tension_top,
+        rtol=1e-9,
+    )
+    sf = trace(tension, "safety factor [-]")
+    assert sf["yaxis"] == "y2"
+    np.testing.assert_allclose(values(sf, "y"), d.performance.safety_factor, rtol=1e-9)
+    cm = chart(at, "perf_cm")
+    np.testing.assert_allclose(values(cm["data"][0], "x"), d.cm_alpha_deg)
+    np.testing.assert_allclose(values(cm["data"][0], "y"), d.cm, rtol=1e-9)
+    perf = table(at, "Wind [m/s]")
+    assert len(perf) == d.performance.wind_speed.size
+    np.testing.assert_allclose(perf["Blow-by [m]"], d.performance.blow_by, atol=1e-8)
+
+
+def test_rows_over_a_limit_stand_out(at):
+    submit(at, in_min_sf=6.0)  # the baseline's safety factor drops below 6 above ~13 m/s
+    req, cfg = thesis_baseline()
+    d = design(replace(req, min_tether_safety_factor=6.0), cfg)
+    limited = np.asarray(d.performance.limited, bool)
+    assert limited.any() and not limited.all()
+    speeds = d.performance.wind_speed[limited]
+    for key in ("perf_blow_by", "perf_alpha", "perf_lift", "perf_tension"):
+        marks = trace(chart(at, key), "operating limit exceeded")
+        np.testing.assert_allclose(values(marks, "x"), speeds)
+        assert marks["marker"]["symbol"] == "x"
+    perf = table(at, "Wind [m/s]")
+    flagged = perf["Limits exceeded"].str.contains("safety factor").to_numpy()
+    np.testing.assert_array_equal(flagged, limited)
+    warnings = messages(at, "warning")
+    assert any("Operating limits exceeded" in w and f"{speeds[0]:g}" in w for w in warnings)
+    assert any("safety factor" in e for e in messages(at, "error"))
+
+
+def test_tether_profiles_are_to_scale_with_winch_and_aerostat(at):
+    d = _baseline()
+    fig = chart(at, "tether_plot")
+    assert fig["layout"]["yaxis"]["scaleanchor"] == "x"
+    assert fig["layout"]["yaxis"].get("scaleratio", 1) == 1
+    winch = trace(fig, "winch")
+    assert values(winch, "x").tolist() == [0.0] and values(winch, "y").tolist() == [0.0]
+    tops = trace(fig, "aerostat (confluence point)")
+    shown = [float(t["name"].split()[0]) for t in fig["data"] if t["name"].endswith(" m/s")]
+    assert len(shown) >= 4 and max(shown) == d.requirement.wind_max
+    idx = [int(np.argmin(np.abs(d.performance.wind_speed - s))) for s in shown]
+    np.testing.assert_allclose(values(tops, "x"), d.performance.blow_by[idx], rtol=1e-6)
+    # choose other speeds: the plot follows (fragment rerun)
+    at.multiselect(key="tether_speeds").set_value([5.0, 15.0]).run()
+    fig = chart(at, "tether_plot")
+    names = [t["name"] for t in fig["data"] if t["name"].endswith(" m/s")]
+    assert names == ["5 m/s", "15 m/s"]
+    profile = trace(fig, "15 m/s")
+    np.testing.assert_allclose(values(profile, "x"), d.tether_x[:, 15])
+    np.testing.assert_allclose(values(profile, "y"), d.tether_z[:, 15])
+
+
+def test_geometry_and_mass_tables_have_units_and_match(at):
+    d = _baseline()
+    geo = table(at, "Quantity")
+    assert list(geo.columns) == ["Quantity", "Value", "Unit"]
+    expect = {r["quantity"]: r["value"] for r in d.geometry_rows()}
+    for q in (
+        "Hull volume",
+        "Nose semi-axis a1",
+        "Tail semi-axis a2",
+        "Max radius b",
+        "Fin root chord",
+        "Fin tip chord",
+        "Fin span (exposed, one fin)",
+        "Fin leading-edge sweep",
+        "Fin root leading edge (from nose)",
+    ):
+        assert geo.loc[geo["Quantity"] == q, "Value"].item() == pytest.approx(expect[q]), q
+    assert geo.loc[geo["Quantity"] == "Hull volume", "Unit"].item() == "m³"
+    mass = table(at, "Item")
+    assert list(mass.columns) == ["Item", "Mass [kg]", "Share [%]"]
+    parts = mass[mass["Item"] != "total"]
+    total = mass.loc[mass["Item"] == "total", "Mass [kg]"].item()
+    assert parts["Mass [kg]"].sum() == pytest.approx(total)
+    assert total == pytest.approx(d.total_mass)
+    bars = chart(at, "mass_chart")["data"][0]
+    assert sorted(values(bars, "x")) == pytest.approx(sorted(parts["Mass [kg]"]))
+
+
+def test_side_view_marks_buoyancy_gravity_and_confluence(at):
+    d = _baseline()
+    fig = chart(at, "side_view")
+    af = d.airframe
+    cb = trace(fig, "centre of buoyancy (CB)")
+    cg = trace(fig, "centre of gravity (CG)")
+    c = trace(fig, "confluence point (C)")
+    assert values(cb, "x")[0] == pytest.approx(float(af.hull.xi_cb))
+    assert values(cg, "x")[0] == pytest.approx(float(af.mass.xi_cg))
+    assert values(c, "x")[0] == pytest.approx(float(af.xi_c))
+    assert values(c, "y")[0] == pytest.approx(float(af.z_c))
+    lines = [t for t in fig["data"] if t.get("legendgroup") == "cl"]
+    assert len(lines) >= 2
+    for ln in lines:  # every confluence line starts at the confluence point
+        assert values(ln, "x")[0] == pytest.approx(float(af.xi_c))
+    assert fig["layout"]["yaxis"]["scaleanchor"] == "x"
+
+
+def test_rejected_input_shows_next_to_its_group_and_changes_nothing(at):
+    before = json.dumps(at.session_state["design_inputs"], sort_keys=True)
+    volume_before = metric(at, "Volume [m³]")
+    submit(at, in_blow_by=400.0, in_payload=25.0)  # limit above the 300 m altitude
+    assert not at.exception
+    errors = messages(at, "error")
+    assert any("blow_by_limit" in e and "Not applied" in e for e in errors)
+    warnings = messages(at, "warning")
+    assert any("Wind and operating limits" in w for w in warnings)
+    assert json.dumps(at.session_state["design_inputs"], sort_keys=True) == before
+    assert metric(at, "Volume [m³]") == volume_before
+    assert at.session_state["input_error"]["group"] == "wind"
+    # the user's values stay in the form to be fixed; fixing them applies both changes
+    assert at.number_input(key="in_blow_by").value == 400.0
+    submit(at, in_blow_by=40.0)
+    assert "input_error" not in at.session_state
+    assert at.session_state["design_inputs"]["requirement"]["blow_by_limit"] == 40.0
+    assert at.session_state["design_inputs"]["requirement"]["payload_mass"] == 25.0
+
+
+@pytest.mark.parametrize(
+    "widgets, group, field",
+    [
+        ({"in_payload": 600.0}, "requirement", "payload_mass"),
+        ({"in_altitude": 5.0}, "requirement", "altitude"),
+        ({"in_wind_max": 45.0}, "wind", "wind_max"),
+        ({"in_purity": 120.0}, "gas", "purity"),
+        ({"in_hull_fabric": "Custom", "in_hull_gsm": 0.0}, "materials", "areal_density"),
+        ({"in_fineness": 9.0}, "configuration", "fineness_ratio"),
+        ({"in_fin_pos": 99.0}, "configuration", "position"),
+        ({"in_fin_ar": 9.0}, "advanced", "aspect_ratio"),
+        ({"in_segments": 5}, "advanced", "tether_segments"),
+    ],
+)
+def test_each_rejected_input_is_reported_in_its_group(at, widgets, group, field):
+    before = json.dumps(at.session_state["design_inputs"], sort_keys=True)
+    submit(at, **widgets)
+    assert not at.exception
+    assert at.session_state["input_error"]["group"] == group
+    assert field in at.session_state["input_error"]["text"]
+    assert any(field in e and e.startswith("Not applied") for e in messages(at, "error"))
+    assert json.dumps(at.session_state["design_inputs"], sort_keys=True) == before
+
+
+def test_custom_fabric_and_catalogue_tether(at):
+    d0 = _baseline()
+    submit(at, in_hull_fabric="Custom", in_hull_gsm=260.0)
+    hull_fabric = at.session_state["design_inputs"]["configuration"]["hull_fabric"]
+    assert hull_fabric["areal_density"] == pytest.approx(0.260)
+    mass = table(at, "Item")
+    hull = mass.loc[mass["Item"] == "hull", "Mass [kg]"].item()
+    assert hull == pytest.approx(2 * float(d0.airframe.mass.items["hull"]))
+    name = "Dyneema 4 mm (9 g/m)"
+    submit(at, in_tether=name)
+    tether = at.session_state["design_inputs"]["configuration"]["tether"]
+    assert tether["name"] == name and tether["linear_density"] == pytest.approx(0.009)
+    # the custom boxes now show the catalogue tether's values
+    assert at.number_input(key="in_tether_lin").value == pytest.approx(9.0)
+    assert at.selectbox(key="in_hull_fabric").value == "Custom"
+    assert "Heavy laminate (300 g/m2)" in FABRICS
+
+
+def test_load_thesis_baseline_resets_inputs_and_form(at):
+    submit(at, in_payload=42.0, in_volume_mode="sized")
+    assert at.session_state["design_inputs"]["requirement"]["payload_mass"] == 42.0
+    at.button[0].click().run()  # "Load thesis baseline"
+    assert at.button[0].label == "Load thesis baseline"
+    assert at.session_state["design_inputs"] == inputs_to_dict(*thesis_baseline())
+    assert at.number_input(key="in_payload").value == 10.0
+    assert at.radio(key="in_volume_mode").value == "given"
+    assert metric(at, "Volume [m³]") == "170.0"
+
+
+def test_save_case_with_default_and_given_names(at):
+    save = [b for b in at.button if b.label == "Save case"][0]
+    save.click().run()
+    cases = at.session_state["cases"]
+    assert list(cases) == ["Case 1: 10 kg at 300 m"]
+    assert cases["Case 1: 10 kg at 300 m"] == at.session_state["design_inputs"]
+    assert any("Saved case" in s for s in messages(at, "success"))
+    submit(at, in_payload=30.0)
+    at.text_input(key="case_name").set_value("heavy payload")
+    [b for b in at.button if b.label == "Save case"][0].click().run()
+    assert list(at.session_state["cases"]) == ["Case 1: 10 kg at 300 m", "heavy payload"]
+    saved = inputs_from_dict(at.session_state["cases"]["heavy payload"])
+    assert saved[0].payload_mass == 30.0
+
+
+def test_inputs_and_cases_survive_page_switches(at):
+    submit(at, in_payload=17.0, in_fineness=3.2)
+    [b for b in at.button if b.label == "Save case"][0].click().run()
+    goto(at, COMPARE_PAGE)
+    assert not at.exception
+    goto(at, DESIGN_PAGE)
+    assert not at.exception
+    assert at.number_input(key="in_payload").value == 17.0
+    assert at.number_input(key="in_fineness").value == pytest.approx(3.2)
+    assert at.session_state["design_inputs"]["requirement"]["payload_mass"] == 17.0
+    assert len(at.session_state["cases"]) == 1
+    assert metric_float(at, "Length [m]") != pytest.approx(_baseline().summary()["length_m"])
+
+
+def test_importing_a_design_file_restores_inputs(at):
+    req, cfg = thesis_baseline()
+    text = design_to_json(
+        replace(req, payload_mass=22.0, altitude=400.0),
+        cfg.with_design_variables(fineness_ratio=3.5),
+    )
+    level, msg = state.handle_upload(text.encode(), "design", at.session_state)
+    assert level == "success"
+    at.run()
+    assert not at.exception
+    assert at.number_input(key="in_payload").value == 22.0
+    assert at.number_input(key="in_altitude").value == 400.0
+    assert at.number_input(key="in_fineness").value == 3.5
+    assert any("Loaded the design inputs" in s for s in messages(at, "success"))
+
+
+@pytest.mark.parametrize(
+    "payload, fragment",
+    [
+        (b'{"requirement": {"payload_mass": "heavy"}}', "payload_mass"),
+        (b'{"requirement": {"payload_mass": -3}}', "payload_mass"),
+        (b'{"requirement": {"altitude": 300}, "oops": 1}', "unknown field"),
+        (b'{"configuration": {"tether_segments": 1e400}}', "not a valid design"),
+        (b"not json at all", "not valid JSON"),
+        (b"[" * 50_000 + b"]" * 50_000, "nested too deeply"),
+        (b" " * 1_000_001, "limit"),
+    ],
+)
+def test_a_bad_design_file_shows_a_message_and_changes_nothing(at, payload, fragment):
+    before = json.dumps(at.session_state["design_inputs"], sort_keys=True)
+    level, msg = state.handle_upload(payload, "design", at.session_state)
+    assert level == "error" and fragment in msg
+    at.run()
+    assert not at.exception
+    errors = messages(at, "error")
+    assert any("Could not import" in e and "Nothing was changed" in e for e in errors)
+    assert json.dumps(at.session_state["design_inputs"], sort_keys=True) == before
+    assert at.number_input(key="in_payload").value == 10.0
+    assert at.session_state["cases"] == {}
+
+
+def test_corrupt_state_falls_back_to_the_baseline(at):
+    at.session_state["design_inputs"] = {"requirement": {"payload_mass": "x"}}
+    at.run()
+    assert not at.exception
+    assert at.session_state["design_inputs"] == inputs_to_dict(*thesis_baseline())
+    assert metric(at, "Volume [m³]") == "170.0"
+
+
+def test_json_download_holds_every_input(at):
+    buttons = [b for b in at.get("download_button")]
+    labels = [b.proto.label for b in buttons]
+    for label in (
+        "Download design inputs (JSON)",
+        "Geometry table (CSV)",
+        "Mass table (CSV)",
+        "Performance table (CSV)",
+        "Tether profiles (CSV)",
+    ):
+        assert label in labels

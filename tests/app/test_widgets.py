@@ -1,0 +1,252 @@
+"""Pure parts of the UI layer: form values <-> inputs (app_ui.widgets) and the plot/table
+builders (app_ui.plots), without a running app."""
+
+from __future__ import annotations
+
+from dataclasses import replace
+
+import numpy as np
+import plotly.graph_objects as go
+import pytest
+
+from aerostat_core import FABRICS, TETHERS, design, thesis_baseline
+from aerostat_core.io import inputs_from_dict, inputs_to_dict
+from aerostat_core.report import case_designs, comparison_rows, design_report, thesis_gui_cases
+from app_ui import plots
+from app_ui.widgets import (
+    CUSTOM,
+    FIELDS,
+    GROUPS,
+    LAYOUT,
+    WIDGET_KEYS,
+    InputError,
+    build_inputs,
+    error_group,
+    widget_values,
+)
+
+
+@pytest.fixture(scope="module")
+def base() -> dict:
+    return inputs_to_dict(*thesis_baseline())
+
+
+@pytest.fixture(scope="module")
+def rep() -> dict:
+    return design_report(design(*thesis_baseline()))
+
+
+def test_every_widget_is_laid_out_once():
+    laid_out = [k for keys in LAYOUT.values() for k in keys]
+    assert sorted(laid_out) == sorted(WIDGET_KEYS)
+    assert set(LAYOUT) == set(GROUPS)
+    for f in FIELDS:
+        assert "[" in f.label and "]" in f.label, f"no unit in label {f.label!r}"
+        assert f.help, f"no help for {f.key}"
+
+
+def test_round_trip_is_exact(base):
+    values = widget_values(base)
+    assert inputs_to_dict(*build_inputs(values, base)) == base
+
+
+@pytest.mark.parametrize("name", list(thesis_gui_cases()))
+def test_round_trip_of_the_gui_cases(name):
+    inputs = thesis_gui_cases()[name]
+    assert inputs_to_dict(*build_inputs(widget_values(inputs), inputs)) == inputs
+
+
+def test_display_units_convert(base):
+    values = widget_values(base)
+    assert values["in_fin_pos"] == 68.0  # fraction 0.68 -> % of hull length
+    assert values["in_hull_gsm"] == 130.0  # 0.130 kg/m2 -> g/m2
+    assert values["in_tether_mbl"] == 8.0  # 8000 N -> kN
+    assert values["in_purity"] == 100.0
+    values["in_fin_pos"] = 70.0
+    values["in_purity"] = 98.0
+    req, cfg = build_inputs(values, base)
+    assert cfg.fins.position == 0.7
+    assert cfg.gas.purity == 0.98
+
+
+def test_volume_modes(base):
+    values = widget_values(base)
+    values["in_volume_mode"] = "sized"
+    _, cfg = build_inputs(values, base)
+    assert cfg.hull.volume is None
+    sized = inputs_to_dict(thesis_baseline()[0], cfg)
+    again = widget_values(sized, previous=values)
+    assert again["in_volume_mode"] == "sized" and again["in_volume"] == 170.0
+    again["in_volume_mode"] = "given"
+    again["in_volume"] = 150.0
+    assert build_inputs(again, sized)[1].hull.volume == 150.0
+
+
+def test_fin_count_follows_the_arrangement(base):
+    values = widget_values(base)
+    values["in_arrangement"] = "inverted-y"
+    _, cfg = build_inputs(values, base)
+    assert (cfg.fins.arrangement, cfg.fins.count) == ("inverted-y", 3)
+
+
+def test_materials_catalogue_and_custom(base):
+    values = widget_values(base)
+    assert values["in_hull_fabric"] in FABRICS and values["in_tether"] in TETHERS
+    values["in_hull_fabric"] = "Heavy laminate (300 g/m2)"
+    values["in_tether"] = CUSTOM
+    values["in_tether_lin"] = 15.0
+    values["in_tether_mbl"] = 12.0
+    _, cfg = build_inputs(values, base)
+    assert cfg.hull_fabric == FABRICS["Heavy laminate (300 g/m2)"]
+    assert cfg.tether.linear_density == 0.015 and cfg.tether.breaking_strength == 12000.0
+    assert cfg.tether.name.startswith("Custom")
+    assert cfg.tether.axial_stiffness == thesis_baseline()[1].tether.axial_stiffness  # carried
+    shown = widget_values(inputs_to_dict(thesis_baseline()[0], cfg))
+    assert shown["in_tether"] == CUSTOM and shown["in_hull_fabric"] == "Heavy laminate (300 g/m2)"
+
+
+def test_a_named_custom_fabric_keeps_its_name(base):
+    req, cfg = thesis_baseline()
+    fabric = replace(cfg.hull_fabric, name="Vectran laminate", areal_density=0.21)
+    inputs = inputs_to_dict(req, replace(cfg, hull_fabric=fabric))
+    values = widget_values(inputs)
+    assert values["in_hull_fabric"] == CUSTOM and values["in_hull_gsm"] == 210.0
+    assert build_inputs(values, inputs)[1].hull_fabric.name == "Vectran laminate"
+
+
+def test_optional_fields_accept_empty(base):
+    values = widget_values(base)
+    assert values["in_gas_price"] is None and values["in_cdv"] is None
+    values["in_gas_price"] = 20.0
+    _, cfg = build_inputs(values, base)
+    assert cfg.gas_price == 20.0
+    values["in_payload"] = None
+    with pytest.raises(InputError) as err:
+        build_inputs(values, base)
+    assert err.value.group == "requirement"
+
+
+def test_fields_not_in_the_form_are_kept(base):
+    data = inputs_from_dict(base)
+    cfg = replace(data[1], tether_segments=120)
+    inputs = inputs_to_dict(data[0], replace(cfg, aero=replace(cfg.aero, cutoff="tail")))
+    _, out = build_inputs(widget_values(inputs), inputs)
+    assert out.tether_segments == 120 and out.aero.cutoff == "tail"
+
+
+@pytest.mark.parametrize(
+    "message, group",
+    [
+        ("Requirement.payload_mass = -1 kg is outside the valid range (0, 500] kg", "requirement"),
+        ("Requirement.altitude = 9000 m with site_elevation = ...", "requirement"),
+        ("Requirement.design_wind = 50 m/s is outside", "wind"),
+        ("LiftingGas.purity = 2 is outside", "gas"),
+        ("Configuration.gas_price = -1 USD/m3 is outside", "gas"),
+        ("Fabric.areal_density = 0 kg/m2 is outside", "materials"),
+        ("TetherSpec.diameter = 0 m is outside", "materials"),
+        ("HullSpec.fineness_ratio = 9 is outside", "configuration"),
+        ("FinSpec.position = 0.99 is outside", "configuration"),
+        ("FinSpec.taper_ratio = 2 is outside", "advanced"),
+        ("AeroModel.fin_efficiency = 3 is outside", "advanced"),
+        ("ConfluenceSpec.drop_ratio = 9 is outside", "advanced"),
+        ("something unexpected", "general"),
+    ],
+)
+def test_error_group(message, group):
+    assert error_group(message) == group
+
+
+# --- plots and tables --------------------------------------------------------------------------
+
+
+def test_every_figure_is_valid_plotly(rep):
+    figs = [
+        plots.hull_3d_figure(rep),
+        plots.side_view_figure(rep),
+        plots.mass_figure(rep),
+        plots.tension_figure(rep),
+        plots.cm_figure(rep),
+        plots.tether_figure(rep),
+    ]
+    figs += [plots.performance_figure(rep, k) for k in plots.PERF_QUANTITIES]
+    for fig in figs:
+        assert isinstance(fig, go.Figure)
+        fig.to_json()  # serialises
+        title = fig.layout.title.text
+        assert title
+        for axis in (fig.layout.xaxis, fig.layout.yaxis):
+            if axis.title.text:
+                assert "[" in axis.title.text, f"{title}: axis without unit {axis.title.text!r}"
+
+
+def test_tether_figure_is_to_scale_and_marks_winch_and_aerostat(rep):
+    fig = plots.tether_figure(rep, [5.0, 10.0])
+    assert fig.layout.yaxis.scaleanchor == "x"
+    names = [t.name for t in fig.data]
+    assert names[:2] == ["5 m/s", "10 m/s"]
+    assert "winch" in names and "aerostat (confluence point)" in names
+    tops = next(t for t in fig.data if t.name == "aerostat (confluence point)")
+    np.testing.assert_allclose(tops.x, rep["perf"]["blow_by"][[5, 10]], rtol=1e-6)
+
+
+def test_limit_markers_only_on_limited_rows():
+    req, cfg = thesis_baseline()
+    r = design_report(design(replace(req, min_tether_safety_factor=6.0), cfg))
+    fig = plots.performance_figure(r, "blow_by")
+    marks = next(t for t in fig.data if t.name == plots.LIMIT_TRACE)
+    np.testing.assert_allclose(marks.x, r["perf"]["wind_speed"][r["perf"]["limited"]])
+    clean = plots.performance_figure(design_report(design(*thesis_baseline())), "alpha_eq")
+    assert plots.LIMIT_TRACE not in [t.name for t in clean.data]
+
+
+def test_default_tether_speeds():
+    assert plots.default_tether_speeds(list(range(21))) == [4.0, 8.0, 12.0, 16.0, 20.0]
+    assert plots.default_tether_speeds([0.0, 1.0, 2.0]) == [1.0, 2.0]
+
+
+def test_performance_table_highlights_limited_rows():
+    req, cfg = thesis_baseline()
+    r = design_report(design(replace(req, min_tether_safety_factor=6.0), cfg))
+    df = plots.performance_frame(r["performance_rows"])
+    assert "Blow-by [m]" in df and "Safety factor [-]" in df
+    assert not (np.signbit(df["Blow-by [m]"]) & (df["Blow-by [m]"] == 0)).any()  # no -0.0
+    styles = plots.performance_styler(df)._compute().ctx
+    limited = r["perf"]["limited"]
+    for i, lim in enumerate(limited):
+        has = any(
+            "fde2e2" in v
+            for (row, _c), props in styles.items()
+            if row == i
+            for v in (f"{k}: {val}" for k, val in props)
+        )
+        assert has == bool(lim), i
+
+
+def test_comparison_frame_and_highlight():
+    designs = case_designs(thesis_gui_cases())
+    rows = comparison_rows(designs)
+    names = list(designs)
+    df = plots.comparison_frame(rows, names)
+    assert list(df.columns) == ["Section", "Quantity", *names, "Differs"]
+    only = plots.comparison_frame(rows, names, only_differences=True)
+    assert only["Differs"].all() and len(only) < len(df)
+    ctx = plots.comparison_styler(only)._compute().ctx
+    assert all(any("fff3c4" in val for _k, val in props) for props in ctx.values())
+
+
+@pytest.mark.parametrize(
+    "value, text",
+    [
+        (372.96, "373"),
+        (12.345, "12.35"),
+        (10.0, "10"),
+        (0.0123, "0.0123"),
+        (12000.0, "12,000"),
+        (True, "yes"),
+        (False, "no"),
+        (None, "auto"),
+        ("+", "+"),
+    ],
+)
+def test_format_value(value, text):
+    assert plots.format_value(value) == text
