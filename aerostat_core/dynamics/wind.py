@@ -99,7 +99,7 @@ class MeanProfile:
     Examples
     --------
     >>> round(float(MeanProfile("power", 10.0).factor(320.0)), 4)
-    1.6404
+    1.6407
     """
 
     kind: str = "uniform"
