@@ -1317,8 +1317,9 @@ def solve_surrogate(
        (all g_hat <= 0; otherwise the least predicted violation), score each with
        w s_f + (1 - w) s_d, s_f = scaled predicted objective, s_d = scaled closeness to
        evaluated points, w cycling through 0.3, 0.5, 0.8, 0.95, and pick ``batch_size`` points.
-       The first point of every batch is the surrogate's own constrained minimiser (SLSQP on
-       the RBF from the incumbent), which gives the fast final convergence of a local method.
+       Each batch starts with the surrogate's own constrained minimisers (SLSQP on the RBF from
+       the best few evaluated designs and a random point), which gives the fast final
+       convergence of a local method and a chance to jump to a neighbouring basin.
     4. Evaluate the batch in one call; halve sigma after ``max(3, d)`` batches without
        improvement, double it (up to ``sigma_init``) after 3 improving batches; stop when sigma
        < ``sigma_min`` or the budget is spent.
@@ -1342,6 +1343,12 @@ def solve_surrogate(
     Returns
     -------
     OptimisationResult
+
+    Notes
+    -----
+    Known weakness: a long, narrow curved valley (the thesis preset has one, along which the
+    mass falls by 0.4 kg from the Delta S_f = -50 % bound to the Delta l_f = 0.60 bound) is
+    poorly resolved by a global RBF fit; the surrogate may stop at its shallow end (+0.6 %).
 
     References
     ----------
@@ -1376,6 +1383,7 @@ def solve_surrogate(
         G = b.constraints
         FEAS = b.feasible
         sigma, n_fail, n_succ = float(sigma_init), 0, 0
+        n_polish = max(1, min(3, batch_size // 2))
         weights = (0.3, 0.5, 0.8, 0.95)
         wk = 0
         while tr.n < max_evaluations:
@@ -1401,11 +1409,20 @@ def solve_surrogate(
                 cand, fh = cand[ok], fh[ok]
             else:  # nothing predicted feasible: the predicted violation takes the objective's role
                 fh = pv
-            # the surrogate's own constrained minimiser, from the incumbent (cheap: RBF only)
-            polish = _surrogate_minimiser(rbf, U[ib], d)
-            if polish is not None:
-                fp = rbf(polish[None, :])[0, 0] if ok.any() else 0.0
-                cand, fh = np.vstack([polish[None, :], cand]), np.append(fp, fh)
+            # the surrogate's own constrained minimisers (cheap: RBF only), started from the
+            # best few evaluated designs and one random point; they lead the batch
+            rank = np.lexsort((np.where(FEAS, F, viol), ~FEAS))
+            starts = np.vstack([U[rank[:n_polish]], rng.random((1, d))])
+            polished = [q for q in (_surrogate_minimiser(rbf, s0, d) for s0 in starts)
+                        if q is not None]
+            n_lead = 0
+            if polished:
+                pp = np.unique(np.round(np.array(polished), 9), axis=0)
+                fp = rbf(pp)[:, 0]
+                pp = pp[np.argsort(fp)][:n_polish]
+                n_lead = len(pp)
+                fill = rbf(pp)[:, 0] if ok.any() else np.zeros(n_lead)
+                cand, fh = np.vstack([pp, cand]), np.concatenate([fill, fh])
             dist = _min_distance(cand, U)
             chosen = []
             n_take = min(batch_size, max_evaluations - tr.n)
@@ -1419,8 +1436,9 @@ def solve_surrogate(
                 w = weights[wk % len(weights)]
                 wk += 1
                 k = int(np.argmin(np.where(valid, w * sf_ + (1 - w) * sd, np.inf)))
-                if not chosen and polish is not None and valid[0]:
-                    k = 0  # the surrogate minimiser leads every batch
+                lead = np.nonzero(valid[:n_lead])[0]
+                if lead.size:
+                    k = int(lead[0])  # surrogate minimisers first
                 chosen.append(cand[k])
                 dist = np.minimum(dist, np.linalg.norm(cand - cand[k], axis=1))
             if not chosen:
@@ -1556,7 +1574,7 @@ SETTINGS: dict[str, dict[str, dict[str, Any]]] = {
     "normal": {
         "slsqp": {"n_starts": 4, "maxiter": 60},
         "surrogate": {"max_evaluations": 160, "batch_size": 8, "n_initial": 16},
-        "pso": {"pop_size": 24, "max_generations": 50},
+        "pso": {"pop_size": 20, "max_generations": 40},
     },
 }
 
