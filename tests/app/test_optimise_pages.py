@@ -1,0 +1,233 @@
+"""Sensitivity and Optimise pages (AppTest, quick settings): plotted data and tables match the
+engine, bad inputs give a message naming the field, a cancelled run keeps its finished tasks,
+the optimum can be saved as a case."""
+
+from __future__ import annotations
+
+import json
+
+import numpy as np
+import pytest
+
+from aerostat_core import thesis_baseline
+from aerostat_core.io import inputs_from_dict, inputs_to_dict
+from aerostat_core.optimize import DEFAULT_BOUNDS, VARIABLES
+from aerostat_core.sensitivity import one_at_a_time, two_variable_map
+from tests.app.helpers import chart, chart_keys, goto, messages, table, values
+
+SENS_PAGE = "pages/3_Sensitivity.py"
+OPT_PAGE = "pages/4_Optimise.py"
+
+
+def _set(at, key, value):
+    for kind in ("number_input", "radio", "selectbox", "text_input", "checkbox", "multiselect"):
+        for el in getattr(at, kind):
+            if getattr(el, "key", None) == key:
+                el.set_value(value)
+                return
+    raise KeyError(key)
+
+
+def _traces(fig, prefix):
+    return [t for t in fig["data"] if str(t.get("name", "")).startswith(prefix)]
+
+
+# --- Sensitivity ----------------------------------------------------------------------------------
+
+
+@pytest.fixture
+def sens(at):
+    goto(at, SENS_PAGE)
+    _set(at, "sens_level", "Quick")
+    at.button(key="sens_run").click().run()
+    assert not at.exception, [e.value for e in at.exception]
+    return at
+
+
+def test_sensitivity_sweeps_plot_the_engine_values(sens):
+    req, cfg = thesis_baseline()
+    assert sens.title[0].value == "Sensitivity"
+    assert chart_keys(sens) == ["sens_ofat", "sens_map"]
+    fig = chart(sens, "sens_ofat")
+    res = one_at_a_time(req, cfg, n_points=7, resize=True)
+    for name in VARIABLES:
+        mass = _traces(fig, f"total_mass vs {name}")[0]
+        assert np.allclose(values(mass, "x"), res.sweeps[name].values)
+        assert np.allclose(values(mass, "y"), res.sweeps[name].designs.total_mass, rtol=1e-9)
+        bb = _traces(fig, f"blow_by vs {name}")[0]
+        assert np.allclose(values(bb, "y"), req.blow_by_limit, rtol=1e-6)  # re-sized
+    df = table(sens, "Variable")
+    assert list(df["Low"]) == [DEFAULT_BOUNDS[k][0] for k in VARIABLES]
+    assert df["Mass change at high [%]"].iloc[1] == pytest.approx(
+        res.summary_rows()[1]["mass_change_high_pct"])
+
+
+def test_sensitivity_map_is_the_held_volume_map_with_the_limit_contour(sens):
+    req, cfg = thesis_baseline()
+    fig = chart(sens, "sens_map")
+    m = two_variable_map(req, cfg, n=10, resize=False)
+    mass = _traces(fig, "total mass")[0]
+    assert np.allclose(np.array(mass["z"], float), m.total_mass, rtol=1e-9)
+    limit = _traces(fig, "blow-by = limit")[0]
+    assert limit["contours"]["value"] == req.blow_by_limit
+    assert np.allclose(np.array(limit["z"], float), m.blow_by, rtol=1e-9)
+    base = _traces(fig, "baseline")[0]
+    assert values(base, "x")[0] == 4.0 and values(base, "y")[0] == 0.0
+
+
+def test_sensitivity_held_sweep_and_other_map(sens):
+    _set(sens, "sens_sweep_mode", "held")
+    _set(sens, "sens_x", "area_change")
+    _set(sens, "sens_y", "position")
+    _set(sens, "sens_map_mode", "resize")
+    sens.button(key="sens_run").click().run()
+    assert not sens.exception
+    fig = chart(sens, "sens_ofat")
+    vol = _traces(fig, "volume vs area_change")[0]
+    assert np.allclose(values(vol, "y"), 170.0)
+    assert "hull held at 170.0 m³" in fig["layout"]["title"]["text"]
+    mfig = chart(sens, "sens_map")
+    assert "re-sized" in mfig["layout"]["title"]["text"]
+    assert not _traces(mfig, "blow-by = limit")
+
+
+@pytest.mark.parametrize("changes, words", [
+    ({"sens_lo_fineness_ratio": 4.0, "sens_hi_fineness_ratio": 3.0},
+     ["lower bound 4", "fineness_ratio"]),
+    ({"sens_hi_position": 0.99}, ["position", "valid range [0.4, 0.95]"]),
+])
+def test_sensitivity_bad_range_names_the_field(sens, changes, words):
+    for k, v in changes.items():
+        _set(sens, k, v)
+    sens.button(key="sens_run").click().run()
+    assert not sens.exception
+    errs = messages(sens, "error")
+    assert errs and all(w in errs[0] for w in words), errs
+
+
+def test_sensitivity_same_map_variables_is_refused(sens):
+    _set(sens, "sens_y", "fineness_ratio")
+    sens.button(key="sens_run").click().run()
+    assert not sens.exception
+    assert any("two different variables" in e for e in messages(sens, "error"))
+    assert chart_keys(sens) == ["sens_ofat"]
+
+
+# --- Optimise -------------------------------------------------------------------------------------
+
+
+@pytest.fixture
+def opt(at):
+    goto(at, OPT_PAGE)
+    assert not at.exception
+    assert at.title[0].value == "Optimise"
+    _set(at, "opt_level", "Quick")
+    return at
+
+
+@pytest.fixture
+def ran(opt):
+    opt.button(key="opt_run").click().run()
+    assert not opt.exception, [e.value for e in opt.exception]
+    return opt
+
+
+def test_optimise_quick_run_shows_agreeing_solvers_and_every_plot(ran):
+    df = table(ran, "Solver")
+    assert len(df) == 3
+    mass = df["Total mass [kg]"].to_numpy()
+    assert np.ptp(mass) / mass.min() < 0.01
+    assert np.allclose(df["Blow-by [m]"], thesis_baseline()[0].blow_by_limit, rtol=1e-6)
+    assert (df["Evaluations"] > 0).all() and (df["Time [s]"] > 0).all()
+    assert any("Spread of the optimum total mass" in s for s in messages(ran, "success"))
+    assert chart_keys(ran) == ["opt_convergence", "opt_performance", "opt_pareto"]
+    conv = chart(ran, "opt_convergence")
+    assert [t["name"] for t in conv["data"]] == list(df["Solver"])
+    for t, m in zip(conv["data"], mass):
+        assert values(t, "y")[-1] == pytest.approx(m)
+    perf = chart(ran, "opt_performance")
+    assert {t["name"] for t in perf["data"]} == {"baseline", "optimum"} and len(perf["data"]) == 8
+    changes = table(ran, "Quantity")
+    vol = changes[changes["Quantity"] == "Hull volume [m³]"].iloc[0]
+    assert vol["Baseline"] == pytest.approx(170.0) and vol["Change"] == pytest.approx(-50, abs=2)
+
+
+def test_optimise_pareto_front_contains_the_optimum(ran):
+    fig = chart(ran, "opt_pareto")
+    front = _traces(fig, "Pareto front")[0]
+    bb, m = values(front, "x"), values(front, "y")
+    assert np.all(np.diff(bb) > 0) and np.all(np.diff(m) < 0)
+    df = table(ran, "Solver")
+    best = df["Total mass [kg]"].min()
+    limit = thesis_baseline()[0].blow_by_limit
+    k = int(np.argmin(np.abs(bb - limit)))
+    assert bb[k] == pytest.approx(limit, rel=1e-6) and m[k] == pytest.approx(best, rel=2e-3)
+    stars = _traces(fig, "SLSQP")
+    assert stars and values(stars[0], "y")[0] == pytest.approx(best, rel=1e-6)
+    pt = table(ran, "Blow-by limit [m]")
+    assert pt["On front"].sum() >= 5
+
+
+def test_save_optimum_as_case(ran):
+    _set(ran, "opt_case_name", "Thesis optimum")
+    ran.button(key="opt_save").click().run()
+    assert not ran.exception
+    cases = ran.session_state["cases"]
+    assert list(cases) == ["Thesis optimum"]
+    req, cfg = inputs_from_dict(cases["Thesis optimum"])
+    assert cfg.hull.volume is None and -50 <= cfg.fins.area_change < -30
+    assert any("Saved case" in s for s in messages(ran, "success"))
+
+
+@pytest.mark.parametrize("changes, words", [
+    ({"opt_lo_fineness_ratio": 4.5, "opt_hi_fineness_ratio": 2.5},
+     ["lower bound 4.5", "upper bound 2.5", "fineness_ratio"]),
+    ({"opt_lo_area_change": 20.0, "opt_hi_area_change": 20.0}, ["empty", "area_change"]),
+    ({"opt_limit": 400.0}, ["Blow-by limit", "blow_by_limit", "400"]),
+    ({"opt_solvers": []}, ["choose at least one solver"]),
+])
+def test_optimise_bad_request_names_the_cause(opt, changes, words):
+    for k, v in changes.items():
+        _set(opt, k, v)
+    opt.button(key="opt_run").click().run()
+    assert not opt.exception
+    errs = messages(opt, "error")
+    assert errs and all(w in errs[0] for w in words), errs
+    assert "opt_job" not in opt.session_state
+
+
+def test_optimise_infeasible_limit_says_which_constraint_binds(opt):
+    _set(opt, "opt_limit", 5.0)
+    _set(opt, "opt_solvers", ["surrogate", "pso"])
+    _set(opt, "opt_pareto_on", False)
+    opt.button(key="opt_run").click().run()
+    assert not opt.exception
+    errs = messages(opt, "error")
+    assert len(errs) == 2 and all("no feasible design found" in e for e in errs)
+    assert all("safety factor" in e or "blow-by" in e for e in errs)
+    assert chart_keys(opt) == ["opt_convergence"]
+
+
+def test_cancelled_run_keeps_finished_tasks(opt):
+    from app_ui import optimise_view as view
+
+    inputs = json.dumps(inputs_to_dict(*thesis_baseline()), sort_keys=True,
+                        separators=(",", ":"))
+    request = view.build_request(
+        inputs, limit=thesis_baseline()[0].blow_by_limit, bounds=DEFAULT_BOUNDS,
+        objective="total_mass", level="quick", seed=0, solvers=["slsqp", "pso"], pareto=True,
+        pareto_points=5, pareto_low=0.8, pareto_high=1.5)
+    state = {}
+    view.start_job(request, state)
+    job = state[view.JOB_KEY]
+    assert job["tasks"] == ["slsqp", "pso", "pareto"]
+    job["done"]["slsqp"] = view.cached_solve(request["inputs"], request["bounds"],
+                                             "total_mass", "slsqp", "quick", 0)
+    job["cancelled"] = True
+    opt.session_state[view.JOB_KEY] = job
+    opt.run()
+    assert not opt.exception
+    assert any("Run cancelled: 1 of 3 tasks" in w for w in messages(opt, "warning"))
+    assert list(table(opt, "Solver")["Solver"]) == ["SLSQP (2 starts)"]
+    assert "opt_pareto" not in chart_keys(opt)
+    assert list(opt.session_state[view.JOB_KEY]["done"]) == ["slsqp"]
