@@ -43,10 +43,10 @@ _MARGIN = dict(l=60, r=20, t=50, b=50)
 
 #: Performance quantities: key in rep["perf"] -> (title, axis label with unit).
 PERF_QUANTITIES: dict[str, tuple[str, str]] = {
-    "blow_by": ("Blow-by (downwind offset of the confluence point)", "Blow-by [m]"),
+    "blow_by": ("Blow-by (downwind offset)", "Blow-by [m]"),
     "alpha_eq": ("Equilibrium angle of attack", "α_eq [deg]"),
-    "dynamic_lift": ("Dynamic (aerodynamic) lift", "Dynamic lift [N]"),
-    "tension_top": ("Tether tension at the confluence point", "Tension [N]"),
+    "dynamic_lift": ("Dynamic lift", "Dynamic lift [N]"),
+    "tension_top": ("Tether tension at the top", "Tension [N]"),
     "tension_winch": ("Tether tension at the winch", "Tension [N]"),
     "safety_factor": ("Tether safety factor", "Safety factor [-]"),
     "drag": ("Aerodynamic drag", "Drag [N]"),
@@ -480,7 +480,7 @@ def cm_figure(rep: Mapping[str, Any]) -> go.Figure:
     ]
     return _figure(
         traces,
-        f"Moment coefficient at {c['wind']:g} m/s (stable: negative slope)",
+        f"Pitching moment C_m at {c['wind']:g} m/s",
         lines=[dict(axis="y", value=0.0, dash="solid")],
         height=360,
         xaxis=_axis("Angle of attack α [deg]"),

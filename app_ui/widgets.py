@@ -893,19 +893,21 @@ def input_form() -> None:
     sync_widgets()
     err = st.session_state.get(ERROR_KEY)
     with st.form("design_inputs_form", border=False, enter_to_submit=False):
-        if err and err.get("group") == "general":
-            st.error(f"Not applied: {err['text']}", icon=":material/error:")
-        elif err:
-            st.warning(
-                f"Inputs not applied: see **{GROUPS.get(err['group'], '')}** below.",
-                icon=":material/warning:",
-            )
+        with st.container():  # always present: the groups below keep their place
+            if err and err.get("group") == "general":
+                st.error(f"Not applied: {err['text']}", icon=":material/error:")
+            elif err:
+                st.warning(
+                    f"Inputs not applied: see **{GROUPS.get(err['group'], '')}** below.",
+                    icon=":material/warning:",
+                )
         for group, keys in LAYOUT.items():
             has_error = bool(err and err.get("group") == group)
             with st.expander(
                 GROUPS[group], expanded=group in _EXPANDED or has_error, icon=_GROUP_ICONS[group]
             ):
-                _group_error(group)
+                with st.container():
+                    _group_error(group)
                 if group == "advanced":
                     st.caption("Model coefficients with documented defaults (Method page).")
                 if group == "materials":

@@ -81,8 +81,10 @@ with col_in:
             help="A design file replaces the current inputs; a cases file adds saved cases. "
             "A file with a problem changes nothing.",
         )
-        fb = st.session_state.get(state.IMPORT_MSG_KEY)
-        if fb and fb.get("where") == "design":
+    import_box = st.container()  # always present: the form below keeps its place
+    fb = st.session_state.get(state.IMPORT_MSG_KEY)
+    if fb and fb.get("where") == "design":
+        with import_box:
             (st.success if fb["level"] == "success" else st.error)(fb["text"])
     widgets.input_form()
 
@@ -189,9 +191,11 @@ with col_out:
         c2.form_submit_button(
             "Save case", on_click=_save_case, icon=":material/bookmark_add:", width="stretch"
         )
+    case_box = st.container()  # always present: the tabs below keep their place
     fb = st.session_state.pop("case_feedback", None)
     if fb:
-        (st.success if fb[0] == "success" else st.error)(fb[1])
+        with case_box:
+            (st.success if fb[0] == "success" else st.error)(fb[1])
 
     tab_geo, tab_mass, tab_perf, tab_teth = st.tabs(
         ["Geometry", "Mass", "Performance", "Tether profiles"]
@@ -271,6 +275,10 @@ with col_out:
         r2[1].plotly_chart(plots.tension_figure(rep), key="perf_tension")
         r3 = st.columns(2)
         r3[0].plotly_chart(plots.cm_figure(rep), key="perf_cm")
+        r3[1].caption(
+            "C_m is the pitching moment about the confluence point over q V^(2/3) l. The trim "
+            "is stable where C_m falls as α rises (negative slope at the green point)."
+        )
 
     with tab_teth:
 

@@ -71,13 +71,17 @@ top[0].button(
     "(thesis §4.5), each from the thesis baseline with the volume sized.",
 )
 
+# Messages go into containers that always exist, so that the elements below keep their place
+# (and an open expander stays open) whether or not there is a message.
+feedback_box = st.container()
 fb = st.session_state.pop("compare_feedback", None)
 if fb:
-    (st.success if fb[0] == "success" else st.error)(fb[1])
+    with feedback_box:
+        (st.success if fb[0] == "success" else st.error)(fb[1])
 
 cases = state.get_cases()
 
-with st.expander("Cases file: export / import", icon=":material/folder_open:", expanded=not cases):
+with st.expander("Cases file: export / import", icon=":material/folder_open:"):
     c1, c2 = st.columns(2)
     with c1:
         st.download_button(
@@ -114,14 +118,17 @@ with st.expander("Cases file: export / import", icon=":material/folder_open:", e
             "file replaces the current inputs. A file with a problem "
             "changes nothing.",
         )
-    fb = st.session_state.get(state.IMPORT_MSG_KEY)
-    if fb and fb.get("where") == "compare":
+
+import_box = st.container()
+fb = st.session_state.get(state.IMPORT_MSG_KEY)
+if fb and fb.get("where") == "compare":
+    with import_box:
         (st.success if fb["level"] == "success" else st.error)(fb["text"])
 
 if not cases:
     st.info(
         "No saved cases yet. Save the current design on the **Design** page, or load the "
-        "thesis' GUI test cases above.",
+        "thesis' GUI test cases, or upload a cases file under *Cases file: export / import*.",
         icon=":material/info:",
     )
     st.stop()
