@@ -83,10 +83,10 @@ class SolverOptions:
     """
 
     method: str = "trbdf2"
-    rtol: float = 1e-5
-    atol_position: float = 1e-4
-    atol_velocity: float = 1e-4
-    atol_angle: float = 1e-6
+    rtol: float = 1e-6
+    atol_position: float = 1e-5
+    atol_velocity: float = 1e-5
+    atol_angle: float = 1e-7
     initial_step: float = 1e-3
     max_step: float = 1.0
     output_interval: float = 0.1

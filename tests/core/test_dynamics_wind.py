@@ -166,3 +166,17 @@ def test_same_seed_same_record_and_validation():
         DrydenTurbulence(w20=-1.0)
     with pytest.raises(ValueError, match="at least 0.5 m/s"):
         DrydenTurbulence().realise(300.0, 0.1, 300.0)
+
+
+def test_kernel_turbulence_table_matches_cosine_sum():
+    """The kernel's Hermite-interpolated table reproduces the cosine sum and its derivative."""
+    sc = WindScenario(SpeedSchedule.constant(10.0),
+                      turbulence=DrydenTurbulence.from_intensity("severe", seed=5, fade_in=0.0))
+    field = sc.realise(300.0, 200.0)
+    t = np.linspace(0.0, 400.0, 7919)  # beyond one period too (the table is periodic)
+    ux, uz, dux, duz = field.at(t, 300.0)
+    u, w, du, dw = field.turbulence.evaluate(t)
+    assert np.max(np.abs(ux - 10.0 - u)) < 1e-4
+    assert np.max(np.abs(uz - w)) < 1e-4
+    assert np.max(np.abs(dux - du)) < 2e-3 * np.max(np.abs(du))
+    assert np.max(np.abs(duz - dw)) < 2e-3 * np.max(np.abs(dw))

@@ -1,0 +1,406 @@
+"""UI layer of the Dynamics page: request validation, the cached simulation, figures and tables.
+
+Physics lives in :mod:`aerostat_core.dynamics`; this module turns the page's form into a request
+(plain JSON: the cache key), runs it through :func:`cached_run` (``st.cache_data``; the progress
+callback is an underscore argument, so it is not part of the key), and draws the plain result.
+
+Figures mirror the thesis (Figs 4.36-4.41): tether profile at t = 0 and t_end, x_C(t) and z_C(t),
+hull velocities, pitch and angle of attack, tensions at C and at the winch, wind input; plus the
+tether and hull at any time (slider).
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from collections.abc import Callable, Mapping
+from typing import Any
+
+import numpy as np
+import plotly.graph_objects as go
+import streamlit as st
+
+from aerostat_core import design as run_design
+from aerostat_core.dynamics import cases
+from aerostat_core.dynamics.linearise import linearise
+from aerostat_core.dynamics.model import (
+    Atmosphere,
+    DynamicSystem,
+    PointAerostat,
+    system_from_design,
+)
+from aerostat_core.dynamics.simulate import (
+    SIGNALS,
+    SolverOptions,
+    engine_guess,
+    response_metrics,
+    simulate,
+)
+from aerostat_core.dynamics.tether import TetherModel
+from aerostat_core.dynamics.wind import (
+    DRYDEN_W20,
+    DrydenTurbulence,
+    Gust,
+    MeanProfile,
+    SpeedSchedule,
+    WindScenario,
+)
+from aerostat_core.io import inputs_from_dict, inputs_to_dict
+
+ACCENT = "#1f5fa8"
+SECOND = "#e69f00"
+THIRD = "#009e73"
+_FONT = dict(family="sans-serif", size=13)
+_MARGIN = dict(l=60, r=20, t=50, b=50)
+
+CURRENT = "Current design"
+THESIS = "Thesis optimised design (120 m³, f = 4)"
+SCENARIOS = {
+    "steady": "Steady wind",
+    "varying": "Varying wind (ramps)",
+    "gust": "Discrete gust (1 − cos)",
+    "turbulence": "Dryden turbulence",
+}
+INTENSITIES = {"light": "Light (W20 = 15 kt)", "moderate": "Moderate (W20 = 30 kt)",
+               "severe": "Severe (W20 = 45 kt)", "custom": "Custom W20"}
+PROFILES = {"uniform": "Uniform", "power": "Power law", "log": "Log law"}
+BODIES = {"hull": "3-DOF hull (surge, heave, pitch)", "point": "Point aerostat (no pitch)"}
+#: Valid ranges of the form's numbers: key -> (label, lo, hi, unit).
+RANGES = {
+    "speed": ("Mean wind at the aerostat", 0.0, 30.0, "m/s"),
+    "duration": ("Simulated time", 10.0, 3600.0, "s"),
+    "exponent": ("Power-law exponent", 0.0, 0.6, "-"),
+    "roughness": ("Roughness length", 1e-5, 2.0, "m"),
+    "t_change": ("Change starts at", 0.0, 3600.0, "s"),
+    "u_new": ("New wind speed", 0.0, 30.0, "m/s"),
+    "ramp": ("Ramp time", 0.1, 600.0, "s"),
+    "t_change2": ("Second change starts at", 0.0, 3600.0, "s"),
+    "u_new2": ("Second new wind speed", 0.0, 30.0, "m/s"),
+    "gust_u": ("Gust amplitude, horizontal", -15.0, 15.0, "m/s"),
+    "gust_w": ("Gust amplitude, vertical", -10.0, 10.0, "m/s"),
+    "gust_length": ("Gust length d_m", 5.0, 1000.0, "m"),
+    "gust_start": ("Gust starts at", 0.0, 3600.0, "s"),
+    "w20": ("W20 (wind at 20 ft)", 0.0, 40.0, "m/s"),
+    "seed": ("Random seed", 0, 2**31 - 1, "-"),
+    "max_frequency": ("Highest turbulence frequency", 0.05, 5.0, "Hz"),
+    "fade_in": ("Turbulence fade-in", 0.0, 120.0, "s"),
+    "segments": ("Tether segments", 4, 80, "-"),
+    "damping": ("Tether damping ratio", 0.0, 5.0, "-"),
+    "wall": ("Wall-clock budget", 5.0, 600.0, "s"),
+}
+
+
+# --- request ------------------------------------------------------------------------------------
+def _num(form: Mapping[str, Any], key: str, integer: bool = False) -> float:
+    label, lo, hi, unit = RANGES[key]
+    v = form.get(key)
+    u = "" if unit == "-" else f" {unit}"
+    try:
+        x = float(v)
+    except (TypeError, ValueError):
+        raise ValueError(f"{label} = {v!r} is not a number; valid range [{lo:g}, {hi:g}]{u}") \
+            from None
+    if not math.isfinite(x) or x < lo or x > hi:
+        raise ValueError(f"{label} = {x:g}{u} is outside the valid range [{lo:g}, {hi:g}]{u}")
+    if integer:
+        if x != int(x):
+            raise ValueError(f"{label} = {x:g} must be a whole number")
+        return int(x)
+    return x
+
+
+def design_sources(cases_state: Mapping[str, Any] | None) -> list[str]:
+    """Design choices: the current design, the thesis design, then saved cases."""
+    return [CURRENT, THESIS] + [f"Case: {n}" for n in (cases_state or {})]
+
+
+def build_request(form: Mapping[str, Any], design_inputs: Mapping[str, Any] | None,
+                  cases_state: Mapping[str, Any] | None) -> dict:
+    """Validate the form and return the run request (plain JSON-able data, the cache key).
+
+    Raises ``ValueError`` naming the field, the value and its valid range.
+    """
+    source = form.get("source", CURRENT)
+    if source == THESIS:
+        inputs = None
+    elif source == CURRENT:
+        inputs = dict(design_inputs) if design_inputs else None
+    elif isinstance(source, str) and source.startswith("Case: ") and cases_state and \
+            source[6:] in cases_state:
+        inputs = dict(cases_state[source[6:]])
+    else:
+        raise ValueError(f"Design = {source!r} is not available; choose one of the list")
+    if inputs is not None:
+        inputs_from_dict(inputs)  # validates; raises ValueError naming the field
+    scenario = form.get("scenario", "gust")
+    if scenario not in SCENARIOS:
+        raise ValueError(f"Wind scenario = {scenario!r}; valid options {list(SCENARIOS)}")
+    profile = form.get("profile", "uniform")
+    if profile not in PROFILES:
+        raise ValueError(f"Wind profile = {profile!r}; valid options {list(PROFILES)}")
+    body = form.get("body", "hull")
+    if body not in BODIES:
+        raise ValueError(f"Body model = {body!r}; valid options {list(BODIES)}")
+    req = {
+        "source": source, "inputs": inputs, "scenario": scenario, "profile": profile,
+        "body": body, "speed": _num(form, "speed"), "duration": _num(form, "duration"),
+        "exponent": _num(form, "exponent"), "roughness": _num(form, "roughness"),
+        "segments": _num(form, "segments", integer=True), "damping": _num(form, "damping"),
+        "unsteady": bool(form.get("unsteady", True)), "wall": _num(form, "wall"),
+        "modes": bool(form.get("modes", False)),
+    }
+    if scenario == "varying":
+        req["changes"] = [(_num(form, "t_change"), _num(form, "u_new"), _num(form, "ramp"))]
+        if form.get("second_change"):
+            t2 = _num(form, "t_change2")
+            if t2 < req["changes"][0][0] + req["changes"][0][2]:
+                raise ValueError(f"Second change starts at = {t2:g} s: it must start after the "
+                                 f"first ramp ends ({req['changes'][0][0] + req['changes'][0][2]:g}"
+                                 " s)")
+            req["changes"].append((t2, _num(form, "u_new2"), _num(form, "ramp")))
+    elif scenario == "gust":
+        req["gust"] = {"u": _num(form, "gust_u"), "w": _num(form, "gust_w"),
+                       "length": _num(form, "gust_length"), "start": _num(form, "gust_start"),
+                       "shape": "ramp-hold" if form.get("gust_hold") else "full"}
+        if req["gust"]["u"] == 0 and req["gust"]["w"] == 0:
+            raise ValueError("Gust amplitudes are both 0 m/s: give a horizontal or vertical "
+                             "amplitude in [-15, 15] / [-10, 10] m/s")
+    elif scenario == "turbulence":
+        inten = form.get("intensity", "moderate")
+        if inten not in INTENSITIES:
+            raise ValueError(f"Turbulence intensity = {inten!r}; valid options "
+                             f"{list(INTENSITIES)}")
+        w20 = _num(form, "w20") if inten == "custom" else DRYDEN_W20[inten]
+        req["turbulence"] = {"intensity": inten, "w20": w20,
+                             "seed": _num(form, "seed", integer=True),
+                             "max_frequency": _num(form, "max_frequency"),
+                             "fade_in": _num(form, "fade_in"),
+                             "vertical": bool(form.get("vertical", True))}
+    if scenario in ("gust", "turbulence") and req["speed"] < 0.5:
+        raise ValueError(f"Mean wind at the aerostat = {req['speed']:g} m/s: a gust or turbulence "
+                         "needs at least 0.5 m/s to be convected; valid range [0.5, 30] m/s")
+    return req
+
+
+def request_key(req: Mapping[str, Any]) -> str:
+    """Canonical JSON of a request (cache key)."""
+    return json.dumps(req, sort_keys=True, separators=(",", ":"))
+
+
+def _design_of(req: Mapping[str, Any]):
+    if req["inputs"] is None:
+        return cases.thesis_design()
+    return run_design(*inputs_from_dict(req["inputs"]))
+
+
+def _wind(req: Mapping[str, Any], top_height: float) -> WindScenario:
+    profile = MeanProfile(req["profile"], max(top_height, 1.0), req["exponent"], req["roughness"])
+    u0 = req["speed"]
+    gust = turb = None
+    if req["scenario"] == "varying":
+        sched = SpeedSchedule.ramps(u0, req["changes"])
+    else:
+        sched = SpeedSchedule.constant(u0)
+    if req["scenario"] == "gust":
+        g = req["gust"]
+        gust = Gust(g["u"], g["w"], g["length"], g["start"], g["shape"])
+    if req["scenario"] == "turbulence":
+        t = req["turbulence"]
+        turb = DrydenTurbulence(w20=t["w20"], seed=t["seed"], max_frequency=t["max_frequency"],
+                                fade_in=t["fade_in"], vertical=t["vertical"])
+    return WindScenario(sched, profile, gust, turb)
+
+
+def _event_time(req: Mapping[str, Any]) -> float | None:
+    if req["scenario"] == "varying":
+        return float(req["changes"][0][0])
+    if req["scenario"] == "gust":
+        return float(req["gust"]["start"])
+    return None
+
+
+def _point_from_design(d, speed: float) -> PointAerostat:
+    af = d.airframe
+    row = min(d.performance.rows(), key=lambda r: abs(r["wind_speed_m_s"] - max(speed, 1.0)))
+    q = 0.5 * float(af.air_density) * max(row["wind_speed_m_s"], 1.0) ** 2
+    return PointAerostat(mass=float(af.mass.aerostat), volume=float(af.hull.volume),
+                         drag_area=row["drag_N"] / q, added_mass_coefficient=0.5)
+
+
+def run(req: Mapping[str, Any], progress: Callable[[float], None] | None = None) -> dict:
+    """Build the system, simulate, and collect plain results (arrays as lists for caching)."""
+    d = _design_of(req)
+    if req["body"] == "hull":
+        system = system_from_design(d, segments=req["segments"], damping_ratio=req["damping"],
+                                    unsteady_wind_inertia=req["unsteady"])
+        guess = engine_guess(system, d, req["speed"])
+    else:
+        af = d.airframe
+        teth = TetherModel.from_spec(d.configuration.tether, af.tether_length, req["segments"],
+                                     req["damping"])
+        point = _point_from_design(d, req["speed"])
+        point = PointAerostat(point.mass, point.volume, point.drag_area, 0.5, req["unsteady"])
+        system = DynamicSystem(point, teth, g=float(af.g),
+                               atmosphere=Atmosphere(float(np.asarray(af.air_density))))
+        guess = engine_guess(system, d, req["speed"])
+    b = system.hull_index
+    top_height = float(guess[b + 1])
+    if system.is_hull:
+        top_height = float(system.nodes(guess)[0][-1, 1])
+    wind = _wind(req, top_height)
+    opt = SolverOptions(wall_time_limit=req["wall"], output_interval=0.1 if req["duration"] <= 900
+                        else 0.5)
+    res = simulate(system, wind, req["duration"], opt, guess=guess, progress=progress)
+    return collect(res, req, d)
+
+
+def collect(res, req: Mapping[str, Any], d=None) -> dict:
+    """Plain data of a :class:`SimulationResult` for the page (lists, floats, strings)."""
+    names = res.signal_names()
+    sig = {k: res.signal(k).tolist() for k in names}
+    t = res.t
+    n = t.size
+    # tether snapshots every ~1 s (at most 400) for the slider, with the hull outline
+    step = max(1, int(round(1.0 / max(t[1] - t[0], 1e-9)))) if n > 1 else 1
+    idx = list(range(0, n, step))
+    if idx[-1] != n - 1:
+        idx.append(n - 1)
+    if len(idx) > 400:
+        idx = [idx[int(round(i))] for i in np.linspace(0, len(idx) - 1, 400)]
+    snaps = []
+    for i in idx:
+        pos = res.tether(i)
+        s = {"t": float(t[i]), "x": pos[:, 0].tolist(), "z": pos[:, 1].tolist()}
+        if res.system.is_hull:
+            hx, hz = res.hull_outline(i)
+            s["hull_x"], s["hull_z"] = hx.tolist(), hz.tolist()
+        snaps.append(s)
+    t_from = 0.0
+    if req.get("scenario") == "turbulence":
+        t_from = min(float(req["turbulence"]["fade_in"]), float(t[-1]) * 0.5)
+    stats = res.stats_table(t_from=t_from)
+    stat_rows = []
+    for k in names:
+        label, unit = SIGNALS[k]
+        s = stats[k]
+        stat_rows.append({"signal": label, "unit": unit, "mean": s.mean,
+                          "rms_fluctuation": s.std, "peak_excursion": s.peak, "min": s.min,
+                          "max": s.max})
+    metrics = []
+    te = _event_time(req)
+    if te is not None and t[-1] > te + 5.0:
+        final = None
+        for k in ("x_C", "z_C", "theta", "vx", "tension_C"):
+            if k not in names:
+                continue
+            m = response_metrics(t, res.signal(k), te, 0.05, final=final)
+            m2 = response_metrics(t, res.signal(k), te, 0.02, final=final)
+            metrics.append({"signal": SIGNALS[k][0], "unit": SIGNALS[k][1],
+                            "settling_5pct_s": m.settling_time, "settling_2pct_s": m2.settling_time,
+                            "band_5pct": m.band, "overshoot_pct": m.overshoot,
+                            "peak_excursion": m.peak_excursion, "final": m.final})
+    out = {
+        "ok": bool(res.ok), "status": int(res.status), "message": res.message,
+        "t": t.tolist(), "signals": sig, "snapshots": snaps, "stats": stat_rows,
+        "stats_from": t_from, "metrics": metrics, "event_time": te,
+        "solver": {k: (float(v) if isinstance(v, float) else v) for k, v in res.stats.items()},
+        "is_hull": bool(res.system.is_hull), "csv": res.to_csv(),
+        "equilibrium_shift_mm": (1e3 * res.equilibrium.shift if res.equilibrium else None),
+        "tether_segments": res.system.tether.segments, "modes": None,
+    }
+    if req.get("modes") and res.system.is_hull is not None:
+        try:
+            lin = linearise(res.system, wind=res.wind, state=res.y[0])
+            out["modes"] = [{k: (float(v) if isinstance(v, float) else v) for k, v in r.items()}
+                            for r in lin.rows()]
+            out["stable"] = bool(lin.stable)
+        except Exception as exc:  # noqa: BLE001 - shown to the user, never a traceback
+            out["modes_error"] = str(exc)
+    return out
+
+
+@st.cache_data(max_entries=16, show_spinner=False)
+def cached_run(request_json: str, _progress: Callable[[float], None] | None = None) -> dict:
+    """:func:`run` of a request (JSON text from :func:`request_key`); the progress callback is
+    not part of the cache key."""
+    return run(json.loads(request_json), _progress)
+
+
+def current_inputs_or_none(state: Mapping[str, Any]) -> dict | None:
+    """The session's design inputs dict, or None (then the thesis design is used)."""
+    d = state.get("design_inputs")
+    if not d:
+        return None
+    try:
+        return inputs_to_dict(*inputs_from_dict(d))
+    except (ValueError, TypeError):
+        return None
+
+
+# --- figures ------------------------------------------------------------------------------------
+def _fig(data: list, title: str, xt: str, yt: str, **layout: Any) -> go.Figure:
+    lay = dict(title=dict(text=title), font=_FONT, margin=_MARGIN, template="plotly_white",
+               xaxis=dict(title=dict(text=xt)), yaxis=dict(title=dict(text=yt)),
+               legend=dict(orientation="h", y=-0.2), height=360)
+    lay.update(layout)
+    return go.Figure(dict(data=data, layout=lay))
+
+
+def _line(x, y, name, colour=ACCENT, **kw) -> dict:
+    return dict(type="scatter", mode="lines", x=x, y=y, name=name,
+                line=dict(color=colour, width=kw.pop("width", 2), dash=kw.pop("dash", None)), **kw)
+
+
+def time_figure(out: Mapping[str, Any], names, title: str, ytitle: str, key_names=None) -> go.Figure:
+    """Signals versus time on one axis (a dashed marker at the event time)."""
+    cols = (ACCENT, SECOND, THIRD)
+    data = [_line(out["t"], out["signals"][k], (key_names or {}).get(k, SIGNALS[k][0]),
+                  cols[i % 3]) for i, k in enumerate(names) if k in out["signals"]]
+    shapes = []
+    if out.get("event_time") is not None:
+        shapes.append(dict(type="line", xref="x", yref="paper", x0=out["event_time"],
+                           x1=out["event_time"], y0=0, y1=1,
+                           line=dict(color="#7f7f7f", dash="dot", width=1)))
+    return _fig(data, title, "Time t [s]", ytitle, shapes=shapes)
+
+
+def position_figure(out: Mapping[str, Any]) -> go.Figure:
+    """x_C(t) and z_C(t) (two y axes), as thesis Figs 4.37/4.39/4.41."""
+    t = out["t"]
+    data = [_line(t, out["signals"]["x_C"], "blow-by x_C [m]", ACCENT),
+            _line(t, out["signals"]["z_C"], "altitude z_C [m]", SECOND, yaxis="y2")]
+    return _fig(data, "Position of the confluence point", "Time t [s]", "Blow-by x_C [m]",
+                yaxis2=dict(title=dict(text="Altitude z_C [m]"), overlaying="y", side="right"))
+
+
+def tether_figure(out: Mapping[str, Any], indices=None, title="Tether profile") -> go.Figure:
+    """Tether (and hull) at the given snapshot indices (default: first and last), to scale."""
+    snaps = out["snapshots"]
+    indices = [0, len(snaps) - 1] if indices is None else indices
+    cols = (ACCENT, SECOND, THIRD)
+    data = []
+    for j, i in enumerate(indices):
+        s = snaps[i]
+        c = cols[j % 3]
+        data.append(_line(s["x"], s["z"], f"tether, t = {s['t']:.1f} s", c))
+        if "hull_x" in s:
+            data.append(dict(type="scatter", mode="lines", x=s["hull_x"], y=s["hull_z"],
+                             name=f"hull, t = {s['t']:.1f} s", fill="toself",
+                             line=dict(color=c, width=1), opacity=0.6))
+    return _fig(data, title, "Downwind distance x [m]", "Height z [m]",
+                yaxis=dict(title=dict(text="Height z [m]"), scaleanchor="x", scaleratio=1),
+                height=520)
+
+
+def hull_zoom_figure(out: Mapping[str, Any], i: int) -> go.Figure:
+    """The hull and the top of the tether at snapshot ``i`` (zoomed, to scale), with the path of
+    the confluence point."""
+    s = out["snapshots"][i]
+    data = [_line(out["signals"]["x_C"], out["signals"]["z_C"], "path of C", "#b0b0b0", width=1),
+            _line(s["x"][-4:], s["z"][-4:], "tether (top)", ACCENT)]
+    if "hull_x" in s:
+        data.append(dict(type="scatter", mode="lines", x=s["hull_x"], y=s["hull_z"],
+                         name="hull", fill="toself", line=dict(color=SECOND, width=1)))
+    return _fig(data, f"Hull at t = {s['t']:.1f} s", "Downwind distance x [m]", "Height z [m]",
+                yaxis=dict(title=dict(text="Height z [m]"), scaleanchor="x", scaleratio=1),
+                height=520)

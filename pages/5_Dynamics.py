@@ -1,0 +1,239 @@
+"""Dynamics page: 3-DOF response of the tethered aerostat to varying wind, a gust or turbulence."""
+
+from __future__ import annotations
+
+import pandas as pd
+import streamlit as st
+
+from app_ui import dynamics_view as view
+
+st.title("Dynamics")
+st.caption(
+    "Surge, heave and pitch of the aerostat on a lumped-mass elastic tether, started from the "
+    "static equilibrium of the design. Hull aerodynamics are the design engine's (Jones & "
+    "DeLaurier hull, fins) fed with the local relative wind, so pitch damping follows from the "
+    "geometry; Lamb added mass, buoyancy, gravity; wind from a profile, ramps, a 1 − cos gust or "
+    "MIL-F-8785C Dryden turbulence."
+)
+
+cases_state = st.session_state.get("cases") or {}
+sources = view.design_sources(cases_state)
+scenario = st.radio("Wind scenario", list(view.SCENARIOS), format_func=view.SCENARIOS.get,
+                    index=2, horizontal=True, key="dyn_scenario", persist_state="session")
+
+with st.form("dyn_form"):
+    c = st.columns(3)
+    source = c[0].selectbox("Design", sources, key="dyn_source", persist_state="session",
+                            help="The current design of the Design page, the thesis' optimised "
+                                 "aerostat, or a saved case.")
+    speed = c[1].number_input("Mean wind at the aerostat [m/s]", value=10.0, step=1.0,
+                              key="dyn_speed", persist_state="session",
+                              help="Wind at the confluence point's static height at t = 0.")
+    duration = c[2].number_input("Simulated time [s]", value=150.0, step=10.0, key="dyn_duration",
+                                 persist_state="session")
+    form = {"source": source, "scenario": scenario, "speed": speed, "duration": duration}
+    if scenario == "varying":
+        v = st.columns(4)
+        form["t_change"] = v[0].number_input("Change starts at [s]", value=20.0, key="dyn_tc",
+                                             persist_state="session")
+        form["u_new"] = v[1].number_input("New wind speed [m/s]", value=15.0, key="dyn_unew",
+                                          persist_state="session")
+        form["ramp"] = v[2].number_input("Ramp time [s]", value=5.0, key="dyn_ramp",
+                                         persist_state="session",
+                                         help="With the unsteady-wind inertia on, a short ramp "
+                                              "gives a much harsher transient.")
+        form["second_change"] = v[3].checkbox("Second change", key="dyn_second",
+                                              persist_state="session")
+        v2 = st.columns(4)
+        form["t_change2"] = v2[0].number_input("Second change starts at [s]", value=80.0,
+                                               key="dyn_tc2", persist_state="session")
+        form["u_new2"] = v2[1].number_input("Second new wind speed [m/s]", value=7.0,
+                                            key="dyn_unew2", persist_state="session")
+    elif scenario == "gust":
+        g = st.columns(5)
+        form["gust_u"] = g[0].number_input("Gust amplitude, horizontal [m/s]", value=5.0,
+                                           key="dyn_gu", persist_state="session")
+        form["gust_w"] = g[1].number_input("Gust amplitude, vertical [m/s]", value=0.0,
+                                           key="dyn_gw", persist_state="session")
+        form["gust_length"] = g[2].number_input("Gust length d_m [m]", value=60.0,
+                                                key="dyn_gl", persist_state="session",
+                                                help="Rise time = d_m / mean wind.")
+        form["gust_start"] = g[3].number_input("Gust starts at [s]", value=20.0, key="dyn_gs",
+                                               persist_state="session")
+        form["gust_hold"] = g[4].checkbox("Ramp and hold", key="dyn_ghold",
+                                          persist_state="session",
+                                          help="Off: the full 1 − cos gust returns to zero.")
+    elif scenario == "turbulence":
+        tb = st.columns(5)
+        form["intensity"] = tb[0].selectbox("Intensity", list(view.INTENSITIES), index=1,
+                                            format_func=view.INTENSITIES.get, key="dyn_int",
+                                            persist_state="session")
+        form["w20"] = tb[1].number_input("Custom W20 [m/s]", value=15.4, key="dyn_w20",
+                                         persist_state="session",
+                                         help="Used with 'Custom W20' only. σ_w = 0.1 W20.")
+        form["seed"] = tb[2].number_input("Random seed [-]", value=1, step=1, key="dyn_seed",
+                                          persist_state="session")
+        form["fade_in"] = tb[3].number_input("Fade-in [s]", value=20.0, key="dyn_fade",
+                                             persist_state="session",
+                                             help="Statistics skip the fade-in.")
+        form["max_frequency"] = tb[4].number_input("Highest frequency [Hz]", value=1.0,
+                                                   key="dyn_fmax", persist_state="session")
+        form["vertical"] = st.checkbox("Vertical turbulence w′", value=True, key="dyn_vert",
+                                       persist_state="session")
+    with st.expander("Wind profile and model options"):
+        p = st.columns(3)
+        form["profile"] = p[0].selectbox("Wind profile", list(view.PROFILES),
+                                         format_func=view.PROFILES.get, key="dyn_profile",
+                                         persist_state="session")
+        form["exponent"] = p[1].number_input("Power-law exponent [-]", value=1 / 7,
+                                             format="%.3f", key="dyn_exp", persist_state="session")
+        form["roughness"] = p[2].number_input("Log-law roughness length [m]", value=0.03,
+                                              format="%.4f", key="dyn_z0", persist_state="session")
+        m = st.columns(4)
+        form["body"] = m[0].radio("Body model", list(view.BODIES), format_func=view.BODIES.get,
+                                  key="dyn_body", persist_state="session")
+        form["segments"] = m[1].number_input("Tether segments [-]", value=20, step=1,
+                                             key="dyn_nseg", persist_state="session")
+        form["damping"] = m[2].number_input("Tether damping ratio ζ [-]", value=1.0,
+                                            key="dyn_zeta", persist_state="session")
+        form["wall"] = m[3].number_input("Wall-clock budget [s]", value=60.0, key="dyn_wall",
+                                         persist_state="session")
+        form["unsteady"] = st.checkbox("Unsteady-wind inertia (added mass × fluid acceleration "
+                                       "+ Froude–Krylov)", value=True, key="dyn_unsteady",
+                                       persist_state="session")
+        form["modes"] = st.checkbox("Linearised modes about the initial equilibrium",
+                                    value=False, key="dyn_modes", persist_state="session")
+    submitted = st.form_submit_button("Run simulation", type="primary", key="dyn_run",
+                                      icon=":material/play_arrow:")
+
+if submitted:
+    try:
+        req = view.build_request(form, view.current_inputs_or_none(st.session_state),
+                                 cases_state)
+    except ValueError as exc:
+        st.error(f"Cannot run: {exc}", icon=":material/error:")
+        st.session_state.pop("dyn_request", None)
+    else:
+        st.session_state["dyn_request"] = view.request_key(req)
+
+key = st.session_state.get("dyn_request")
+if key is None:
+    st.info("Choose the design and the wind, then press **Run simulation**.",
+            icon=":material/info:")
+    st.stop()
+
+bar = st.progress(0.0, text="Simulating…")
+try:
+    out = view.cached_run(key, _progress=lambda f: bar.progress(
+        min(max(f, 0.0), 1.0), text=f"Simulating… {100 * f:.0f} %"))
+except (ValueError, RuntimeError) as exc:
+    bar.empty()
+    st.error(f"Cannot simulate this case: {exc}", icon=":material/error:")
+    st.stop()
+bar.empty()
+
+if out["ok"]:
+    st.success(f"Finished: {out['t'][-1]:.0f} s simulated in {out['solver']['wall_time']:.2f} s "
+               f"({out['solver']['steps']} steps).", icon=":material/check_circle:")
+else:
+    st.error(f"The simulation {out['message']}. The time histories up to that point are shown.",
+             icon=":material/warning:")
+
+sig = out["signals"]
+k = st.columns(5)
+k[0].metric("Peak blow-by x_C [m]", f"{max(sig['x_C']):.1f}")
+k[1].metric("Lowest altitude z_C [m]", f"{min(sig['z_C']):.1f}")
+if out["is_hull"]:
+    k[2].metric("Pitch range θ [deg]", f"{min(sig['theta']):.1f} … {max(sig['theta']):.1f}")
+rms = {r["signal"]: r for r in out["stats"]}
+k[3].metric("RMS fluctuation of v_x [m/s]",
+            f"{rms[view.SIGNALS['vx'][0]]['rms_fluctuation']:.2f}")
+k[4].metric("Peak tension at C [N]", f"{max(sig['tension_C']):.0f}")
+
+r1 = st.columns(2)
+r1[0].plotly_chart(view.tether_figure(out, title="Tether profile at t = 0 and at the end"),
+                   key="dyn_tether")
+r1[1].plotly_chart(view.position_figure(out), key="dyn_position")
+r2 = st.columns(2)
+r2[0].plotly_chart(view.time_figure(out, ["vx", "vz"], "Hull velocity", "Velocity [m/s]"),
+                   key="dyn_velocity")
+if out["is_hull"]:
+    r2[1].plotly_chart(view.time_figure(out, ["theta", "alpha"], "Pitch and angle of attack",
+                                        "Angle [deg]"), key="dyn_pitch")
+r3 = st.columns(2)
+r3[0].plotly_chart(view.time_figure(out, ["tension_C", "tension_winch"], "Tether tension",
+                                    "Tension [N]"), key="dyn_tension")
+r3[1].plotly_chart(view.time_figure(out, ["wind_x", "wind_z"], "Wind input at the hull",
+                                    "Wind [m/s]"), key="dyn_wind")
+
+
+@st.fragment
+def snapshot_panel() -> None:
+    snaps = out["snapshots"]
+    times = [s["t"] for s in snaps]
+    i = st.select_slider("Time of the snapshot [s]", options=list(range(len(snaps))),
+                         value=len(snaps) - 1, format_func=lambda j: f"{times[j]:.1f}",
+                         key="dyn_slider")
+    c = st.columns(2)
+    c[0].plotly_chart(view.tether_figure(out, [i], title=f"Tether at t = {times[i]:.1f} s"),
+                      key="dyn_snapshot")
+    c[1].plotly_chart(view.hull_zoom_figure(out, i), key="dyn_hull")
+
+
+snapshot_panel()
+
+st.subheader("Summary")
+st.caption(
+    f"Over t ≥ {out['stats_from']:.0f} s. **RMS fluctuation** = standard deviation about the mean "
+    "(the “±” of a turbulence response); **peak excursion** = the largest |x − mean| (a single "
+    "extreme, typically 2.5–4 × the RMS in turbulence); min and max are the extremes of the record."
+)
+st.dataframe(pd.DataFrame(out["stats"]), hide_index=True, key="dyn_stats", column_config={
+    "signal": "Signal", "unit": "Unit",
+    "mean": st.column_config.NumberColumn("Mean", format="%.3f"),
+    "rms_fluctuation": st.column_config.NumberColumn("RMS fluctuation", format="%.3f"),
+    "peak_excursion": st.column_config.NumberColumn("Peak excursion", format="%.3f"),
+    "min": st.column_config.NumberColumn("Min", format="%.3f"),
+    "max": st.column_config.NumberColumn("Max", format="%.3f")})
+if out["metrics"]:
+    st.caption(
+        f"After the event at t = {out['event_time']:.0f} s: settling time = time to stay within "
+        "5 % (2 %) of the change (a step) or of the largest excursion (a gust that returns); "
+        "overshoot in % of the change (steps only).")
+    st.dataframe(pd.DataFrame(out["metrics"]), hide_index=True, key="dyn_metrics", column_config={
+        "signal": "Signal", "unit": "Unit",
+        "settling_5pct_s": st.column_config.NumberColumn("Settling 5 % [s]", format="%.1f"),
+        "settling_2pct_s": st.column_config.NumberColumn("Settling 2 % [s]", format="%.1f"),
+        "band_5pct": st.column_config.NumberColumn("5 % band", format="%.3f"),
+        "overshoot_pct": st.column_config.NumberColumn("Overshoot [%]", format="%.1f"),
+        "peak_excursion": st.column_config.NumberColumn("Peak excursion", format="%.3f"),
+        "final": st.column_config.NumberColumn("Final value", format="%.3f")})
+if out.get("modes"):
+    st.subheader("Linearised modes about the initial equilibrium")
+    st.caption("Eigenvalues of the finite-difference Jacobian of the full model; modes with at "
+               "least 30 % of their kinetic energy in the body. "
+               + ("All eigenvalues are in the left half-plane (stable)." if out.get("stable")
+                  else "**Some eigenvalue has a positive real part: unstable.**"))
+    st.dataframe(pd.DataFrame(out["modes"]), hide_index=True, key="dyn_modes_table",
+                 column_config={
+                     "mode": "Mode",
+                     "period_s": st.column_config.NumberColumn("Period [s]", format="%.2f"),
+                     "damping_ratio": st.column_config.NumberColumn("Damping ratio [-]",
+                                                                    format="%.3f"),
+                     "log_decrement": st.column_config.NumberColumn("Log decrement [-]",
+                                                                    format="%.3f"),
+                     "body_energy_share": st.column_config.NumberColumn("Body energy share [-]",
+                                                                        format="%.2f")})
+elif out.get("modes_error"):
+    st.warning(f"Linearisation failed: {out['modes_error']}")
+
+st.download_button("Time histories (CSV)", out["csv"].encode("utf-8"),
+                   file_name="aerostat_dynamics.csv", mime="text/csv", on_click="ignore",
+                   key="dyn_csv", icon=":material/download:")
+st.caption(
+    f"Solver: adaptive L-stable TR-BDF2, {out['solver']['steps']} steps, "
+    f"{out['solver']['rhs_calls']} right-hand-side calls, {out['solver']['wall_time']:.2f} s; "
+    f"{out['tether_segments']} tether segments. Started from the static engine's equilibrium"
+    + (f" (lumped-mass polish moved the nodes by {out['equilibrium_shift_mm']:.1f} mm)."
+       if out.get("equilibrium_shift_mm") is not None else ".")
+)

@@ -1,0 +1,175 @@
+"""Dynamics page (AppTest): run the default gust case and check the plotted data against the
+static engine and the wind input; turbulence statistics table; saved-case selection; bad input and
+a diverging case end with a clear message, never a traceback."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from streamlit.testing.v1 import AppTest
+
+from aerostat_core import Configuration, HullSpec, Requirement, design
+from aerostat_core.io import inputs_from_dict, inputs_to_dict
+from app_ui import dynamics_view as view
+from tests.app.conftest import APP_PATH
+from tests.app.helpers import chart, trace, values
+
+DYN_PAGE = "pages/5_Dynamics.py"
+
+
+@pytest.fixture
+def dyn() -> AppTest:
+    at = AppTest.from_file(str(APP_PATH), default_timeout=180)
+    at.run()
+    at.switch_page(DYN_PAGE)
+    at.run()
+    assert not at.exception, [e.value for e in at.exception]
+    return at
+
+
+def _set(at: AppTest, key: str, value) -> None:
+    for kind in ("number_input", "selectbox", "radio", "checkbox"):
+        for el in getattr(at, kind):
+            if getattr(el, "key", None) == key:
+                el.set_value(value)
+                return
+    raise KeyError(key)
+
+
+def _df(at: AppTest, column: str):
+    """The dataframe that has this column (AppTest does not expose dataframe keys)."""
+    for df in at.dataframe:
+        if column in df.value.columns:
+            return df.value
+    raise KeyError(f"no table with column {column!r}")
+
+
+def _run(at: AppTest) -> AppTest:
+    at.button(key="dyn_run").click()
+    at.run()
+    assert not at.exception, [e.value for e in at.exception]
+    return at
+
+
+def test_page_invites_a_run(dyn):
+    assert dyn.title[0].value == "Dynamics"
+    assert any("Run simulation" in i.value for i in dyn.info)
+    assert len(dyn.get("plotly_chart")) == 0
+
+
+def test_default_gust_run_plots_real_data(dyn):
+    at = _run(dyn)
+    assert any(s.value.startswith("Finished: 150 s simulated") for s in at.success)
+    d = design(*inputs_from_dict(at.session_state["design_inputs"]))
+    row = next(r for r in d.performance.rows() if r["wind_speed_m_s"] == 10.0)
+    # the run starts from the engine's static equilibrium at 10 m/s
+    pos = chart(at, "dyn_position")
+    x = values(trace(pos, "blow-by x_C [m]"), "y")
+    z = values(trace(pos, "altitude z_C [m]"), "y")
+    assert x[0] == pytest.approx(row["blow_by_m"], abs=0.01)
+    assert z[0] == pytest.approx(row["flying_height_m"], abs=0.01)
+    # a 5 m/s gust pushes the aerostat downwind, then it settles back
+    assert x.max() > x[0] + 5.0
+    assert x[-1] == pytest.approx(x[0], abs=0.5)
+    # wind input at the hull: 10 m/s + the full 1-cos gust of 5 m/s
+    wind = chart(at, "dyn_wind")
+    ux = values(trace(wind, view.SIGNALS["wind_x"][0]), "y")
+    assert ux[0] == pytest.approx(10.0) and ux.max() == pytest.approx(15.0, abs=0.01)
+    t = values(trace(wind, view.SIGNALS["wind_x"][0]), "x")
+    assert t[np.argmax(ux)] == pytest.approx(20.0 + 60.0 / 10.0, abs=0.1)
+    # pitch and alpha start at the engine's trim angle
+    pitch = chart(at, "dyn_pitch")
+    th = values(trace(pitch, view.SIGNALS["theta"][0]), "y")
+    assert th[0] == pytest.approx(row["alpha_eq_deg"], abs=1e-3)
+    # tether profile figure: the two snapshots, from the winch to the confluence point
+    teth = chart(at, "dyn_tether")
+    names = [tr["name"] for tr in teth["data"]]
+    assert names[0] == "tether, t = 0.0 s" and "tether, t = 150.0 s" in names
+    tx = values(teth["data"][0], "x")
+    assert tx[0] == 0.0 and tx[-1] == pytest.approx(x[0], abs=1e-6)
+    # tensions: winch tension = engine's at t = 0
+    ten = chart(at, "dyn_tension")
+    tw = values(trace(ten, view.SIGNALS["tension_winch"][0]), "y")
+    assert tw[0] == pytest.approx(row["tension_winch_N"], rel=1e-3)
+    # settling metrics after the gust
+    metrics = _df(at, "settling_5pct_s")
+    xc = metrics[metrics["signal"] == view.SIGNALS["x_C"][0]].iloc[0]
+    assert 0 < xc["settling_5pct_s"] < 130
+    assert {"dyn_snapshot", "dyn_hull"} <= {getattr(c, "key", None)
+                                           for c in at.get("plotly_chart")}
+    assert any(m.label == "Peak blow-by x_C [m]" and float(m.value) == pytest.approx(x.max(),
+               abs=0.05) for m in at.metric)
+
+
+def test_turbulence_statistics_table(dyn):
+    _set(dyn, "dyn_scenario", "turbulence")
+    dyn.run()
+    _set(dyn, "dyn_duration", 80.0)
+    _set(dyn, "dyn_int", "light")
+    at = _run(dyn)
+    stats = _df(at, "rms_fluctuation")
+    assert list(stats.columns) == ["signal", "unit", "mean", "rms_fluctuation",
+                                   "peak_excursion", "min", "max"]
+    w = stats[stats["signal"] == view.SIGNALS["wind_x"][0]].iloc[0]
+    assert w["mean"] == pytest.approx(10.0, abs=1.0)
+    assert 0.1 < w["rms_fluctuation"] < 1.5  # light: sigma_u ~ 0.78 m/s over a short record
+    assert w["peak_excursion"] >= w["rms_fluctuation"]
+    assert any("RMS fluctuation" in c.value and "t ≥ 20 s" in c.value for c in at.caption)
+
+
+def test_saved_case_is_simulated(dyn):
+    req = Requirement()
+    cfg = Configuration(hull=HullSpec(volume=150.0, fineness_ratio=3.5))
+    dyn.session_state["cases"] = {"small": inputs_to_dict(req, cfg)}
+    dyn.run()
+    _set(dyn, "dyn_source", "Case: small")
+    _set(dyn, "dyn_duration", 30.0)
+    at = _run(dyn)
+    row = next(r for r in design(req, cfg).performance.rows() if r["wind_speed_m_s"] == 10.0)
+    x = values(trace(chart(at, "dyn_position"), "blow-by x_C [m]"), "y")
+    assert x[0] == pytest.approx(row["blow_by_m"], abs=0.01)
+
+
+def test_bad_input_names_field_value_and_range(dyn):
+    _set(dyn, "dyn_speed", 45.0)
+    at = _run(dyn)
+    msg = " ".join(e.value for e in at.error)
+    assert "Mean wind at the aerostat = 45 m/s" in msg and "[0, 30] m/s" in msg
+    assert len(at.get("plotly_chart")) == 0
+
+
+def test_diverging_case_ends_with_a_message(dyn):
+    _set(dyn, "dyn_speed", 5.0)
+    _set(dyn, "dyn_gu", -15.0)
+    _set(dyn, "dyn_gl", 20.0)
+    at = _run(dyn)
+    msg = " ".join(e.value for e in at.error)
+    assert "stopped at t =" in msg and "relative wind reversed" in msg
+    assert "dyn_position" in [getattr(c, "key", None) for c in at.get("plotly_chart")]
+
+
+def test_modes_table(dyn):
+    _set(dyn, "dyn_modes", True)
+    _set(dyn, "dyn_duration", 20.0)
+    at = _run(dyn)
+    modes = _df(at, "period_s")
+    surge = modes[modes["mode"] == "surge"].iloc[0]
+    assert 10.0 < surge["period_s"] < 80.0 and surge["damping_ratio"] > 0
+
+
+def test_csv_of_the_time_histories():
+    form = dict(source=view.THESIS, scenario="steady", speed=8.0, duration=12.0, exponent=1 / 7,
+                roughness=0.03, body="hull", segments=10, damping=1.0, wall=60.0, unsteady=True,
+                profile="uniform")
+    out = view.run(view.build_request(form, None, {}))
+    lines = out["csv"].splitlines()
+    header = lines[0].split(",")
+    assert header[:3] == ["t_s", "x_C_m", "z_C_m"] and "theta_deg" in header
+    assert "tension_winch_N" in header and "wind_x_m_s" in header
+    assert len(lines) == 1 + 121
+    row = dict(zip(header, map(float, lines[-1].split(","))))
+    assert row["t_s"] == pytest.approx(12.0)
+    assert row["wind_x_m_s"] == pytest.approx(8.0)
+    assert math.isfinite(row["theta_deg"])
