@@ -274,6 +274,8 @@ def collect(res, req: Mapping[str, Any], d=None) -> dict:
         if res.system.is_hull:
             hx, hz = res.hull_outline(i)
             s["hull_x"], s["hull_z"] = hx.tolist(), hz.tolist()
+            rx, rz = res.rigging(i)
+            s["rig_x"], s["rig_z"] = rx.tolist(), rz.tolist()
         snaps.append(s)
     t_from = 0.0
     if req.get("scenario") == "turbulence":
@@ -401,6 +403,12 @@ def hull_zoom_figure(out: Mapping[str, Any], i: int) -> go.Figure:
     if "hull_x" in s:
         data.append(dict(type="scatter", mode="lines", x=s["hull_x"], y=s["hull_z"],
                          name="hull", fill="toself", line=dict(color=SECOND, width=1)))
+        data.append(_line(s["rig_x"], s["rig_z"], "confluence lines", "#7f7f7f", width=1))
+    xc, zc = s["x"][-1], s["z"][-1]
+    half = 20.0 if "hull_x" not in s else max(20.0, 1.3 * (max(s["hull_x"]) - min(s["hull_x"])))
     return _fig(data, f"Hull at t = {s['t']:.1f} s", "Downwind distance x [m]", "Height z [m]",
-                yaxis=dict(title=dict(text="Height z [m]"), scaleanchor="x", scaleratio=1),
+                xaxis=dict(title=dict(text="Downwind distance x [m]"),
+                           range=[xc - half, xc + half]),
+                yaxis=dict(title=dict(text="Height z [m]"), scaleanchor="x", scaleratio=1,
+                           range=[zc - 0.8 * half, zc + 0.8 * half]),
                 height=520)

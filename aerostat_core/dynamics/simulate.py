@@ -455,9 +455,29 @@ class SimulationResult:
         """Tether node positions (N+1, 2) [m] at sample ``i`` (winch first, top last)."""
         return self.system.nodes(self.y[i])[0]
 
+    def rigging(self, i: int):
+        """Confluence lines from C to the belly at 25 % of the length fore and aft of the CV
+        (drawing only: the bridle is rigid in the model), as (x, z) [m] with a NaN break."""
+        if not self.system.is_hull:
+            raise ValueError("a point aerostat has no rigging")
+        h = self.system.body
+        b = self.system.hull_index
+        xo, zo, th = self.y[i, b], self.y[i, b + 1], self.y[i, b + 2]
+        c, s = math.cos(th), math.sin(th)
+        xc, zc = h.confluence
+        ox, orad = h.outline
+        order = np.argsort(ox)
+        pts = []
+        for xb in (0.25 * h.length, -0.25 * h.length):
+            zb = float(np.interp(xb, ox[order], orad[order]))
+            pts.append((xo - c * xb - s * zb, zo + s * xb - c * zb))
+        cx, cz = xo - c * xc - s * zc, zo + s * xc - c * zc
+        x = np.array([pts[0][0], cx, pts[1][0]])
+        z = np.array([pts[0][1], cz, pts[1][1]])
+        return x, z
+
     def hull_outline(self, i: int):
-        """Hull outline (x, z) [m] in the earth frame at sample ``i`` (hull mode), with the
-        confluence lines drawn from C to the hull axis."""
+        """Hull outline (x, z) [m] in the earth frame at sample ``i`` (hull mode)."""
         if not self.system.is_hull:
             raise ValueError("a point aerostat has no outline")
         h = self.system.body
