@@ -218,22 +218,24 @@ class DesignBatch:
         g = self.constraints[i]
         out = []
         if not self.sizing_feasible[i]:
-            out.append({
-                "blow_by": f"no hull volume in [{VOLUME_MIN:g}, {VOLUME_MAX:g}] m3 meets the "
-                           f"blow-by limit {self.blow_by_limit[i]:.4g} m (best "
-                           f"{self.blow_by[i]:.1f} m)",
-                "free_lift": f"no hull volume up to {VOLUME_MAX:g} m3 has positive free lift",
-                "slack": "the tether goes slack at the design wind for every hull volume",
-            }.get(str(self.binding[i]), str(self.binding[i])))
+            out.append(
+                {
+                    "blow_by": f"no hull volume in [{VOLUME_MIN:g}, {VOLUME_MAX:g}] m3 meets the "
+                    f"blow-by limit {self.blow_by_limit[i]:.4g} m (best "
+                    f"{self.blow_by[i]:.1f} m)",
+                    "free_lift": f"no hull volume up to {VOLUME_MAX:g} m3 has positive free lift",
+                    "slack": "the tether goes slack at the design wind for every hull volume",
+                }.get(str(self.binding[i]), str(self.binding[i]))
+            )
         msgs = {
             "blow_by": f"blow-by {self.blow_by[i]:.2f} m exceeds the limit "
-                       f"{self.blow_by_limit[i]:.2f} m",
+            f"{self.blow_by_limit[i]:.2f} m",
             "stability": f"statically unstable trim (C_m_alpha = {self.cm_alpha[i]:+.3f} /rad)",
             "stall": f"equilibrium angle {self.alpha[i]:.1f} deg beyond fin stall "
-                     f"{self.stall_angle:g} deg",
+            f"{self.stall_angle:g} deg",
             "free_lift": f"free lift not positive ({self.free_lift[i]:.0f} N)",
             "safety_factor": f"tether safety factor {self.safety_factor[i]:.2f} below the "
-                             f"required {self.min_safety_factor:g}",
+            f"required {self.min_safety_factor:g}",
             "fins_on_hull": f"fin trailing edge at {self.fin_te_ratio[i]:.3f} l, behind the tail",
         }
         for k, name in enumerate(CONSTRAINTS):
@@ -328,14 +330,17 @@ def _constraint_matrix(out: dict, limit: np.ndarray, stall_deg: float, sf_min: f
     """
     # no stable trim at all: count as unstable whatever the local slope says
     stab = np.where(out["found"], out["cm_alpha"], np.abs(out["cm_alpha"]) + 1e-3)
-    return np.stack([
-        out["blow_by"] / limit - 1.0,
-        stab,
-        np.abs(out["alpha"]) / stall_deg - 1.0,
-        -out["free_lift"] / np.maximum(np.abs(out["buoyancy"]), 1e-9),
-        1.0 - out["safety_factor"] / sf_min,
-        out["fin_te_ratio"] - 1.0,
-    ], axis=-1)
+    return np.stack(
+        [
+            out["blow_by"] / limit - 1.0,
+            stab,
+            np.abs(out["alpha"]) / stall_deg - 1.0,
+            -out["free_lift"] / np.maximum(np.abs(out["buoyancy"]), 1e-9),
+            1.0 - out["safety_factor"] / sf_min,
+            out["fin_te_ratio"] - 1.0,
+        ],
+        axis=-1,
+    )
 
 
 def evaluate_designs(
@@ -388,13 +393,19 @@ def evaluate_designs(
         feasible_size = np.asarray(s.feasible, bool).reshape(-1)
         binding = np.asarray(s.binding).reshape(-1).astype(str)
         v_lo = v_hi * (1.0 - _SECANT_PROBE)
-        both = _outputs(req, cfg, np.concatenate([v_lo, v_hi]), np.tile(f, 2), np.tile(dsf, 2),
-                        np.tile(pos, 2))
+        both = _outputs(
+            req, cfg, np.concatenate([v_lo, v_hi]), np.tile(f, 2), np.tile(dsf, 2), np.tile(pos, 2)
+        )
         lo = {k: v[:n] for k, v in both.items()}
         hi = {k: v[n:] for k, v in both.items()}
         x_max = req.blow_by_limit
-        bracket = (feasible_size & (lo["blow_by"] > x_max) & (hi["blow_by"] <= x_max)
-                   & (lo["free_lift"] > 0) & ~lo["slack"])
+        bracket = (
+            feasible_size
+            & (lo["blow_by"] > x_max)
+            & (hi["blow_by"] <= x_max)
+            & (lo["free_lift"] > 0)
+            & ~lo["slack"]
+        )
         den = np.where(bracket, hi["blow_by"] - lo["blow_by"], -1.0)
         t = np.where(bracket, (x_max - lo["blow_by"]) / den, 1.0)
         t = np.clip(t, 0.0, 1.0)
@@ -418,17 +429,32 @@ def evaluate_designs(
         sized = False
     g = _constraint_matrix(out, lim, cfg.aero.fin_stall_angle_deg, req.min_tether_safety_factor)
     return DesignBatch(
-        fineness_ratio=f, area_change=dsf, position=pos, volume=vol, sized=sized,
-        sizing_feasible=feasible_size, binding=binding,
+        fineness_ratio=f,
+        area_change=dsf,
+        position=pos,
+        volume=vol,
+        sized=sized,
+        sizing_feasible=feasible_size,
+        binding=binding,
         total_mass=out["total_mass"],
         gas_cost=np.asarray(gas_fill_cost(vol, cfg.gas_price_value), float),
-        blow_by=out["blow_by"], alpha=out["alpha"], cm_alpha=out["cm_alpha"],
-        moment_slope=out["moment_slope"], dynamic_lift=out["dynamic_lift"], drag=out["drag"],
-        free_lift=out["free_lift"], buoyancy=out["buoyancy"],
-        safety_factor=out["safety_factor"], tension_top=out["tension_top"],
-        fin_te_ratio=out["fin_te_ratio"], length=out["length"], diameter=out["diameter"],
-        blow_by_limit=lim, stall_angle=float(cfg.aero.fin_stall_angle_deg),
-        min_safety_factor=float(req.min_tether_safety_factor), constraints=g,
+        blow_by=out["blow_by"],
+        alpha=out["alpha"],
+        cm_alpha=out["cm_alpha"],
+        moment_slope=out["moment_slope"],
+        dynamic_lift=out["dynamic_lift"],
+        drag=out["drag"],
+        free_lift=out["free_lift"],
+        buoyancy=out["buoyancy"],
+        safety_factor=out["safety_factor"],
+        tension_top=out["tension_top"],
+        fin_te_ratio=out["fin_te_ratio"],
+        length=out["length"],
+        diameter=out["diameter"],
+        blow_by_limit=lim,
+        stall_angle=float(cfg.aero.fin_stall_angle_deg),
+        min_safety_factor=float(req.min_tether_safety_factor),
+        constraints=g,
     )
 
 
@@ -469,9 +495,7 @@ def _check_bounds(bounds: Any) -> dict[str, tuple[float, float]]:
         if not (math.isfinite(lo) and math.isfinite(hi)):
             raise ValueError(f"bounds of {name} ({label}) must be finite, got ({lo:g}, {hi:g})")
         if lo > hi:
-            raise ValueError(
-                f"lower bound {lo:g}{u} > upper bound {hi:g}{u} for {name} ({label})"
-            )
+            raise ValueError(f"lower bound {lo:g}{u} > upper bound {hi:g}{u} for {name} ({label})")
         if lo == hi:
             raise ValueError(
                 f"bounds of {name} ({label}) are empty: lower = upper = {lo:g}{u}; to hold it "
@@ -521,9 +545,7 @@ class OptimisationProblem:
         if not isinstance(configuration, Configuration):
             raise ValueError("configuration must be a Configuration")
         if objective not in OBJECTIVES:
-            raise ValueError(
-                f"objective = {objective!r}: choose one of {', '.join(OBJECTIVES)}"
-            )
+            raise ValueError(f"objective = {objective!r}: choose one of {', '.join(OBJECTIVES)}")
         checked = _check_bounds(DEFAULT_BOUNDS if bounds is None else bounds)
         self.requirement = requirement
         self.configuration = configuration.with_design_variables(volume=None)
@@ -583,7 +605,10 @@ class OptimisationProblem:
         """Evaluate a batch of designs x (n, n_var) in physical units (one vectorised call)."""
         v = self.full_variables(x)
         return evaluate_designs(
-            self.requirement, self.configuration, v["fineness_ratio"], v["area_change"],
+            self.requirement,
+            self.configuration,
+            v["fineness_ratio"],
+            v["area_change"],
             v["position"],
         )
 
@@ -605,20 +630,29 @@ class OptimisationProblem:
         """Problem definition as (item, definition) rows for display."""
         req = self.requirement
         lab, unit = OBJECTIVES[self.objective]
-        rows = [{"item": "objective", "definition": f"minimise {lab.lower()} [{unit}] of the "
-                 "sized design"},
-                {"item": "volume", "definition": "V*(x): smallest hull meeting the blow-by limit "
-                 f"{req.blow_by_limit:g} m at {req.design_wind:g} m/s with positive free lift "
-                 "and a taut tether (nested sizing, not a design variable)"}]
+        rows = [
+            {
+                "item": "objective",
+                "definition": f"minimise {lab.lower()} [{unit}] of the sized design",
+            },
+            {
+                "item": "volume",
+                "definition": "V*(x): smallest hull meeting the blow-by limit "
+                f"{req.blow_by_limit:g} m at {req.design_wind:g} m/s with positive free lift "
+                "and a taut tether (nested sizing, not a design variable)",
+            },
+        ]
         for k in VARIABLES:
             label, u, _ = VARIABLE_INFO[k]
             if k in self.bounds:
                 lo, hi = self.bounds[k]
-                rows.append({"item": f"variable {k}", "definition":
-                             f"{label}: [{lo:g}, {hi:g}] {u}"})
+                rows.append(
+                    {"item": f"variable {k}", "definition": f"{label}: [{lo:g}, {hi:g}] {u}"}
+                )
             else:
-                rows.append({"item": f"fixed {k}", "definition":
-                             f"{label} = {self.fixed[k]:g} {u}"})
+                rows.append(
+                    {"item": f"fixed {k}", "definition": f"{label} = {self.fixed[k]:g} {u}"}
+                )
         for k in CONSTRAINTS:
             rows.append({"item": f"constraint {k}", "definition": CONSTRAINT_TEXT[k]})
         return rows
@@ -655,8 +689,11 @@ class FunctionBatch:
 
     def violations(self, i: int) -> list[str]:
         """Violated constraints of point ``i`` as text (``g[k] = value > 0``)."""
-        return [f"g[{k}] = {v:.3g} > 0" for k, v in enumerate(self.constraints[i])
-                if v > FEASIBILITY_TOL]
+        return [
+            f"g[{k}] = {v:.3g} > 0"
+            for k, v in enumerate(self.constraints[i])
+            if v > FEASIBILITY_TOL
+        ]
 
     def row(self, i: int) -> dict[str, Any]:
         """Point ``i`` as a flat dict (variables, objective, feasibility)."""
@@ -666,8 +703,7 @@ class FunctionBatch:
 
     def take(self, index) -> FunctionBatch:
         """Sub-batch selected by ``index``."""
-        return FunctionBatch(self.x[index], self.values[index], self.constraints[index],
-                             self.names)
+        return FunctionBatch(self.x[index], self.values[index], self.constraints[index], self.names)
 
 
 class FunctionProblem:
@@ -686,16 +722,22 @@ class FunctionProblem:
         Starting point (default: the centre of the box).
     """
 
-    def __init__(self, objective: Callable, constraints: Callable | None,
-                 bounds: Mapping[str, Sequence[float]], start=None) -> None:
+    def __init__(
+        self,
+        objective: Callable,
+        constraints: Callable | None,
+        bounds: Mapping[str, Sequence[float]],
+        start=None,
+    ) -> None:
         if not isinstance(bounds, Mapping) or len(bounds) == 0:
             raise ValueError("bounds are empty: give {name: (lower, upper)} for each variable")
         lo, hi = [], []
         for name, pair in bounds.items():
             a, b = (float(v) for v in pair)
             if not (math.isfinite(a) and math.isfinite(b)) or a >= b:
-                raise ValueError(f"bounds of {name} must be finite with lower < upper, got "
-                                 f"({a:g}, {b:g})")
+                raise ValueError(
+                    f"bounds of {name} must be finite with lower < upper, got ({a:g}, {b:g})"
+                )
             lo.append(a)
             hi.append(b)
         self.names = tuple(bounds)
@@ -703,8 +745,7 @@ class FunctionProblem:
         self._f = objective
         self._g = constraints
         self.objective = "value"
-        self._start = (0.5 * (self.lower + self.upper) if start is None
-                       else np.asarray(start, float))
+        self._start = 0.5 * (self.lower + self.upper) if start is None else np.asarray(start, float)
         self.n_constr = int(np.shape(self._constraints(self._start[None, :]))[1])
 
     @property
@@ -736,8 +777,9 @@ class FunctionProblem:
     def evaluate(self, x) -> FunctionBatch:
         """Evaluate a batch x (n, d)."""
         x = np.atleast_2d(np.asarray(x, float))
-        return FunctionBatch(x, np.asarray(self._f(x), float).reshape(-1), self._constraints(x),
-                             self.names)
+        return FunctionBatch(
+            x, np.asarray(self._f(x), float).reshape(-1), self._constraints(x), self.names
+        )
 
 
 # ------------------------------------------------------------------------------------------------
@@ -760,9 +802,15 @@ class History:
 
     def rows(self, solver: str = "") -> list[dict[str, Any]]:
         """History as rows (solver, evaluations, best objective, least violation)."""
-        return [{"solver": solver, "evaluations": int(e), "best_objective": float(b),
-                 "least_violation": float(v)}
-                for e, b, v in zip(self.evaluations, self.best, self.violation)]
+        return [
+            {
+                "solver": solver,
+                "evaluations": int(e),
+                "best_objective": float(b),
+                "least_violation": float(v),
+            }
+            for e, b, v in zip(self.evaluations, self.best, self.violation)
+        ]
 
 
 @dataclass(frozen=True)
@@ -871,16 +919,18 @@ class _Tracker:
         self.hist_v.append(self.viol)
         if self.progress is not None:
             best = f"{self.best:.3f}" if np.isfinite(self.best) else "none feasible yet"
-            self.progress(min(self.n / self.budget, 1.0),
-                          f"{self.label}: {self.n} evaluations, best {best}")
+            self.progress(
+                min(self.n / self.budget, 1.0), f"{self.label}: {self.n} evaluations, best {best}"
+            )
         if self.stop is not None and self.stop():
             raise OptimisationCancelled
         return b
 
     def history(self) -> History:
         """The :class:`History` recorded so far."""
-        return History(np.array(self.hist_e, int), np.array(self.hist_b, float),
-                       np.array(self.hist_v, float))
+        return History(
+            np.array(self.hist_e, int), np.array(self.hist_b, float), np.array(self.hist_v, float)
+        )
 
     def best_index(self) -> tuple[int, int] | None:
         """(batch, row) of the best feasible design, else of the least-violating one."""
@@ -906,10 +956,23 @@ class _Tracker:
         if where is None:
             nan = float("nan")
             return OptimisationResult(
-                solver, label, {k: nan for k in p.variables_dict(p.start())}, nan,
-                p.objective, {}, False,
-                "cancelled", message or "stopped before any evaluation", (), 0, 0,
-                time.perf_counter() - self.t0, seed, self.history(), settings)
+                solver,
+                label,
+                {k: nan for k in p.variables_dict(p.start())},
+                nan,
+                p.objective,
+                {},
+                False,
+                "cancelled",
+                message or "stopped before any evaluation",
+                (),
+                0,
+                0,
+                time.perf_counter() - self.t0,
+                seed,
+                self.history(),
+                settings,
+            )
         i, j = where
         b = self.batches[i].take(np.array([j]))
         xs = self.x[i][j]
@@ -924,15 +987,25 @@ class _Tracker:
         if not feas:
             status = "cancelled" if status == "cancelled" else "infeasible"
             why = "; ".join(b.violations(0)) or "constraint tolerance not met"
-            message = (f"no feasible design found; at the least-violating design: {why}"
-                       + (f" ({message})" if message else ""))
+            message = f"no feasible design found; at the least-violating design: {why}" + (
+                f" ({message})" if message else ""
+            )
         return OptimisationResult(
-            solver=solver, label=label,
+            solver=solver,
+            label=label,
             x=p.variables_dict(xs),
-            objective=float(b.objective(p.objective)[0]), objective_name=p.objective,
-            design=b.row(0), feasible=feas, status=status, message=message,
-            active=tuple(active), n_evaluations=int(self.n), n_batches=len(self.batches),
-            time_s=time.perf_counter() - self.t0, seed=int(seed), history=self.history(),
+            objective=float(b.objective(p.objective)[0]),
+            objective_name=p.objective,
+            design=b.row(0),
+            feasible=feas,
+            status=status,
+            message=message,
+            active=tuple(active),
+            n_evaluations=int(self.n),
+            n_batches=len(self.batches),
+            time_s=time.perf_counter() - self.t0,
+            seed=int(seed),
+            history=self.history(),
             settings=dict(settings),
         )
 
@@ -988,6 +1061,7 @@ def _run_lockstep(tasks: list[Callable], evaluate_requests: Callable) -> list[An
                 if state["abort"]:
                     raise _Aborted
                 return results.pop(i)
+
         return request
 
     def runner(i):
@@ -1081,15 +1155,21 @@ def _slsqp_task(u0, bounds, maxiter, ftol):
 
         cons = {"type": "ineq", "fun": lambda u: -get(u)[1], "jac": lambda u: -get(u)[3]}
         return minimize(
-            lambda u: get(u)[0], u0, jac=lambda u: get(u)[2], method="SLSQP", bounds=bounds,
-            constraints=[cons], options={"maxiter": maxiter, "ftol": ftol},
+            lambda u: get(u)[0],
+            u0,
+            jac=lambda u: get(u)[2],
+            method="SLSQP",
+            bounds=bounds,
+            constraints=[cons],
+            options={"maxiter": maxiter, "ftol": ftol},
         )
 
     return task
 
 
-def _stencil_evaluator(fn_eval: Callable, d: int, h: float, objective_of: Callable,
-                       scale: dict) -> Callable:
+def _stencil_evaluator(
+    fn_eval: Callable, d: int, h: float, objective_of: Callable, scale: dict
+) -> Callable:
     """Build ``evaluate_requests`` for :func:`_run_lockstep` from a batch evaluator: every
     request's point and its :func:`_stencil` go into one batch; the reply is (F, g, dF, dg).
 
@@ -1148,7 +1228,7 @@ def _start_points(problem: OptimisationProblem, n_starts: int, seed: int) -> np.
     if n_starts > 1:
         sampler = qmc.Halton(problem.n_var, scramble=True, seed=np.random.default_rng(seed))
         pts.extend(sampler.random(n_starts - 1))
-    return np.array(pts[:max(n_starts, 1)])
+    return np.array(pts[: max(n_starts, 1)])
 
 
 def solve_slsqp(
@@ -1218,7 +1298,11 @@ def solve_slsqp(
         return tr(pts)
 
     evaluate_requests = _stencil_evaluator(
-        fn_eval, d, fd_step, lambda b: b.objective(problem.objective), scale,
+        fn_eval,
+        d,
+        fd_step,
+        lambda b: b.objective(problem.objective),
+        scale,
     )
     bounds = [(0.0, 1.0)] * d
     tasks = [_slsqp_task(u0, bounds, int(maxiter), ftol) for u0 in starts]
@@ -1227,8 +1311,7 @@ def solve_slsqp(
     except OptimisationCancelled:
         return tr.result("slsqp", label, "cancelled", "cancelled by the user", seed, settings)
     except _BudgetExhausted:
-        return tr.result("slsqp", label, "budget", f"stopped after {cap} rounds", seed,
-                         settings)
+        return tr.result("slsqp", label, "budget", f"stopped after {cap} rounds", seed, settings)
     msgs = []
     n_iter_limit = 0
     for res in outcome:
@@ -1282,9 +1365,14 @@ def _surrogate_minimiser(rbf, u0: np.ndarray, d: int) -> np.ndarray | None:
 
     try:
         with np.errstate(all="ignore"):
-            res = minimize(lambda u: pred(u)[0], u0, method="SLSQP", bounds=[(0.0, 1.0)] * d,
-                           constraints=[{"type": "ineq", "fun": lambda u: -pred(u)[1:]}],
-                           options={"maxiter": 50, "ftol": 1e-10})
+            res = minimize(
+                lambda u: pred(u)[0],
+                u0,
+                method="SLSQP",
+                bounds=[(0.0, 1.0)] * d,
+                constraints=[{"type": "ineq", "fun": lambda u: -pred(u)[1:]}],
+                options={"maxiter": 50, "ftol": 1e-10},
+            )
     except (ValueError, np.linalg.LinAlgError):
         return None
     u = np.clip(res.x, 0.0, 1.0)
@@ -1367,8 +1455,13 @@ def solve_surrogate(
             f"surrogate settings: need n_initial >= {problem.n_var + 1}, batch_size >= 1 and "
             f"max_evaluations > n_initial (got {n_initial}, {batch_size}, {max_evaluations})"
         )
-    settings = {"max_evaluations": max_evaluations, "batch_size": batch_size,
-                "n_initial": n_initial, "sigma_init": sigma_init, "sigma_min": sigma_min}
+    settings = {
+        "max_evaluations": max_evaluations,
+        "batch_size": batch_size,
+        "n_initial": n_initial,
+        "sigma_init": sigma_init,
+        "sigma_min": sigma_min,
+    }
     d = problem.n_var
     rng = np.random.default_rng(seed)
     tr = _Tracker(problem, max_evaluations, progress, stop, "Surrogate")
@@ -1413,8 +1506,9 @@ def solve_surrogate(
             # best few evaluated designs and one random point; they lead the batch
             rank = np.lexsort((np.where(FEAS, F, viol), ~FEAS))
             starts = np.vstack([U[rank[:n_polish]], rng.random((1, d))])
-            polished = [q for q in (_surrogate_minimiser(rbf, s0, d) for s0 in starts)
-                        if q is not None]
+            polished = [
+                q for q in (_surrogate_minimiser(rbf, s0, d) for s0 in starts) if q is not None
+            ]
             n_lead = 0
             if polished:
                 pp = np.unique(np.round(np.array(polished), 9), axis=0)
@@ -1521,8 +1615,10 @@ def solve_pso(
 
     pop_size, max_generations = int(pop_size), int(max_generations)
     if pop_size < 2 or max_generations < 1:
-        raise ValueError(f"PSO settings: need pop_size >= 2 and max_generations >= 1 "
-                         f"(got {pop_size}, {max_generations})")
+        raise ValueError(
+            f"PSO settings: need pop_size >= 2 and max_generations >= 1 "
+            f"(got {pop_size}, {max_generations})"
+        )
     settings = {"pop_size": pop_size, "max_generations": max_generations, "margin": margin}
     d = problem.n_var
     tr = _Tracker(problem, pop_size * max_generations, progress, stop, "Particle swarm")
@@ -1530,8 +1626,13 @@ def solve_pso(
 
     class _Swarm(Problem):
         def __init__(self):
-            super().__init__(n_var=d, n_obj=1, n_ieq_constr=problem.n_constr,
-                             xl=np.full(d, -margin), xu=np.full(d, 1.0 + margin))
+            super().__init__(
+                n_var=d,
+                n_obj=1,
+                n_ieq_constr=problem.n_constr,
+                xl=np.full(d, -margin),
+                xu=np.full(d, 1.0 + margin),
+            )
 
         def _evaluate(self, X, out, *args, **kwargs):
             b = tr(np.clip(X, 0.0, 1.0))
@@ -1540,7 +1641,8 @@ def solve_pso(
 
     algorithm = PSO(pop_size=pop_size, adaptive=True)
     termination = DefaultSingleObjectiveTermination(
-        xtol=1e-6, cvtol=1e-8, ftol=1e-7, period=15, n_max_gen=max_generations)
+        xtol=1e-6, cvtol=1e-8, ftol=1e-7, period=15, n_max_gen=max_generations
+    )
     algorithm.setup(_Swarm(), termination=termination, seed=int(seed), verbose=False)
     try:
         while algorithm.has_next():
@@ -1625,8 +1727,10 @@ def compare_solvers(
     for k, name in enumerate(solvers):
         sub = None
         if progress is not None:
+
             def sub(frac, text, k=k):
                 progress((k + frac) / n, text)
+
         r = solve(problem, name, setting, seed, sub, stop)
         out.append(r)
         if r.status == "cancelled":
@@ -1648,23 +1752,25 @@ def comparison_rows(results: Sequence[OptimisationResult]) -> list[dict[str, Any
     rows = []
     for r in results:
         d = r.design
-        rows.append({
-            "solver": r.label,
-            "fineness_ratio": r.x["fineness_ratio"],
-            "area_change_pct": r.x["area_change"],
-            "position": r.x["position"],
-            "total_mass_kg": d.get("total_mass_kg", float("nan")),
-            "volume_m3": d.get("volume_m3", float("nan")),
-            "blow_by_m": d.get("blow_by_m", float("nan")),
-            "alpha_eq_deg": d.get("alpha_eq_deg", float("nan")),
-            "gas_cost_USD": d.get("gas_cost_USD", float("nan")),
-            "evaluations": r.n_evaluations,
-            "batches": r.n_batches,
-            "time_s": r.time_s,
-            "feasible": r.feasible,
-            "status": r.status,
-            "active": ", ".join(r.active),
-        })
+        rows.append(
+            {
+                "solver": r.label,
+                "fineness_ratio": r.x["fineness_ratio"],
+                "area_change_pct": r.x["area_change"],
+                "position": r.x["position"],
+                "total_mass_kg": d.get("total_mass_kg", float("nan")),
+                "volume_m3": d.get("volume_m3", float("nan")),
+                "blow_by_m": d.get("blow_by_m", float("nan")),
+                "alpha_eq_deg": d.get("alpha_eq_deg", float("nan")),
+                "gas_cost_USD": d.get("gas_cost_USD", float("nan")),
+                "evaluations": r.n_evaluations,
+                "batches": r.n_batches,
+                "time_s": r.time_s,
+                "feasible": r.feasible,
+                "status": r.status,
+                "active": ", ".join(r.active),
+            }
+        )
     return rows
 
 
@@ -1718,21 +1824,49 @@ def baseline_vs_optimum(
         ("Hull volume", "m3", base.volume, opt.volume),
         ("Total mass", "kg", base.total_mass, opt.total_mass),
         ("Gas fill cost", "USD", base.gas_cost, opt.gas_cost),
-        ("Fineness ratio", "-", base.configuration.hull.fineness_ratio,
-         opt.configuration.hull.fineness_ratio),
-        ("Fin-area change", "%", base.configuration.fins.area_change,
-         opt.configuration.fins.area_change),
+        (
+            "Fineness ratio",
+            "-",
+            base.configuration.hull.fineness_ratio,
+            opt.configuration.hull.fineness_ratio,
+        ),
+        (
+            "Fin-area change",
+            "%",
+            base.configuration.fins.area_change,
+            opt.configuration.fins.area_change,
+        ),
         ("Fin position", "-", base.configuration.fins.position, opt.configuration.fins.position),
-        ("Blow-by at design wind", "m", base.design_point["blow_by_m"],
-         opt.design_point["blow_by_m"]),
-        ("Equilibrium angle at design wind", "deg", base.design_point["alpha_eq_deg"],
-         opt.design_point["alpha_eq_deg"]),
-        ("Dynamic lift at design wind", "N", base.design_point["dynamic_lift_N"],
-         opt.design_point["dynamic_lift_N"]),
+        (
+            "Blow-by at design wind",
+            "m",
+            base.design_point["blow_by_m"],
+            opt.design_point["blow_by_m"],
+        ),
+        (
+            "Equilibrium angle at design wind",
+            "deg",
+            base.design_point["alpha_eq_deg"],
+            opt.design_point["alpha_eq_deg"],
+        ),
+        (
+            "Dynamic lift at design wind",
+            "N",
+            base.design_point["dynamic_lift_N"],
+            opt.design_point["dynamic_lift_N"],
+        ),
         ("Free lift", "kg", base.free_lift_kg, opt.free_lift_kg),
     ]
-    return [{"quantity": q, "unit": u, "baseline": float(b), "optimum": float(o),
-             "change": float(o) - float(b)} for q, u, b, o in items]
+    return [
+        {
+            "quantity": q,
+            "unit": u,
+            "baseline": float(b),
+            "optimum": float(o),
+            "change": float(o) - float(b),
+        }
+        for q, u, b, o in items
+    ]
 
 
 def thesis_comparison_rows(changes: Sequence[Mapping[str, Any]]) -> list[dict[str, Any]]:
@@ -1753,13 +1887,18 @@ def thesis_comparison_rows(changes: Sequence[Mapping[str, Any]]) -> list[dict[st
     for q, u, tb, to in spec:
         r = ours[q]
         tchange = -t["helium_cost_saved_USD"] if q == "Gas fill cost" else to - tb
-        rows.append({
-            "quantity": q, "unit": u,
-            "thesis_baseline": float("nan") if tb is None else tb,
-            "thesis_optimum": float("nan") if to is None else to,
-            "thesis_change": tchange,
-            "our_baseline": r["baseline"], "our_optimum": r["optimum"], "our_change": r["change"],
-        })
+        rows.append(
+            {
+                "quantity": q,
+                "unit": u,
+                "thesis_baseline": float("nan") if tb is None else tb,
+                "thesis_optimum": float("nan") if to is None else to,
+                "thesis_change": tchange,
+                "our_baseline": r["baseline"],
+                "our_optimum": r["optimum"],
+                "our_change": r["change"],
+            }
+        )
     return rows
 
 
@@ -1842,20 +1981,22 @@ class ParetoFront:
         """Points as rows with units in the keys (CSV/table)."""
         out = []
         for i in range(self.volume.size):
-            out.append({
-                "blow_by_limit_m": float(self.limits[i]),
-                "blow_by_m": float(self.blow_by[i]),
-                "total_mass_kg": float(self.total_mass[i]),
-                "volume_m3": float(self.volume[i]),
-                "gas_cost_USD": float(self.gas_cost[i]),
-                "fineness_ratio": float(self.fineness_ratio[i]),
-                "area_change_pct": float(self.area_change[i]),
-                "position": float(self.position[i]),
-                "alpha_eq_deg": float(self.alpha[i]),
-                "feasible": bool(self.feasible[i]),
-                "on_front": bool(self.nondominated[i]),
-                "reason": self.reason[i],
-            })
+            out.append(
+                {
+                    "blow_by_limit_m": float(self.limits[i]),
+                    "blow_by_m": float(self.blow_by[i]),
+                    "total_mass_kg": float(self.total_mass[i]),
+                    "volume_m3": float(self.volume[i]),
+                    "gas_cost_USD": float(self.gas_cost[i]),
+                    "fineness_ratio": float(self.fineness_ratio[i]),
+                    "area_change_pct": float(self.area_change[i]),
+                    "position": float(self.position[i]),
+                    "alpha_eq_deg": float(self.alpha[i]),
+                    "feasible": bool(self.feasible[i]),
+                    "on_front": bool(self.nondominated[i]),
+                    "reason": self.reason[i],
+                }
+            )
         return out
 
     def mass_at(self, limit: float) -> float:
@@ -1891,8 +2032,9 @@ def _check_limits(limits, altitude: float) -> np.ndarray:
     return np.unique(arr)
 
 
-def default_limits(req: Requirement, n_points: int = 13, low: float = 0.5,
-                   high: float = 2.5) -> np.ndarray:
+def default_limits(
+    req: Requirement, n_points: int = 13, low: float = 0.5, high: float = 2.5
+) -> np.ndarray:
     """Blow-by limits for the front: ``n_points`` from ``low`` to ``high`` x the requirement's
     limit, capped at the altitude, always including the requirement's own limit [m]."""
     lim = req.blow_by_limit
@@ -1983,8 +2125,7 @@ def pareto_front(
     xs = [problem.start()]
     for s in starts:
         xs.append(np.clip([float(s[k]) for k in problem.names], problem.lower, problem.upper))
-    xs_full = np.array([[problem.full_variables(x[None, :])[k][0] for k in VARIABLES]
-                        for x in xs])
+    xs_full = np.array([[problem.full_variables(x[None, :])[k][0] for k in VARIABLES] for x in xs])
     v0 = _volume_starts(req, cfg0, xs_full, eps)
     d = problem.n_var + 1
     tasks, owner_limit = [], []
@@ -2000,21 +2141,27 @@ def pareto_front(
     def fn_eval(pts, owners):
         x = problem.from_unit(pts[:, :-1])
         v = problem.full_variables(x)
-        b = evaluate_designs(req, cfg0, v["fineness_ratio"], v["area_change"], v["position"],
-                             volume=_volume_from_unit(pts[:, -1]),
-                             blow_by_limit=owner_limit[owners])
+        b = evaluate_designs(
+            req,
+            cfg0,
+            v["fineness_ratio"],
+            v["area_change"],
+            v["position"],
+            volume=_volume_from_unit(pts[:, -1]),
+            blow_by_limit=owner_limit[owners],
+        )
         counter["n"] += len(b)
         counter["rounds"] += 1
         if progress is not None:
-            progress(min(counter["n"] / budget, 0.99),
-                     f"Pareto front: {counter['n']} evaluations")
+            progress(min(counter["n"] / budget, 0.99), f"Pareto front: {counter['n']} evaluations")
         if stop is not None and stop():
             raise OptimisationCancelled
         return b
 
     scale: dict[str, float | None] = {"value": None}
-    evaluate_requests = _stencil_evaluator(fn_eval, d, fd_step,
-                                           lambda b: b.objective(objective), scale)
+    evaluate_requests = _stencil_evaluator(
+        fn_eval, d, fd_step, lambda b: b.objective(objective), scale
+    )
     outcome = _run_lockstep(tasks, evaluate_requests)
     finals = []
     for res in outcome:
@@ -2024,8 +2171,15 @@ def pareto_front(
     finals = np.array(finals)
     x = problem.from_unit(finals[:, :-1])
     v = problem.full_variables(x)
-    b = evaluate_designs(req, cfg0, v["fineness_ratio"], v["area_change"], v["position"],
-                         volume=_volume_from_unit(finals[:, -1]), blow_by_limit=owner_limit)
+    b = evaluate_designs(
+        req,
+        cfg0,
+        v["fineness_ratio"],
+        v["area_change"],
+        v["position"],
+        volume=_volume_from_unit(finals[:, -1]),
+        blow_by_limit=owner_limit,
+    )
     counter["n"] += len(b)
     n_s = len(xs)
     pick = []
@@ -2038,8 +2192,9 @@ def pareto_front(
         else:
             pick.append(int(idx[np.argmin(b.max_violation[idx])]))
     pb = b.take(np.array(pick))
-    return _front_from_batch("epsilon-constraint", objective, eps, pb, counter["n"],
-                             time.perf_counter() - t0)
+    return _front_from_batch(
+        "epsilon-constraint", objective, eps, pb, counter["n"], time.perf_counter() - t0
+    )
 
 
 def _front_from_batch(method, objective, limits, b: DesignBatch, n_eval, dt) -> ParetoFront:
@@ -2049,10 +2204,21 @@ def _front_from_batch(method, objective, limits, b: DesignBatch, n_eval, dt) -> 
     nd = nondominated_mask(np.where(feas, obj, np.nan), np.where(feas, b.blow_by, np.nan))
     reason = tuple("" if feas[i] else "; ".join(b.violations(i)) for i in range(len(b)))
     return ParetoFront(
-        method=method, objective_name=objective, limits=np.asarray(limits, float),
-        fineness_ratio=b.fineness_ratio, area_change=b.area_change, position=b.position,
-        volume=b.volume, total_mass=b.total_mass, gas_cost=b.gas_cost, blow_by=b.blow_by,
-        alpha=b.alpha, feasible=feas, reason=reason, nondominated=nd, n_evaluations=int(n_eval),
+        method=method,
+        objective_name=objective,
+        limits=np.asarray(limits, float),
+        fineness_ratio=b.fineness_ratio,
+        area_change=b.area_change,
+        position=b.position,
+        volume=b.volume,
+        total_mass=b.total_mass,
+        gas_cost=b.gas_cost,
+        blow_by=b.blow_by,
+        alpha=b.alpha,
+        feasible=feas,
+        reason=reason,
+        nondominated=nd,
+        n_evaluations=int(n_eval),
         time_s=float(dt),
     )
 
@@ -2100,8 +2266,10 @@ def pareto_nsga2(
 
     t0 = time.perf_counter()
     problem = OptimisationProblem(req, cfg, bounds, objective)
-    lo_bb, hi_bb = blow_by_range or (0.5 * req.blow_by_limit,
-                                     min(2.5 * req.blow_by_limit, req.altitude))
+    lo_bb, hi_bb = blow_by_range or (
+        0.5 * req.blow_by_limit,
+        min(2.5 * req.blow_by_limit, req.altitude),
+    )
     _check_limits([lo_bb, hi_bb], req.altitude)
     cfg0 = problem.configuration
     x0 = problem.start()
@@ -2114,32 +2282,52 @@ def pareto_nsga2(
 
     class _MO(Problem):
         def __init__(self):
-            super().__init__(n_var=d + 1, n_obj=2, n_ieq_constr=len(CONSTRAINTS),
-                             xl=np.append(np.zeros(d), s_lo), xu=np.append(np.ones(d), s_hi))
+            super().__init__(
+                n_var=d + 1,
+                n_obj=2,
+                n_ieq_constr=len(CONSTRAINTS),
+                xl=np.append(np.zeros(d), s_lo),
+                xu=np.append(np.ones(d), s_hi),
+            )
 
         def _evaluate(self, X, out, *args, **kwargs):
             x = problem.from_unit(X[:, :d])
             v = problem.full_variables(x)
-            b = evaluate_designs(req, cfg0, v["fineness_ratio"], v["area_change"],
-                                 v["position"], volume=_volume_from_unit(X[:, d]),
-                                 blow_by_limit=hi_bb)
+            b = evaluate_designs(
+                req,
+                cfg0,
+                v["fineness_ratio"],
+                v["area_change"],
+                v["position"],
+                volume=_volume_from_unit(X[:, d]),
+                blow_by_limit=hi_bb,
+            )
             count["n"] += len(b)
             out["F"] = np.column_stack([b.objective(objective), b.blow_by])
             out["G"] = b.constraints
 
-    res = pymoo_minimize(_MO(), NSGA2(pop_size=pop_size), ("n_gen", int(generations)),
-                         seed=int(seed), verbose=False)
+    res = pymoo_minimize(
+        _MO(), NSGA2(pop_size=pop_size), ("n_gen", int(generations)), seed=int(seed), verbose=False
+    )
     X = res.pop.get("X")
     x = problem.from_unit(X[:, :d])
     v = problem.full_variables(x)
-    b = evaluate_designs(req, cfg0, v["fineness_ratio"], v["area_change"], v["position"],
-                         volume=_volume_from_unit(X[:, d]), blow_by_limit=hi_bb)
+    b = evaluate_designs(
+        req,
+        cfg0,
+        v["fineness_ratio"],
+        v["area_change"],
+        v["position"],
+        volume=_volume_from_unit(X[:, d]),
+        blow_by_limit=hi_bb,
+    )
     keep = b.feasible & (b.blow_by >= lo_bb)
     b = b.take(np.nonzero(keep)[0])
     nd = nondominated_mask(b.objective(objective), b.blow_by)
     b = b.take(np.nonzero(nd)[0][np.argsort(b.blow_by[nd])])
-    return _front_from_batch("nsga2", objective, np.full(len(b), np.nan), b, count["n"],
-                             time.perf_counter() - t0)
+    return _front_from_batch(
+        "nsga2", objective, np.full(len(b), np.nan), b, count["n"], time.perf_counter() - t0
+    )
 
 
 # ------------------------------------------------------------------------------------------------
@@ -2176,13 +2364,18 @@ def performance_curves(req: Requirement, cfg: Configuration) -> dict[str, Any]:
     out = {"wind_speed": np.asarray(p.wind_speed, float)}
     for k in PERFORMANCE_CURVES:
         out[k] = np.asarray(getattr(p, k), float)
-    out.update(volume=float(d.volume), total_mass=float(d.total_mass),
-               feasible=bool(d.feasible), violations=list(d.violations))
+    out.update(
+        volume=float(d.volume),
+        total_mass=float(d.total_mass),
+        feasible=bool(d.feasible),
+        violations=list(d.violations),
+    )
     return out
 
 
-def performance_comparison_rows(baseline: Mapping[str, Any],
-                                optimum: Mapping[str, Any]) -> list[dict[str, Any]]:
+def performance_comparison_rows(
+    baseline: Mapping[str, Any], optimum: Mapping[str, Any]
+) -> list[dict[str, Any]]:
     """Baseline and optimum performance side by side, one row per wind speed (CSV/table).
 
     Parameters

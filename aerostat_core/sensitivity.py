@@ -51,9 +51,11 @@ def _check_points(n: Any, name: str = "n_points") -> int:
 
 def baseline_variables(cfg: Configuration) -> dict[str, float]:
     """The configuration's design variables {name: value} (f [-], Delta S_f [%], Delta l_f [-])."""
-    return {"fineness_ratio": float(cfg.hull.fineness_ratio),
-            "area_change": float(cfg.fins.area_change),
-            "position": float(cfg.fins.position)}
+    return {
+        "fineness_ratio": float(cfg.hull.fineness_ratio),
+        "area_change": float(cfg.fins.area_change),
+        "position": float(cfg.fins.position),
+    }
 
 
 def baseline_volume(req: Requirement, cfg: Configuration) -> float:
@@ -142,22 +144,24 @@ class SensitivityResult:
             m, vol = sw.designs.total_mass, sw.designs.volume
             feas = sw.designs.feasible
             label, unit, _ = VARIABLE_INFO[name]
-            rows.append({
-                "variable": name,
-                "label": label,
-                "unit": unit,
-                "baseline": self.baseline[name],
-                "low": float(sw.values[0]),
-                "high": float(sw.values[-1]),
-                "mass_at_low_kg": float(m[0]),
-                "mass_at_high_kg": float(m[-1]),
-                "mass_change_low_pct": float(100.0 * (m[0] / b["total_mass_kg"] - 1.0)),
-                "mass_change_high_pct": float(100.0 * (m[-1] / b["total_mass_kg"] - 1.0)),
-                "volume_change_low_pct": float(100.0 * (vol[0] / b["volume_m3"] - 1.0)),
-                "volume_change_high_pct": float(100.0 * (vol[-1] / b["volume_m3"] - 1.0)),
-                "feasible_from": float(sw.values[feas].min()) if feas.any() else float("nan"),
-                "feasible_to": float(sw.values[feas].max()) if feas.any() else float("nan"),
-            })
+            rows.append(
+                {
+                    "variable": name,
+                    "label": label,
+                    "unit": unit,
+                    "baseline": self.baseline[name],
+                    "low": float(sw.values[0]),
+                    "high": float(sw.values[-1]),
+                    "mass_at_low_kg": float(m[0]),
+                    "mass_at_high_kg": float(m[-1]),
+                    "mass_change_low_pct": float(100.0 * (m[0] / b["total_mass_kg"] - 1.0)),
+                    "mass_change_high_pct": float(100.0 * (m[-1] / b["total_mass_kg"] - 1.0)),
+                    "volume_change_low_pct": float(100.0 * (vol[0] / b["volume_m3"] - 1.0)),
+                    "volume_change_high_pct": float(100.0 * (vol[-1] / b["volume_m3"] - 1.0)),
+                    "feasible_from": float(sw.values[feas].min()) if feas.any() else float("nan"),
+                    "feasible_to": float(sw.values[feas].max()) if feas.any() else float("nan"),
+                }
+            )
         return rows
 
 
@@ -219,8 +223,13 @@ def one_at_a_time(
         sweeps[name] = Sweep(name, values[name], b.take(np.arange(start, start + m)))
         start += m
     return SensitivityResult(
-        baseline=x0, baseline_design=b.row(0), resize=bool(resize), volume_held=vol,
-        blow_by_limit=float(req.blow_by_limit), design_wind=float(req.design_wind), sweeps=sweeps,
+        baseline=x0,
+        baseline_design=b.row(0),
+        resize=bool(resize),
+        volume_held=vol,
+        blow_by_limit=float(req.blow_by_limit),
+        design_wind=float(req.design_wind),
+        sweeps=sweeps,
     )
 
 
@@ -263,13 +272,16 @@ class SensitivityMap:
         out = []
         for j, yv in enumerate(self.y):
             for i, xv in enumerate(self.x):
-                out.append({
-                    self.x_variable: float(xv), self.y_variable: float(yv),
-                    "total_mass_kg": float(self.total_mass[j, i]),
-                    "volume_m3": float(self.volume[j, i]),
-                    "blow_by_m": float(self.blow_by[j, i]),
-                    "feasible": bool(self.feasible[j, i]),
-                })
+                out.append(
+                    {
+                        self.x_variable: float(xv),
+                        self.y_variable: float(yv),
+                        "total_mass_kg": float(self.total_mass[j, i]),
+                        "volume_m3": float(self.volume[j, i]),
+                        "blow_by_m": float(self.blow_by[j, i]),
+                        "feasible": bool(self.feasible[j, i]),
+                    }
+                )
         return out
 
 
@@ -318,13 +330,21 @@ def two_variable_map(
     cols[x_variable] = X.ravel()
     cols[y_variable] = Y.ravel()
     vol = None if resize else baseline_volume(req, cfg)
-    b = _evaluate(req, cfg, cols["fineness_ratio"], cols["area_change"], cols["position"],
-                  volume=vol)
+    b = _evaluate(
+        req, cfg, cols["fineness_ratio"], cols["area_change"], cols["position"], volume=vol
+    )
     shape = X.shape
     return SensitivityMap(
-        x_variable=x_variable, y_variable=y_variable, x=xs, y=ys,
-        total_mass=b.total_mass.reshape(shape), volume=b.volume.reshape(shape),
-        blow_by=b.blow_by.reshape(shape), feasible=b.feasible.reshape(shape),
-        resize=bool(resize), volume_held=vol, blow_by_limit=float(req.blow_by_limit),
+        x_variable=x_variable,
+        y_variable=y_variable,
+        x=xs,
+        y=ys,
+        total_mass=b.total_mass.reshape(shape),
+        volume=b.volume.reshape(shape),
+        blow_by=b.blow_by.reshape(shape),
+        feasible=b.feasible.reshape(shape),
+        resize=bool(resize),
+        volume_held=vol,
+        blow_by_limit=float(req.blow_by_limit),
         baseline=x0,
     )

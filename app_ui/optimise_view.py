@@ -475,6 +475,7 @@ def sensitivity_figure(res: SensitivityResult) -> go.Figure:
         shared_xaxes="columns",
         vertical_spacing=0.035,
         horizontal_spacing=0.07,
+        column_titles=[var_label(n) for n in VARIABLES],
     )
     for c, name in enumerate(VARIABLES, start=1):
         sw = res.sweeps[name]
@@ -529,11 +530,15 @@ def sensitivity_figure(res: SensitivityResult) -> go.Figure:
     mode = (
         "hull re-sized at every point" if res.resize else f"hull held at {res.volume_held:.1f} m³"
     )
-    return _layout(
+    fig = _layout(
         fig,
         f"One factor at a time around the baseline ({mode}; outputs at {res.design_wind:g} m/s)",
-        height=1150,
+        height=1000,
     )
+    fig.update_layout(
+        legend=dict(orientation="h", y=1.06, x=1.0, xanchor="right"), margin=dict(t=110)
+    )
+    return fig
 
 
 def map_figure(m: SensitivityMap) -> go.Figure:
@@ -577,7 +582,7 @@ def map_figure(m: SensitivityMap) -> go.Figure:
                 y=Y[bad].tolist(),
                 mode="markers",
                 name="constraint violated",
-                marker=dict(symbol="x", size=6, color=LIMIT_COLOUR, opacity=0.6),
+                marker=dict(symbol="x", size=5, color=LIMIT_COLOUR, opacity=0.45),
             )
         )
     fig.add_trace(
@@ -619,7 +624,7 @@ def convergence_figure(results: Sequence[OptimisationResult]) -> go.Figure:
     if name is not None:
         lab, u = OBJECTIVES[name]
         label = f"Best feasible {lab.lower()} [{unit(u)}]"
-    fig.update_xaxes(title_text="Designs evaluated (each with its nested sizing)")
+    fig.update_xaxes(title_text="Designs evaluated (each with its nested sizing)", type="log")
     fig.update_yaxes(title_text=label or "Best objective")
     return _layout(fig, "Convergence", height=420)
 

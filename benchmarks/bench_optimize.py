@@ -48,25 +48,34 @@ def main() -> None:
     n = max(args.repeats, 1)
     req, cfg = thesis_baseline()
     problem = OptimisationProblem(req, cfg)
-    print(f"machine: {platform.machine()}, {os.cpu_count()} cores, "
-          f"Python {platform.python_version()}; thesis preset, blow-by limit "
-          f"{req.blow_by_limit:g} m at {req.design_wind:g} m/s")
+    print(
+        f"machine: {platform.machine()}, {os.cpu_count()} cores, "
+        f"Python {platform.python_version()}; thesis preset, blow-by limit "
+        f"{req.blow_by_limit:g} m at {req.design_wind:g} m/s"
+    )
     targets = {"slsqp": 1.0, "surrogate": 3.0, "pso": 5.0}
     for setting in ("normal", "quick"):
         results = []
         for name in ("slsqp", "surrogate", "pso"):
             t, r = median_time(
-                lambda name=name, setting=setting: solve(problem, name, setting, seed=0), n)
+                lambda name=name, setting=setting: solve(problem, name, setting, seed=0), n
+            )
             results.append(r)
             tgt = f" (target <= {targets[name]:g} s)" if setting == "normal" else ""
-            print(f"{setting:6s} {r.label:24s} median {t:6.2f} s{tgt}; {r.n_evaluations:5d} "
-                  f"evaluations in {r.n_batches:3d} batches; mass {r.objective:.3f} kg, "
-                  f"V {r.design['volume_m3']:.1f} m3")
-        print(f"{setting:6s} spread of the optimum mass between solvers: "
-              f"{100 * agreement(results):.3f} % (must be < 1 %)")
+            print(
+                f"{setting:6s} {r.label:24s} median {t:6.2f} s{tgt}; {r.n_evaluations:5d} "
+                f"evaluations in {r.n_batches:3d} batches; mass {r.objective:.3f} kg, "
+                f"V {r.design['volume_m3']:.1f} m3"
+            )
+        print(
+            f"{setting:6s} spread of the optimum mass between solvers: "
+            f"{100 * agreement(results):.3f} % (must be < 1 %)"
+        )
     t, pf = median_time(lambda: pareto_front(req, cfg), n)
-    print(f"Pareto front, {pf.limits.size} limits (epsilon-constraint): median {t:.2f} s, "
-          f"{pf.n_evaluations} evaluations")
+    print(
+        f"Pareto front, {pf.limits.size} limits (epsilon-constraint): median {t:.2f} s, "
+        f"{pf.n_evaluations} evaluations"
+    )
     t, _ = median_time(lambda: two_variable_map(req, cfg, n=20, resize=False), n)
     print(f"20 x 20 sensitivity map, volume held:  median {t:.3f} s (target <= 2 s)")
     t, _ = median_time(lambda: two_variable_map(req, cfg, n=20, resize=True), n)

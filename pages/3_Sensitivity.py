@@ -18,10 +18,12 @@ st.caption(
 )
 
 inputs_json, req, cfg = view.load_inputs()
-base = {"fineness_ratio": cfg.hull.fineness_ratio, "area_change": cfg.fins.area_change,
-        "position": cfg.fins.position}
-vol_txt = (f"given volume {cfg.hull.volume:g} m³" if cfg.hull.volume is not None
-           else "volume sized")
+base = {
+    "fineness_ratio": cfg.hull.fineness_ratio,
+    "area_change": cfg.fins.area_change,
+    "position": cfg.fins.position,
+}
+vol_txt = f"given volume {cfg.hull.volume:g} m³" if cfg.hull.volume is not None else "volume sized"
 st.markdown(
     f"**Baseline:** f = {base['fineness_ratio']:g}, ΔS_f = {base['area_change']:g} %, "
     f"Δl_f = {base['position']:g}, {vol_txt}; payload {req.payload_mass:g} kg at "
@@ -35,31 +37,68 @@ VOLUME_MODES = {
 
 with st.form("sens_form"):
     c = st.columns([1, 2, 2])
-    level = c[0].radio("Resolution", list(view.SENS_RESOLUTION), index=1, key="sens_level",
-                       persist_state="session",
-                       help="Quick: 7 points per sweep, 10 × 10 map. Normal: 15 points, 20 × 20.")
-    sweep_mode = c[1].radio("Hull volume in the sweeps", list(VOLUME_MODES), key="sens_sweep_mode",
-                            format_func=VOLUME_MODES.get, persist_state="session")
-    map_mode = c[2].radio("Hull volume in the map", list(VOLUME_MODES), index=1,
-                          key="sens_map_mode", format_func=VOLUME_MODES.get,
-                          persist_state="session",
-                          help="Held: mass and blow-by of the baseline hull, with the blow-by "
-                               "limit as a contour (the feasible side is the design space). "
-                               "Re-sized: mass of the smallest feasible hull.")
+    level = c[0].radio(
+        "Resolution",
+        list(view.SENS_RESOLUTION),
+        index=1,
+        key="sens_level",
+        persist_state="session",
+        help="Quick: 7 points per sweep, 10 × 10 map. Normal: 15 points, 20 × 20.",
+    )
+    sweep_mode = c[1].radio(
+        "Hull volume in the sweeps",
+        list(VOLUME_MODES),
+        key="sens_sweep_mode",
+        format_func=VOLUME_MODES.get,
+        persist_state="session",
+    )
+    map_mode = c[2].radio(
+        "Hull volume in the map",
+        list(VOLUME_MODES),
+        index=1,
+        key="sens_map_mode",
+        format_func=VOLUME_MODES.get,
+        persist_state="session",
+        help="Held: mass and blow-by of the baseline hull, with the blow-by "
+        "limit as a contour (the feasible side is the design space). "
+        "Re-sized: mass of the smallest feasible hull.",
+    )
     m = st.columns(2)
-    x_var = m[0].selectbox("Map: horizontal variable", VARIABLES, index=0, key="sens_x",
-                           format_func=view.var_label, persist_state="session")
-    y_var = m[1].selectbox("Map: vertical variable", VARIABLES, index=1, key="sens_y",
-                           format_func=view.var_label, persist_state="session")
+    x_var = m[0].selectbox(
+        "Map: horizontal variable",
+        VARIABLES,
+        index=0,
+        key="sens_x",
+        format_func=view.var_label,
+        persist_state="session",
+    )
+    y_var = m[1].selectbox(
+        "Map: vertical variable",
+        VARIABLES,
+        index=1,
+        key="sens_y",
+        format_func=view.var_label,
+        persist_state="session",
+    )
     st.markdown("**Ranges**")
     ranges = {}
     for name in VARIABLES:
         lo, hi = DEFAULT_BOUNDS[name]
         r = st.columns(2)
-        lo_v = r[0].number_input(f"{view.var_label(name)} – from", value=float(lo),
-                                 key=f"sens_lo_{name}", format="%.3f", persist_state="session")
-        hi_v = r[1].number_input(f"{view.var_label(name)} – to", value=float(hi),
-                                 key=f"sens_hi_{name}", format="%.3f", persist_state="session")
+        lo_v = r[0].number_input(
+            f"{view.var_label(name)} – from",
+            value=float(lo),
+            key=f"sens_lo_{name}",
+            format="%.3f",
+            persist_state="session",
+        )
+        hi_v = r[1].number_input(
+            f"{view.var_label(name)} – to",
+            value=float(hi),
+            key=f"sens_hi_{name}",
+            format="%.3f",
+            persist_state="session",
+        )
         ranges[name] = (lo_v, hi_v)
     st.form_submit_button("Update", type="primary", key="sens_run", icon=":material/refresh:")
 
@@ -73,40 +112,72 @@ except ValueError as exc:
     st.error(f"Cannot compute the sweeps: {exc}", icon=":material/error:")
 else:
     if sweep_mode == "resize":
-        st.caption("The blow-by equals the limit wherever the sizing succeeds: the limit is what "
-                   "sets the volume. Red crosses break another constraint (hover for which).")
+        st.caption(
+            "The blow-by equals the limit wherever the sizing succeeds: the limit is what "
+            "sets the volume. Red crosses break another constraint (hover for which)."
+        )
     st.plotly_chart(view.sensitivity_figure(res), key="sens_ofat")
     st.markdown("**Mass and volume change over each range** (relative to the baseline)")
-    st.dataframe(view.summary_frame(res), hide_index=True, key="sens_summary",
-                 column_config={c: st.column_config.NumberColumn(format="%.2f")
-                                for c in view.summary_frame(res).columns[1:]})
+    st.dataframe(
+        view.summary_frame(res),
+        hide_index=True,
+        key="sens_summary",
+        column_config={
+            c: st.column_config.NumberColumn(format="%.2f")
+            for c in view.summary_frame(res).columns[1:]
+        },
+    )
     with st.expander("All sweep points"):
         st.dataframe(view.sweep_frame(res), hide_index=True, key="sens_points")
     c1, c2 = st.columns(2)
-    c1.download_button("Sweeps (CSV)", view.csv_of(res.rows()), file_name="sensitivity-sweeps.csv",
-                       mime="text/csv", on_click="ignore", icon=":material/download:",
-                       key="dl_sens_sweeps")
-    c2.download_button("Range summary (CSV)", view.csv_of(res.summary_rows()),
-                       file_name="sensitivity-summary.csv", mime="text/csv", on_click="ignore",
-                       icon=":material/download:", key="dl_sens_summary")
+    c1.download_button(
+        "Sweeps (CSV)",
+        view.csv_of(res.rows()),
+        file_name="sensitivity-sweeps.csv",
+        mime="text/csv",
+        on_click="ignore",
+        icon=":material/download:",
+        key="dl_sens_sweeps",
+    )
+    c2.download_button(
+        "Range summary (CSV)",
+        view.csv_of(res.summary_rows()),
+        file_name="sensitivity-summary.csv",
+        mime="text/csv",
+        on_click="ignore",
+        icon=":material/download:",
+        key="dl_sens_summary",
+    )
 
 st.subheader("Two variables at once", anchor=False)
 if x_var == y_var:
-    st.error(f"Map: choose two different variables (both are {VARIABLE_INFO[x_var][0]}).",
-             icon=":material/error:")
+    st.error(
+        f"Map: choose two different variables (both are {VARIABLE_INFO[x_var][0]}).",
+        icon=":material/error:",
+    )
 else:
     try:
-        smap = view.cached_map(inputs_json, x_var, y_var, ranges_json, n_map,
-                               map_mode == "resize")
+        smap = view.cached_map(inputs_json, x_var, y_var, ranges_json, n_map, map_mode == "resize")
     except ValueError as exc:
         st.error(f"Cannot compute the map: {exc}", icon=":material/error:")
     else:
         held = [k for k in VARIABLES if k not in (x_var, y_var)][0]
-        st.caption(f"{VARIABLE_INFO[held][0]} held at {base[held]:g}. "
-                   + ("Red line: blow-by = limit; designs beyond it (crosses) break the limit "
-                      "or another constraint." if map_mode == "held" else
-                      "Crosses: no feasible hull or another constraint broken."))
+        st.caption(
+            f"{VARIABLE_INFO[held][0]} held at {base[held]:g}. "
+            + (
+                "Red line: blow-by = limit; designs beyond it (crosses) break the limit "
+                "or another constraint."
+                if map_mode == "held"
+                else "Crosses: no feasible hull or another constraint broken."
+            )
+        )
         st.plotly_chart(view.map_figure(smap), key="sens_map")
-        st.download_button("Map (CSV)", view.csv_of(smap.rows()), file_name="sensitivity-map.csv",
-                           mime="text/csv", on_click="ignore", icon=":material/download:",
-                           key="dl_sens_map")
+        st.download_button(
+            "Map (CSV)",
+            view.csv_of(smap.rows()),
+            file_name="sensitivity-map.csv",
+            mime="text/csv",
+            on_click="ignore",
+            icon=":material/download:",
+            key="dl_sens_map",
+        )

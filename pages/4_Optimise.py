@@ -21,9 +21,11 @@ inputs_json, req, cfg = view.load_inputs()
 
 with st.expander("Problem definition", icon=":material/functions:"):
     st.dataframe(pd.DataFrame(view.problem_rows(req, cfg)), hide_index=True, key="opt_problem")
-    st.caption("Every constraint is g(x) ≤ 0 on the sized design at the design wind. Default "
-               "bounds: methods.md G6, with the fin area also allowed to shrink to −50 % (the "
-               "statistical fin size is a starting point, not a floor).")
+    st.caption(
+        "Every constraint is g(x) ≤ 0 on the sized design at the design wind. Default "
+        "bounds: methods.md G6, with the fin area also allowed to shrink to −50 % (the "
+        "statistical fin size is a starting point, not a floor)."
+    )
 
 # The limit box follows the design inputs unless the user edits it here.
 if st.session_state.get("_opt_limit_src") != req.blow_by_limit:
@@ -32,52 +34,111 @@ if st.session_state.get("_opt_limit_src") != req.blow_by_limit:
 
 with st.form("opt_form"):
     c = st.columns(4)
-    objective = c[0].radio("Objective", list(OBJECTIVES), key="opt_objective",
-                           format_func=lambda k: f"{OBJECTIVES[k][0]} [{view.unit(OBJECTIVES[k][1])}]",
-                           persist_state="session")
-    level = c[1].radio("Run setting", list(view.RUN_LEVELS), index=1, key="opt_level",
-                       horizontal=True, persist_state="session",
-                       help="Quick: fewer starts, evaluations and generations (seconds). "
-                            "Normal: the settings of the comparison table.")
-    seed = c[2].number_input("Random seed [-]", value=0, step=1, key="opt_seed",
-                             persist_state="session",
-                             help="Seeds the starts, the surrogate sample and the swarm: the "
-                                  "same seed gives the same result.")
+    objective = c[0].radio(
+        "Objective",
+        list(OBJECTIVES),
+        key="opt_objective",
+        format_func=lambda k: f"{OBJECTIVES[k][0]} [{view.unit(OBJECTIVES[k][1])}]",
+        persist_state="session",
+    )
+    level = c[1].radio(
+        "Run setting",
+        list(view.RUN_LEVELS),
+        index=1,
+        key="opt_level",
+        horizontal=True,
+        persist_state="session",
+        help="Quick: fewer starts, evaluations and generations (seconds). "
+        "Normal: the settings of the comparison table.",
+    )
+    seed = c[2].number_input(
+        "Random seed [-]",
+        value=0,
+        step=1,
+        key="opt_seed",
+        persist_state="session",
+        help="Seeds the starts, the surrogate sample and the swarm: the "
+        "same seed gives the same result.",
+    )
     limit = c[3].number_input(
-        "Blow-by limit [m]", step=1.0, format="%.1f", key="opt_limit",
+        "Blow-by limit [m]",
+        step=1.0,
+        format="%.1f",
+        key="opt_limit",
         help=f"At the design wind {req.design_wind:g} m/s. Taken from the design inputs; "
-             "change it here to explore (the Pareto front shows the whole range).")
-    solvers = st.multiselect("Solvers", list(SOLVERS), default=list(SOLVERS), key="opt_solvers",
-                             format_func=lambda k: SOLVERS[k][0], persist_state="session")
+        "change it here to explore (the Pareto front shows the whole range).",
+    )
+    solvers = st.multiselect(
+        "Solvers",
+        list(SOLVERS),
+        default=list(SOLVERS),
+        key="opt_solvers",
+        format_func=lambda k: SOLVERS[k][0],
+        persist_state="session",
+    )
     st.markdown("**Bounds of the design variables**")
     bounds = {}
     for name in VARIABLES:
         lo, hi = DEFAULT_BOUNDS[name]
         b = st.columns(2)
-        lo_v = b[0].number_input(f"{view.var_label(name)} – lower", value=float(lo),
-                                 key=f"opt_lo_{name}", format="%.3f", persist_state="session")
-        hi_v = b[1].number_input(f"{view.var_label(name)} – upper", value=float(hi),
-                                 key=f"opt_hi_{name}", format="%.3f", persist_state="session")
+        lo_v = b[0].number_input(
+            f"{view.var_label(name)} – lower",
+            value=float(lo),
+            key=f"opt_lo_{name}",
+            format="%.3f",
+            persist_state="session",
+        )
+        hi_v = b[1].number_input(
+            f"{view.var_label(name)} – upper",
+            value=float(hi),
+            key=f"opt_hi_{name}",
+            format="%.3f",
+            persist_state="session",
+        )
         bounds[name] = (lo_v, hi_v)
     st.markdown("**Trade-off curve**")
     p = st.columns(4)
-    pareto = p[0].checkbox("Compute the Pareto front", value=True, key="opt_pareto_on",
-                           persist_state="session")
-    n_pts = p[1].number_input("Points [-]", value=11, step=1, key="opt_pareto_n",
-                              persist_state="session")
-    low = p[2].number_input("Lowest limit [× limit]", value=0.6, step=0.1, format="%.2f",
-                            key="opt_pareto_low", persist_state="session")
-    high = p[3].number_input("Highest limit [× limit]", value=2.0, step=0.1, format="%.2f",
-                             key="opt_pareto_high", persist_state="session")
-    submitted = st.form_submit_button("Run optimisation", type="primary", key="opt_run",
-                                      icon=":material/play_arrow:")
+    pareto = p[0].checkbox(
+        "Compute the Pareto front", value=True, key="opt_pareto_on", persist_state="session"
+    )
+    n_pts = p[1].number_input(
+        "Points [-]", value=11, step=1, key="opt_pareto_n", persist_state="session"
+    )
+    low = p[2].number_input(
+        "Lowest limit [× limit]",
+        value=0.6,
+        step=0.1,
+        format="%.2f",
+        key="opt_pareto_low",
+        persist_state="session",
+    )
+    high = p[3].number_input(
+        "Highest limit [× limit]",
+        value=2.0,
+        step=0.1,
+        format="%.2f",
+        key="opt_pareto_high",
+        persist_state="session",
+    )
+    submitted = st.form_submit_button(
+        "Run optimisation", type="primary", key="opt_run", icon=":material/play_arrow:"
+    )
 
 if submitted:
     try:
         request = view.build_request(
-            inputs_json, limit=limit, bounds=bounds, objective=objective,
-            level=view.RUN_LEVELS[level], seed=int(seed), solvers=solvers, pareto=pareto,
-            pareto_points=int(n_pts), pareto_low=float(low), pareto_high=float(high))
+            inputs_json,
+            limit=limit,
+            bounds=bounds,
+            objective=objective,
+            level=view.RUN_LEVELS[level],
+            seed=int(seed),
+            solvers=solvers,
+            pareto=pareto,
+            pareto_points=int(n_pts),
+            pareto_low=float(low),
+            pareto_high=float(high),
+        )
     except ValueError as exc:
         st.error(f"Cannot run: {exc}", icon=":material/error:")
     else:
@@ -86,7 +147,9 @@ if submitted:
 view.run_job()
 job = view.current_job()
 if job is None:
-    st.info("Set the bounds and press **Run optimisation** (Quick takes a few seconds).",
-            icon=":material/info:")
+    st.info(
+        "Set the bounds and press **Run optimisation** (Quick takes a few seconds).",
+        icon=":material/info:",
+    )
 else:
     view.render_results(job, inputs_json)

@@ -59,7 +59,8 @@ def test_sensitivity_sweeps_plot_the_engine_values(sens):
     df = table(sens, "Variable")
     assert list(df["Low"]) == [DEFAULT_BOUNDS[k][0] for k in VARIABLES]
     assert df["Mass change at high [%]"].iloc[1] == pytest.approx(
-        res.summary_rows()[1]["mass_change_high_pct"])
+        res.summary_rows()[1]["mass_change_high_pct"]
+    )
 
 
 def test_sensitivity_map_is_the_held_volume_map_with_the_limit_contour(sens):
@@ -91,11 +92,16 @@ def test_sensitivity_held_sweep_and_other_map(sens):
     assert not _traces(mfig, "blow-by = limit")
 
 
-@pytest.mark.parametrize("changes, words", [
-    ({"sens_lo_fineness_ratio": 4.0, "sens_hi_fineness_ratio": 3.0},
-     ["lower bound 4", "fineness_ratio"]),
-    ({"sens_hi_position": 0.99}, ["position", "valid range [0.4, 0.95]"]),
-])
+@pytest.mark.parametrize(
+    "changes, words",
+    [
+        (
+            {"sens_lo_fineness_ratio": 4.0, "sens_hi_fineness_ratio": 3.0},
+            ["lower bound 4", "fineness_ratio"],
+        ),
+        ({"sens_hi_position": 0.99}, ["position", "valid range [0.4, 0.95]"]),
+    ],
+)
 def test_sensitivity_bad_range_names_the_field(sens, changes, words):
     for k, v in changes.items():
         _set(sens, k, v)
@@ -179,13 +185,18 @@ def test_save_optimum_as_case(ran):
     assert any("Saved case" in s for s in messages(ran, "success"))
 
 
-@pytest.mark.parametrize("changes, words", [
-    ({"opt_lo_fineness_ratio": 4.5, "opt_hi_fineness_ratio": 2.5},
-     ["lower bound 4.5", "upper bound 2.5", "fineness_ratio"]),
-    ({"opt_lo_area_change": 20.0, "opt_hi_area_change": 20.0}, ["empty", "area_change"]),
-    ({"opt_limit": 400.0}, ["Blow-by limit", "blow_by_limit", "400"]),
-    ({"opt_solvers": []}, ["choose at least one solver"]),
-])
+@pytest.mark.parametrize(
+    "changes, words",
+    [
+        (
+            {"opt_lo_fineness_ratio": 4.5, "opt_hi_fineness_ratio": 2.5},
+            ["lower bound 4.5", "upper bound 2.5", "fineness_ratio"],
+        ),
+        ({"opt_lo_area_change": 20.0, "opt_hi_area_change": 20.0}, ["empty", "area_change"]),
+        ({"opt_limit": 400.0}, ["Blow-by limit", "blow_by_limit", "400"]),
+        ({"opt_solvers": []}, ["choose at least one solver"]),
+    ],
+)
 def test_optimise_bad_request_names_the_cause(opt, changes, words):
     for k, v in changes.items():
         _set(opt, k, v)
@@ -211,18 +222,27 @@ def test_optimise_infeasible_limit_says_which_constraint_binds(opt):
 def test_cancelled_run_keeps_finished_tasks(opt):
     from app_ui import optimise_view as view
 
-    inputs = json.dumps(inputs_to_dict(*thesis_baseline()), sort_keys=True,
-                        separators=(",", ":"))
+    inputs = json.dumps(inputs_to_dict(*thesis_baseline()), sort_keys=True, separators=(",", ":"))
     request = view.build_request(
-        inputs, limit=thesis_baseline()[0].blow_by_limit, bounds=DEFAULT_BOUNDS,
-        objective="total_mass", level="quick", seed=0, solvers=["slsqp", "pso"], pareto=True,
-        pareto_points=5, pareto_low=0.8, pareto_high=1.5)
+        inputs,
+        limit=thesis_baseline()[0].blow_by_limit,
+        bounds=DEFAULT_BOUNDS,
+        objective="total_mass",
+        level="quick",
+        seed=0,
+        solvers=["slsqp", "pso"],
+        pareto=True,
+        pareto_points=5,
+        pareto_low=0.8,
+        pareto_high=1.5,
+    )
     state = {}
     view.start_job(request, state)
     job = state[view.JOB_KEY]
     assert job["tasks"] == ["slsqp", "pso", "pareto"]
-    job["done"]["slsqp"] = view.cached_solve(request["inputs"], request["bounds"],
-                                             "total_mass", "slsqp", "quick", 0)
+    job["done"]["slsqp"] = view.cached_solve(
+        request["inputs"], request["bounds"], "total_mass", "slsqp", "quick", 0
+    )
     job["cancelled"] = True
     opt.session_state[view.JOB_KEY] = job
     opt.run()

@@ -48,9 +48,11 @@ SOLVER_FUNCS = (solve_slsqp, solve_surrogate, solve_pso)
 
 def circle_problem() -> tuple[FunctionProblem, np.ndarray, float]:
     """min (x-2)^2 + (y-1)^2 s.t. x^2 + y^2 <= 1: optimum (2, 1)/sqrt(5), f = (sqrt(5)-1)^2."""
-    p = FunctionProblem(lambda X: (X[:, 0] - 2) ** 2 + (X[:, 1] - 1) ** 2,
-                        lambda X: (X[:, 0] ** 2 + X[:, 1] ** 2 - 1.0)[:, None],
-                        {"x": (-2.0, 3.0), "y": (-2.0, 3.0)})
+    p = FunctionProblem(
+        lambda X: (X[:, 0] - 2) ** 2 + (X[:, 1] - 1) ** 2,
+        lambda X: (X[:, 0] ** 2 + X[:, 1] ** 2 - 1.0)[:, None],
+        {"x": (-2.0, 3.0), "y": (-2.0, 3.0)},
+    )
     return p, np.array([2.0, 1.0]) / np.sqrt(5.0), (np.sqrt(5.0) - 1.0) ** 2
 
 
@@ -60,24 +62,32 @@ def box_problem() -> tuple[FunctionProblem, np.ndarray, float]:
     p = FunctionProblem(
         lambda X: (X[:, 0] - 0.3) ** 2 + (X[:, 1] - 0.6) ** 2 + (X[:, 2] + 0.5) ** 2,
         lambda X: (X[:, 0] + X[:, 1] - 0.7)[:, None],
-        {"a": (0.0, 1.0), "b": (0.0, 1.0), "c": (0.0, 1.0)})
+        {"a": (0.0, 1.0), "b": (0.0, 1.0), "c": (0.0, 1.0)},
+    )
     return p, np.array([0.2, 0.5, 0.0]), 0.27
 
 
 def two_basin_problem() -> tuple[FunctionProblem, np.ndarray, float]:
     """Two minima on [-2, 2]^2 (global at (1.5, 1.5), f = -1; local at (-1.5, -1.5), f = -0.6)
     with x + y >= 0.5 excluding neither: a multi-start/global solver must pick the global one."""
+
     def f(X):
         g1 = np.exp(-((X[:, 0] - 1.5) ** 2 + (X[:, 1] - 1.5) ** 2))
         g2 = 0.6 * np.exp(-((X[:, 0] + 1.5) ** 2 + (X[:, 1] + 1.5) ** 2))
         return -(g1 + g2)
-    p = FunctionProblem(f, lambda X: (X[:, 0] - X[:, 1] - 3.0)[:, None],
-                        {"x": (-2.0, 2.0), "y": (-2.0, 2.0)}, start=[-1.4, -1.6])
+
+    p = FunctionProblem(
+        f,
+        lambda X: (X[:, 0] - X[:, 1] - 3.0)[:, None],
+        {"x": (-2.0, 2.0), "y": (-2.0, 2.0)},
+        start=[-1.4, -1.6],
+    )
     return p, np.array([1.5, 1.5]), -1.0 - 0.6 * np.exp(-18.0)
 
 
-@pytest.mark.parametrize("make", [circle_problem, box_problem, two_basin_problem],
-                         ids=["circle", "box", "two-basin"])
+@pytest.mark.parametrize(
+    "make", [circle_problem, box_problem, two_basin_problem], ids=["circle", "box", "two-basin"]
+)
 @pytest.mark.parametrize("solver", SOLVER_FUNCS, ids=["slsqp", "surrogate", "pso"])
 def test_every_solver_finds_the_known_optimum(make, solver) -> None:
     p, x_star, f_star = make()
@@ -167,8 +177,7 @@ def test_thesis_calibration_and_preset_constants(thesis_results) -> None:
     """Calibrated: the blow-by limit puts the optimum at ~120 m3. Predicted: its mass and the
     design variables, which presets.THESIS_OPTIMUM records."""
     best = min(thesis_results, key=lambda r: r.objective)
-    assert best.design["volume_m3"] == pytest.approx(THESIS_REPORTED["optimum_volume_m3"],
-                                                     rel=0.02)
+    assert best.design["volume_m3"] == pytest.approx(THESIS_REPORTED["optimum_volume_m3"], rel=0.02)
     assert THESIS_BLOW_BY_LIMIT == thesis_baseline()[0].blow_by_limit
     for k, v in THESIS_OPTIMUM.items():
         scale = np.ptp(DEFAULT_BOUNDS[k])
@@ -201,8 +210,7 @@ def test_quick_setting_also_agrees(thesis_problem) -> None:
 
 
 @settings(max_examples=12, deadline=None, suppress_health_check=[HealthCheck.too_slow])
-@given(st.floats(2.5, 4.5), st.floats(-50.0, 100.0), st.floats(0.6, 0.75),
-       st.floats(25.0, 120.0))
+@given(st.floats(2.5, 4.5), st.floats(-50.0, 100.0), st.floats(0.6, 0.75), st.floats(25.0, 120.0))
 def test_sized_volume_is_the_smallest_meeting_the_limit(f, dsf, pos, limit) -> None:
     req, cfg = thesis_baseline()
     req = dataclasses.replace(req, blow_by_limit=limit)
@@ -261,8 +269,11 @@ def test_pareto_front_contains_the_single_objective_optimum(front, thesis_result
     assert front.total_mass[k] == pytest.approx(best.objective, rel=2e-3)
     assert front.mass_at(req.blow_by_limit) == pytest.approx(best.objective, rel=2e-3)
     # no front point is both lighter and within the limit
-    assert not np.any(front.feasible & (front.blow_by <= req.blow_by_limit)
-                      & (front.total_mass < best.objective * (1 - 2e-3)))
+    assert not np.any(
+        front.feasible
+        & (front.blow_by <= req.blow_by_limit)
+        & (front.total_mass < best.objective * (1 - 2e-3))
+    )
 
 
 def test_nsga2_does_not_beat_the_epsilon_front(front) -> None:
@@ -271,7 +282,8 @@ def test_nsga2_does_not_beat_the_epsilon_front(front) -> None:
     assert nsga.volume.size >= 5 and np.all(nsga.nondominated)
     for i in np.nonzero(front.nondominated)[0]:
         better = (nsga.blow_by <= front.blow_by[i]) & (
-            nsga.total_mass < front.total_mass[i] * (1 - 5e-3))
+            nsga.total_mass < front.total_mass[i] * (1 - 5e-3)
+        )
         assert not better.any(), (front.blow_by[i], front.total_mass[i])
 
 
@@ -296,16 +308,19 @@ def test_default_limits_include_the_requirement() -> None:
 # --- bad requests ------------------------------------------------------------------------------
 
 
-@pytest.mark.parametrize("bounds, words", [
-    ({}, ["empty"]),
-    ({"fineness_ratio": (4.5, 2.5)}, ["lower bound 4.5", "upper bound 2.5", "fineness_ratio"]),
-    ({"area_change": (10.0, 10.0)}, ["empty", "area_change"]),
-    ({"span": (1.0, 2.0)}, ["unknown", "span"]),
-    ({"position": (0.3, 0.7)}, ["position", "valid range [0.4, 0.95]"]),
-    ({"fineness_ratio": (float("nan"), 3.0)}, ["finite", "fineness_ratio"]),
-    ({"fineness_ratio": ("a", 3.0)}, ["two numbers", "fineness_ratio"]),
-    ({"fineness_ratio": (2.0,)}, ["two numbers", "fineness_ratio"]),
-])
+@pytest.mark.parametrize(
+    "bounds, words",
+    [
+        ({}, ["empty"]),
+        ({"fineness_ratio": (4.5, 2.5)}, ["lower bound 4.5", "upper bound 2.5", "fineness_ratio"]),
+        ({"area_change": (10.0, 10.0)}, ["empty", "area_change"]),
+        ({"span": (1.0, 2.0)}, ["unknown", "span"]),
+        ({"position": (0.3, 0.7)}, ["position", "valid range [0.4, 0.95]"]),
+        ({"fineness_ratio": (float("nan"), 3.0)}, ["finite", "fineness_ratio"]),
+        ({"fineness_ratio": ("a", 3.0)}, ["two numbers", "fineness_ratio"]),
+        ({"fineness_ratio": (2.0,)}, ["two numbers", "fineness_ratio"]),
+    ],
+)
 def test_bad_bounds_raise_a_clear_value_error(bounds, words) -> None:
     with pytest.raises(ValueError) as exc:
         OptimisationProblem(*thesis_baseline(), bounds=bounds)
@@ -345,8 +360,11 @@ def test_infeasible_limit_returns_an_infeasible_result_naming_the_binding_constr
     req, cfg = thesis_baseline()
     req = dataclasses.replace(req, blow_by_limit=5.0)
     p = OptimisationProblem(req, cfg)
-    small = {"slsqp": {"maxiter": 8}, "surrogate": {"max_evaluations": 40},
-             "pso": {"max_generations": 6}}
+    small = {
+        "slsqp": {"maxiter": 8},
+        "surrogate": {"max_evaluations": 40},
+        "pso": {"max_generations": 6},
+    }
     for name in ("slsqp", "surrogate", "pso"):
         r = solve(p, name, "quick", seed=0, **small[name])
         assert not r.feasible and r.status == "infeasible"

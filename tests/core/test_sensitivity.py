@@ -43,7 +43,9 @@ def test_sweeps_cover_the_ranges_and_include_the_baseline(ofat_resized, thesis) 
         assert sw.values[0] == lo and sw.values[-1] == hi and np.all(np.diff(sw.values) > 0)
         assert x0[name] in sw.values
         k = int(np.nonzero(sw.values == x0[name])[0][0])
-        assert sw.designs.total_mass[k] == pytest.approx(ofat_resized.baseline_design["total_mass_kg"])
+        assert sw.designs.total_mass[k] == pytest.approx(
+            ofat_resized.baseline_design["total_mass_kg"]
+        )
         for other in VARIABLES:
             if other != name:
                 assert np.all(getattr(sw.designs, other) == x0[other])
@@ -71,8 +73,9 @@ def test_held_volume_sweep_physics(ofat_held, thesis) -> None:
     assert ofat_held.volume_held == 170.0
     d = design(req, cfg)
     assert ofat_held.baseline_design["total_mass_kg"] == pytest.approx(d.total_mass, rel=1e-9)
-    assert ofat_held.baseline_design["blow_by_m"] == pytest.approx(d.design_point["blow_by_m"],
-                                                                   rel=1e-6)
+    assert ofat_held.baseline_design["blow_by_m"] == pytest.approx(
+        d.design_point["blow_by_m"], rel=1e-6
+    )
     for sw in ofat_held.sweeps.values():
         assert np.all(sw.designs.volume == 170.0)
     # fixed hull: more fin area is more fabric; fin position moves no mass
@@ -82,7 +85,9 @@ def test_held_volume_sweep_physics(ofat_held, thesis) -> None:
     assert np.allclose(p, p[0], rtol=1e-12)
     rows = {r["variable"]: r for r in ofat_held.summary_rows()}
     assert rows["position"]["mass_change_low_pct"] == pytest.approx(0.0, abs=1e-9)
-    assert rows["area_change"]["mass_change_high_pct"] > 0 > rows["area_change"]["mass_change_low_pct"]
+    assert (
+        rows["area_change"]["mass_change_high_pct"] > 0 > rows["area_change"]["mass_change_low_pct"]
+    )
 
 
 def test_held_map_blow_by_contour_bounds_the_feasible_region(thesis) -> None:
@@ -111,17 +116,24 @@ def test_resized_map_sizes_every_point(thesis) -> None:
     assert baseline_volume(req, cfg.with_design_variables(volume=None)) > 170.0
 
 
-@pytest.mark.parametrize("call, words", [
-    (lambda r, c: one_at_a_time(r, c, n_points=1), ["n_points", "[2, 101]"]),
-    (lambda r, c: one_at_a_time(r, c, n_points=2.5), ["n_points"]),
-    (lambda r, c: one_at_a_time(r, c, ranges={"fineness_ratio": (4.0, 3.0)}),
-     ["lower bound 4", "fineness_ratio"]),
-    (lambda r, c: one_at_a_time(r, c, ranges={"position": (0.5, 0.99)}),
-     ["position", "valid range"]),
-    (lambda r, c: two_variable_map(r, c, "position", "position"), ["two different"]),
-    (lambda r, c: two_variable_map(r, c, "span", "position"), ["span", "unknown"]),
-    (lambda r, c: two_variable_map(r, c, n=500), ["n", "[2, 101]"]),
-])
+@pytest.mark.parametrize(
+    "call, words",
+    [
+        (lambda r, c: one_at_a_time(r, c, n_points=1), ["n_points", "[2, 101]"]),
+        (lambda r, c: one_at_a_time(r, c, n_points=2.5), ["n_points"]),
+        (
+            lambda r, c: one_at_a_time(r, c, ranges={"fineness_ratio": (4.0, 3.0)}),
+            ["lower bound 4", "fineness_ratio"],
+        ),
+        (
+            lambda r, c: one_at_a_time(r, c, ranges={"position": (0.5, 0.99)}),
+            ["position", "valid range"],
+        ),
+        (lambda r, c: two_variable_map(r, c, "position", "position"), ["two different"]),
+        (lambda r, c: two_variable_map(r, c, "span", "position"), ["span", "unknown"]),
+        (lambda r, c: two_variable_map(r, c, n=500), ["n", "[2, 101]"]),
+    ],
+)
 def test_bad_sensitivity_requests_name_the_field(thesis, call, words) -> None:
     with pytest.raises(ValueError) as exc:
         call(*thesis)
@@ -130,8 +142,7 @@ def test_bad_sensitivity_requests_name_the_field(thesis, call, words) -> None:
 
 
 @settings(max_examples=10, deadline=None)
-@given(st.sampled_from(VARIABLES), st.floats(0.0, 0.45), st.floats(0.55, 1.0),
-       st.integers(2, 6))
+@given(st.sampled_from(VARIABLES), st.floats(0.0, 0.45), st.floats(0.55, 1.0), st.integers(2, 6))
 def test_any_valid_range_gives_a_sorted_sweep_inside_it(name, a, b, n) -> None:
     lo0, hi0 = DEFAULT_BOUNDS[name]
     lo, hi = lo0 + a * (hi0 - lo0), lo0 + b * (hi0 - lo0)
