@@ -54,7 +54,12 @@ def main() -> None:
     ap.add_argument("--repeats", type=int, default=5)
     ap.add_argument("--scipy", action="store_true", help="also time scipy Radau and LSODA")
     ap.add_argument("--no-moordyn", action="store_true", help="skip the live MoorDyn run")
+    ap.add_argument("--thesis", action="store_true",
+                    help="only print the thesis-comparison figures (gust, ramps, turbulence)")
     args = ap.parse_args()
+    if args.thesis:
+        thesis_comparison()
+        return
     print(f"machine: {platform.machine()}, {os.cpu_count()} cores, "
           f"Python {platform.python_version()}")
 
@@ -117,6 +122,48 @@ def main() -> None:
     gust = WindScenario(SpeedSchedule.constant(10.0), gust=Gust(5.0, 0.0, 60.0, 20.0))
     t, res = timed(lambda: simulate(hull_sys, gust, 150.0, guess=guess), args.repeats)
     print(f"full model, 20 segments, 150 s 1-cos gust: median {t:.3f} s wall")
+
+
+def thesis_comparison() -> None:
+    """Responses of the thesis design (120 m3 NPL, f = 4, 10 kg at 300 m) to the three thesis wind
+    cases, with the parameters printed (the thesis' own parameters are not known)."""
+    from aerostat_core.dynamics.simulate import response_metrics
+
+    d = cases.thesis_design()
+    print(f"thesis design: V = {d.volume:.0f} m3, f = {float(d.airframe.hull.fineness_ratio):.2f}, "
+          f"total mass {d.total_mass:.1f} kg, payload {d.requirement.payload_mass:g} kg, "
+          f"tether {d.airframe.tether_length:g} m")
+    for unsteady in (True, False):
+        system = system_from_design(d, segments=20, unsteady_wind_inertia=unsteady)
+        tag = "with" if unsteady else "without"
+        print(f"--- {tag} unsteady-wind inertia (added mass x fluid acceleration + Froude-Krylov)")
+        for name, sc, u0, t_ev, dur in (
+            ("gust: 10 m/s + 1-cos 5 m/s longitudinal, d_m = 60 m (6 s rise), at t = 20 s",
+             WindScenario(SpeedSchedule.constant(10.0), gust=Gust(5.0, 0.0, 60.0, 20.0)),
+             10.0, 20.0, 150.0),
+            ("varying: 5 -> 10 m/s, 5 s ramp at t = 20 s",
+             WindScenario(SpeedSchedule.step(5.0, 10.0, 20.0, 5.0)), 5.0, 20.0, 200.0),
+        ):
+            res = simulate(system, sc, dur, guess=engine_guess(system, d, u0))
+            th = res.signal("theta")
+            line = [f"  {name}: {res.message};"]
+            for k in ("x_C", "theta"):
+                m = response_metrics(res.t, res.signal(k), t_ev, 0.05)
+                line.append(f"{k} settles (5 %) in {m.settling_time} s")
+            line.append(f"pitch {th.min():.2f}..{th.max():.2f} deg (trim {th[0]:.2f}); "
+                        f"peak v_x {np.max(np.abs(res.signal('vx'))):.2f} m/s")
+            print(" ".join(line))
+        for inten in ("light", "moderate", "severe"):
+            for vertical in (True, False):
+                sc = WindScenario(SpeedSchedule.constant(10.0),
+                                  turbulence=DrydenTurbulence.from_intensity(
+                                      inten, seed=1, vertical=vertical, fade_in=30.0))
+                res = simulate(system, sc, 630.0, guess=engine_guess(system, d, 10.0))
+                st = res.stats_table(t_from=30.0)
+                txt = ", ".join(f"{k} RMS {st[k].std:.2f} / peak {st[k].peak:.2f}"
+                                for k in ("vx", "vz", "theta"))
+                print(f"  Dryden {inten:8s} (u{'+w' if vertical else ' only'}), 10 m/s, 600 s: "
+                      f"{txt}  [{res.message}]")
 
 
 if __name__ == "__main__":

@@ -334,3 +334,61 @@ def test_diverging_run_stops_with_a_message():
     assert not res.ok
     assert "stopped at t =" in res.message
     assert res.t[-1] < 200.0
+
+
+def _prototype_hull(unsteady: bool):
+    """dynamics.md §3.3 prototype: 120 m3 f = 3.5 ellipsoid, 90 kg, CG 0.3 m aft / 0.6 m below,
+    I = 1400 kg m2, C 0.3 m forward / 3.5 m below, J&D eta_k = 0.9 cut at 0.6 l (I1 = 12.2 m2,
+    I3 = 60.5 m3), C_DV = 0.03, cross-flow 0.5 from 0.6 l to the tail, fins 10 m2, C_La = 2.1,
+    eta_f = 0.9, AC 0.38 l aft, stall 20 deg."""
+    from dataclasses import replace
+
+    dk = 0.835 - 0.099
+
+    def aero(a):
+        cl = 0.9 * 2.1 * np.clip(a, -math.radians(20), math.radians(20))
+        return {"normal_inviscid": dk * 0.9 * 12.2 * np.sin(2 * a) * np.cos(a / 2),
+                "axial_inviscid": -dk * 0.9 * 12.2 * np.sin(2 * a) * np.sin(a / 2),
+                "moment_inviscid": dk * 0.9 * 60.5 * np.sin(2 * a) * np.cos(a / 2),
+                "axial_drag": 120 ** (2 / 3) * np.cos(a) ** 2, "fin_lift": 10 * cl,
+                "fin_drag": 10 * (0.008 + cl**2 / (math.pi * 0.8 * 2.0)), "cdv": 0.03}
+
+    hull = ellipsoid_hull(mass=90.0, cg=(-0.3, 0.6), inertia_cg=1400.0, confluence=(0.3, 3.5),
+                          rho=1.19, aero=aero, crossflow_coefficient=0.5,
+                          unsteady_wind_inertia=unsteady)
+    xs, ws = hull.strips
+    hull = replace(hull, strips=np.array([xs, np.where(xs <= -0.1 * hull.length, ws, 0.0)]),
+                   fin_ac=(-0.38 * hull.length, 0.0))
+    teth = TetherModel(length=320.0, segments=20, linear_density=0.02, axial_stiffness=6e5)
+    return DynamicSystem(hull, teth, g=9.81, atmosphere=Atmosphere(1.19))
+
+
+@pytest.mark.parametrize("unsteady", [False, True])
+def test_independent_prototype_step_response(unsteady):
+    """Cross-check against the independent prototype of dynamics.md §3.3 (its own code, same
+    equations): trim 3.43 deg at 10 m/s; 5 -> 10 m/s over 1 s: without unsteady-wind inertia peak
+    blow-by 55.8 m at +25 s, pitch 1.0-3.9 deg, peak speeds 2.7 and 0.35 m/s; with it, hull speed
+    7.5 m/s and pitch 1.1-9.1 deg. Tolerances cover the details the prototype's summary omits."""
+    from aerostat_core.dynamics.simulate import straight_guess
+
+    system = _prototype_hull(unsteady)
+    f10 = WindScenario.steady(10.0).realise(320.0, 10.0)
+    y10, _ = equilibrium(system, f10, straight_guess(system, f10, theta=0.05))
+    assert math.degrees(y10[system.hull_index + 2]) == pytest.approx(3.43, abs=0.03)
+    f5 = WindScenario.steady(5.0).realise(320.0, 10.0)
+    y5, _ = equilibrium(system, f5, straight_guess(system, f5, theta=0.05))
+    res = simulate(system, WindScenario(SpeedSchedule.step(5.0, 10.0, 20.0, 1.0)), 120.0,
+                   initial_state=y5)
+    assert res.ok
+    th = res.signal("theta")[res.t > 20]
+    vx = res.signal("vx").max()
+    if unsteady:
+        assert vx == pytest.approx(7.5, abs=0.3)
+        assert th.min() == pytest.approx(1.1, abs=0.3) and th.max() == pytest.approx(9.1, abs=0.3)
+    else:
+        x = res.signal("x_C")
+        k = int(np.argmax(x))
+        assert x[k] == pytest.approx(55.8, abs=1.5) and res.t[k] - 20 == pytest.approx(25, abs=2)
+        assert th.min() == pytest.approx(1.0, abs=0.4) and th.max() == pytest.approx(3.9, abs=0.3)
+        assert vx == pytest.approx(2.7, abs=0.1)
+        assert np.abs(res.signal("vz")).max() == pytest.approx(0.35, abs=0.06)
