@@ -195,6 +195,7 @@ class DesignBatch:
     constraints: np.ndarray
 
     def __len__(self) -> int:
+        """Number of designs (points) in the batch."""
         return int(self.volume.shape[0])
 
     @property
@@ -540,6 +541,7 @@ class OptimisationProblem:
         bounds: Mapping[str, Sequence[float]] | None = None,
         objective: str = "total_mass",
     ) -> None:
+        """Validate the inputs and bounds (see the class docstring)."""
         if not isinstance(requirement, Requirement):
             raise ValueError("requirement must be a Requirement")
         if not isinstance(configuration, Configuration):
@@ -669,6 +671,7 @@ class FunctionBatch:
     names: tuple
 
     def __len__(self) -> int:
+        """Number of designs (points) in the batch."""
         return int(self.values.shape[0])
 
     @property
@@ -729,6 +732,7 @@ class FunctionProblem:
         bounds: Mapping[str, Sequence[float]],
         start=None,
     ) -> None:
+        """Validate the bounds and store the functions (see the class docstring)."""
         if not isinstance(bounds, Mapping) or len(bounds) == 0:
             raise ValueError("bounds are empty: give {name: (lower, upper)} for each variable")
         lo, hi = [], []
@@ -754,6 +758,7 @@ class FunctionProblem:
         return len(self.names)
 
     def _constraints(self, x: np.ndarray) -> np.ndarray:
+        """Constraint matrix g (n, m) of points x (n, d); (n, 0) without constraints."""
         if self._g is None:
             return np.zeros((x.shape[0], 0))
         return np.asarray(self._g(x), float).reshape(x.shape[0], -1)
@@ -884,6 +889,7 @@ class _Tracker:
     """
 
     def __init__(self, problem, budget, progress, stop, label):
+        """Start an empty record (see the class docstring)."""
         self.problem = problem
         self.budget = max(int(budget), 1)
         self.progress = progress
@@ -1050,7 +1056,10 @@ def _run_lockstep(tasks: list[Callable], evaluate_requests: Callable) -> list[An
     state = {"abort": False}
 
     def make_request(i):
+        """Bind ``request`` to task ``i``."""
+
         def request(u):
+            """Queue ``u`` [unit cube] for the next batch and block until its value is back."""
             with cond:
                 if state["abort"]:
                     raise _Aborted
@@ -1065,6 +1074,7 @@ def _run_lockstep(tasks: list[Callable], evaluate_requests: Callable) -> list[An
         return request
 
     def runner(i):
+        """Thread body: run task ``i`` and record its result or exception."""
         try:
             outcome[i] = tasks[i](make_request(i))
         except BaseException as exc:  # noqa: BLE001 - handed back to the caller
@@ -1142,9 +1152,11 @@ def _slsqp_task(u0, bounds, maxiter, ftol):
     from scipy.optimize import minimize
 
     def task(request):
+        """One SLSQP run whose evaluations go through ``request``."""
         cache: dict[bytes, tuple] = {}
 
         def get(u):
+            """(F, g, dF, dg) at ``u`` (clipped to the unit cube), from a small cache."""
             u = np.clip(np.asarray(u, float), 0.0, 1.0)
             key = u.tobytes()
             if key not in cache:
@@ -1190,6 +1202,7 @@ def _stencil_evaluator(
     m = 2 * d + 1
 
     def evaluate_requests(batch: dict[int, np.ndarray]) -> dict[int, tuple]:
+        """Evaluate every request's stencil in one batch; reply (F, g, dF, dg) per task."""
         ids = list(batch)
         stencils = [_stencil(batch[i], h) for i in ids]
         pts = np.concatenate([s[0] for s in stencils])
@@ -1293,6 +1306,7 @@ def solve_slsqp(
     settings["max_rounds"] = cap
 
     def fn_eval(pts, owners):
+        """Evaluate the stencil points of one lock-step round (round cap enforced)."""
         if len(tr.batches) >= cap:
             raise _BudgetExhausted
         return tr(pts)
@@ -1357,6 +1371,7 @@ def _surrogate_minimiser(rbf, u0: np.ndarray, d: int) -> np.ndarray | None:
     cache: dict[bytes, np.ndarray] = {}
 
     def pred(u):
+        """Surrogate prediction (objective, constraints) at ``u``, cached for the last point."""
         key = np.asarray(u, float).tobytes()
         if key not in cache:
             cache.clear()
@@ -1625,7 +1640,10 @@ def solve_pso(
     label = "Particle swarm (pymoo)"
 
     class _Swarm(Problem):
+        """pymoo view of the problem: unit cube widened by ``margin``, evaluated at its projection."""
+
         def __init__(self):
+            """Unit-cube problem widened by ``margin``, 1 objective, one constraint per g."""
             super().__init__(
                 n_var=d,
                 n_obj=1,
@@ -1635,6 +1653,7 @@ def solve_pso(
             )
 
         def _evaluate(self, X, out, *args, **kwargs):
+            """pymoo hook: one vectorised evaluation of the population X into out['F'], out['G']."""
             b = tr(np.clip(X, 0.0, 1.0))
             out["F"] = b.objective(problem.objective)[:, None]
             out["G"] = b.constraints
@@ -1729,6 +1748,7 @@ def compare_solvers(
         if progress is not None:
 
             def sub(frac, text, k=k):
+                """Map a solver's own progress fraction onto its share of the comparison."""
                 progress((k + frac) / n, text)
 
         r = solve(problem, name, setting, seed, sub, stop)
@@ -2139,6 +2159,7 @@ def pareto_front(
     budget = len(tasks) * (2 * d + 1) * 25
 
     def fn_eval(pts, owners):
+        """Evaluate stencil points at their free volumes, each against its task's limit."""
         x = problem.from_unit(pts[:, :-1])
         v = problem.full_variables(x)
         b = evaluate_designs(
@@ -2281,7 +2302,10 @@ def pareto_nsga2(
     count = {"n": 0}
 
     class _MO(Problem):
+        """pymoo view of the two-objective problem: (objective, blow-by) over [x, log V]."""
+
         def __init__(self):
+            """Four variables ([x] in the unit cube, log V), 2 objectives, one constraint per g."""
             super().__init__(
                 n_var=d + 1,
                 n_obj=2,
@@ -2291,6 +2315,7 @@ def pareto_nsga2(
             )
 
         def _evaluate(self, X, out, *args, **kwargs):
+            """pymoo hook: one vectorised evaluation of the population X into out['F'], out['G']."""
             x = problem.from_unit(X[:, :d])
             v = problem.full_variables(x)
             b = evaluate_designs(

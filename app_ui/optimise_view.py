@@ -100,6 +100,7 @@ def is_thesis_preset(req: Requirement, cfg: Configuration) -> bool:
 
 
 def _load(inputs_json: str) -> tuple[Requirement, Configuration]:
+    """(Requirement, Configuration) from canonical inputs JSON (raises ValueError)."""
     return inputs_from_dict(json.loads(inputs_json))
 
 
@@ -260,6 +261,7 @@ def best_result(results: Sequence[OptimisationResult]) -> OptimisationResult | N
 
 
 def _run_task(request: Mapping[str, Any], task: str, done: Mapping[str, Any]) -> Any:
+    """Run one task of a job (a solver, or the Pareto front started from the best optimum); cached."""
     if task == "pareto":
         best = best_result([v for k, v in done.items() if k != "pareto"])
         starts = [best.x] if best is not None else []
@@ -455,6 +457,7 @@ def csv_of(rows: list[dict]) -> bytes:
 
 
 def _layout(fig: go.Figure, title: str, **kw: Any) -> go.Figure:
+    """Common layout (title, font, margins, legend below) of the page's figures."""
     fig.update_layout(
         title=dict(text=title, font=dict(size=15)),
         font=_FONT,
