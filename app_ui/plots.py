@@ -228,13 +228,13 @@ def hull_3d_figure(rep: Mapping[str, Any]) -> go.Figure:
         xaxis=_axis("ξ from nose [m]"),
         yaxis=_axis("y [m]"),
         zaxis=_axis("z [m]"),
-        camera=dict(eye=dict(x=-1.1, y=-1.6, z=0.7)),
+        camera=dict(eye=dict(x=-0.8, y=-1.2, z=0.5)),
     )
     return _figure(
         traces,
         "Hull and fins (3-D, to scale)",
         scene=scene,
-        height=480,
+        height=620,
         margin=dict(l=0, r=0, t=40, b=0),
     )
 

@@ -48,6 +48,120 @@ def _fmt(v: float, digits: int = 1) -> str:
     return f"{v:,.{digits}f}"
 
 
+TABS = ("Geometry", "3-D view", "Mass", "Performance", "Tether profiles")
+TAB_KEY = "design_tab"
+
+
+def _geometry_tab(rep: dict) -> None:
+    st.plotly_chart(plots.side_view_figure(rep), key="side_view")
+    g1, g2 = st.columns([1.2, 1])
+    with g1:
+        st.dataframe(
+            geometry_frame(rep["geometry_rows"]),
+            hide_index=True,
+            width="stretch",
+            height=460,
+            column_config={"Value": st.column_config.NumberColumn(format="%.3f")},
+            key="geometry_table",
+        )
+    with g2:
+        st.markdown(
+            "**Reading the geometry.** ξ is measured from the nose, aft positive; z is up. "
+            "The hull is the NPL double ellipsoid (nose semi-axis a1, tail semi-axis a2, "
+            "maximum radius b). The confluence point C sits below the centre of net static "
+            "lift, so the hull flies level in calm air."
+        )
+        st.download_button(
+            "Geometry table (CSV)",
+            data=cache.csv_bytes(rep["geometry_rows"]),
+            file_name="geometry.csv",
+            mime="text/csv",
+            on_click="ignore",
+            icon=":material/download:",
+            key="dl_geometry",
+        )
+
+
+def _mass_tab(rep: dict) -> None:
+    m1, m2 = st.columns([1, 1.4])
+    with m1:
+        st.dataframe(
+            mass_frame(rep["mass_rows"]),
+            hide_index=True,
+            width="stretch",
+            column_config={
+                "Mass [kg]": st.column_config.NumberColumn(format="%.2f"),
+                "Share [%]": st.column_config.NumberColumn(format="%.1f"),
+            },
+            key="mass_table",
+        )
+        st.download_button(
+            "Mass table (CSV)",
+            data=cache.csv_bytes(rep["mass_rows"]),
+            file_name="mass.csv",
+            mime="text/csv",
+            on_click="ignore",
+            icon=":material/download:",
+            key="dl_mass",
+        )
+    with m2:
+        st.plotly_chart(plots.mass_figure(rep), key="mass_chart")
+
+
+def _performance_tab(rep: dict) -> None:
+    pdf = performance_frame(rep["performance_rows"])
+    st.dataframe(performance_styler(pdf), hide_index=True, width="stretch", key="performance_table")
+    st.caption("Rows with a red background break an operating limit (last column says which).")
+    st.download_button(
+        "Performance table (CSV)",
+        data=cache.csv_bytes(rep["performance_rows"]),
+        file_name="performance.csv",
+        mime="text/csv",
+        on_click="ignore",
+        icon=":material/download:",
+        key="dl_performance",
+    )
+    r1 = st.columns(2)
+    r1[0].plotly_chart(plots.performance_figure(rep, "blow_by"), key="perf_blow_by")
+    r1[1].plotly_chart(plots.performance_figure(rep, "alpha_eq"), key="perf_alpha")
+    r2 = st.columns(2)
+    r2[0].plotly_chart(plots.performance_figure(rep, "dynamic_lift"), key="perf_lift")
+    r2[1].plotly_chart(plots.tension_figure(rep), key="perf_tension")
+    r3 = st.columns(2)
+    r3[0].plotly_chart(plots.cm_figure(rep), key="perf_cm")
+    r3[1].caption(
+        "C_m is the pitching moment about the confluence point over q V^(2/3) l. The trim "
+        "is stable where C_m falls as α rises (negative slope at the green point)."
+    )
+
+
+def _tether_tab(rep: dict) -> None:
+    @st.fragment
+    def _tether_panel() -> None:
+        speeds = [float(v) for v in rep["tether"]["wind_speed"]]
+        default = plots.default_tether_speeds(speeds)
+        chosen = st.multiselect(
+            "Wind speeds to show [m/s]",
+            speeds,
+            default=default,
+            key="tether_speeds",
+            format_func=lambda v: f"{v:g}",
+            help="Tether profiles of the sweep, drawn to scale.",
+        )
+        st.plotly_chart(plots.tether_figure(rep, sorted(chosen) or default), key="tether_plot")
+
+    _tether_panel()
+    st.download_button(
+        "Tether profiles (CSV)",
+        data=lambda: cache.csv_bytes(tether_profile_rows(rep["tether"])),
+        file_name="tether-profiles.csv",
+        mime="text/csv",
+        on_click="ignore",
+        icon=":material/download:",
+        key="dl_tether",
+    )
+
+
 col_in, col_out = st.columns([1, 2.7], gap="large")
 
 # --- inputs ------------------------------------------------------------------------------------
@@ -197,112 +311,26 @@ with col_out:
         with case_box:
             (st.success if fb[0] == "success" else st.error)(fb[1])
 
-    tab_geo, tab_mass, tab_perf, tab_teth = st.tabs(
-        ["Geometry", "Mass", "Performance", "Tether profiles"]
-    )
+    # Lazy tabs: only the open tab runs and is sent to the browser (a rerun draws 1-5 charts
+    # instead of 10, which keeps "click Update design -> result" well under a second).
+    tabs = dict(zip(TABS, st.tabs(TABS, key=TAB_KEY, on_change="rerun", default=TABS[0])))
 
-    with tab_geo:
-        st.plotly_chart(plots.side_view_figure(rep), key="side_view")
-        g1, g2 = st.columns([1.25, 1.2])
-        with g1:
-            st.dataframe(
-                geometry_frame(rep["geometry_rows"]),
-                hide_index=True,
-                width="stretch",
-                height=460,
-                column_config={
-                    "Value": st.column_config.NumberColumn(format="%.3f"),
-                },
-                key="geometry_table",
-            )
-            st.download_button(
-                "Geometry table (CSV)",
-                data=cache.csv_bytes(rep["geometry_rows"]),
-                file_name="geometry.csv",
-                mime="text/csv",
-                on_click="ignore",
-                icon=":material/download:",
-                key="dl_geometry",
-            )
-        with g2:
+    with tabs["Geometry"]:
+        if tabs["Geometry"].open:
+            _geometry_tab(rep)
+    with tabs["3-D view"]:
+        if tabs["3-D view"].open:
             st.plotly_chart(plots.hull_3d_figure(rep), key="hull_3d")
-
-    with tab_mass:
-        m1, m2 = st.columns([1, 1.4])
-        with m1:
-            st.dataframe(
-                mass_frame(rep["mass_rows"]),
-                hide_index=True,
-                width="stretch",
-                column_config={
-                    "Mass [kg]": st.column_config.NumberColumn(format="%.2f"),
-                    "Share [%]": st.column_config.NumberColumn(format="%.1f"),
-                },
-                key="mass_table",
+            st.caption(
+                "Drag to rotate, scroll to zoom. Fins in orange; confluence lines are "
+                "schematic (the engine models only the confluence point)."
             )
-            st.download_button(
-                "Mass table (CSV)",
-                data=cache.csv_bytes(rep["mass_rows"]),
-                file_name="mass.csv",
-                mime="text/csv",
-                on_click="ignore",
-                icon=":material/download:",
-                key="dl_mass",
-            )
-        with m2:
-            st.plotly_chart(plots.mass_figure(rep), key="mass_chart")
-
-    with tab_perf:
-        pdf = performance_frame(rep["performance_rows"])
-        st.dataframe(
-            performance_styler(pdf), hide_index=True, width="stretch", key="performance_table"
-        )
-        st.caption("Rows with a red background break an operating limit (last column says which).")
-        st.download_button(
-            "Performance table (CSV)",
-            data=cache.csv_bytes(rep["performance_rows"]),
-            file_name="performance.csv",
-            mime="text/csv",
-            on_click="ignore",
-            icon=":material/download:",
-            key="dl_performance",
-        )
-        r1 = st.columns(2)
-        r1[0].plotly_chart(plots.performance_figure(rep, "blow_by"), key="perf_blow_by")
-        r1[1].plotly_chart(plots.performance_figure(rep, "alpha_eq"), key="perf_alpha")
-        r2 = st.columns(2)
-        r2[0].plotly_chart(plots.performance_figure(rep, "dynamic_lift"), key="perf_lift")
-        r2[1].plotly_chart(plots.tension_figure(rep), key="perf_tension")
-        r3 = st.columns(2)
-        r3[0].plotly_chart(plots.cm_figure(rep), key="perf_cm")
-        r3[1].caption(
-            "C_m is the pitching moment about the confluence point over q V^(2/3) l. The trim "
-            "is stable where C_m falls as α rises (negative slope at the green point)."
-        )
-
-    with tab_teth:
-
-        @st.fragment
-        def _tether_panel() -> None:
-            speeds = [float(v) for v in rep["tether"]["wind_speed"]]
-            default = plots.default_tether_speeds(speeds)
-            chosen = st.multiselect(
-                "Wind speeds to show [m/s]",
-                speeds,
-                default=default,
-                key="tether_speeds",
-                format_func=lambda v: f"{v:g}",
-                help="Tether profiles of the sweep, drawn to scale.",
-            )
-            st.plotly_chart(plots.tether_figure(rep, sorted(chosen) or default), key="tether_plot")
-
-        _tether_panel()
-        st.download_button(
-            "Tether profiles (CSV)",
-            data=lambda: cache.csv_bytes(tether_profile_rows(rep["tether"])),
-            file_name="tether-profiles.csv",
-            mime="text/csv",
-            on_click="ignore",
-            icon=":material/download:",
-            key="dl_tether",
-        )
+    with tabs["Mass"]:
+        if tabs["Mass"].open:
+            _mass_tab(rep)
+    with tabs["Performance"]:
+        if tabs["Performance"].open:
+            _performance_tab(rep)
+    with tabs["Tether profiles"]:
+        if tabs["Tether profiles"].open:
+            _tether_tab(rep)

@@ -163,43 +163,49 @@ for name in selected:
     except Exception as exc:  # noqa: BLE001 - never show a traceback
         st.error(f"Case “{name}” could not be evaluated: {exc}", icon=":material/error:")
 
+# Lazy tabs: only the open tab runs and is sent to the browser.
 tab_table, tab_perf, tab_tether, tab_manage = st.tabs(
-    ["Side by side", "Performance", "Tether profiles", "Manage cases"]
+    ["Side by side", "Performance", "Tether profiles", "Manage cases"],
+    key="compare_tab",
+    on_change="rerun",
 )
 
 with tab_table:
-    ok = [n for n in selected if n in reports]
-    sub = {n: cases[n] for n in ok}
-    only_diff = st.toggle("Show only the rows that differ", key="compare_only_diff", value=False)
-    try:
-        rows = cache.cached_comparison(cache.cases_key(sub)) if sub else []
-    except Exception as exc:  # noqa: BLE001
-        st.error(f"The comparison could not be built: {exc}")
-        rows = []
-    if rows:
-        df = plots.comparison_frame(rows, ok, only_differences=only_diff)
-        n_diff = int(sum(r["differs"] for r in rows))
-        st.caption(f"{n_diff} of {len(rows)} rows differ between the cases (highlighted).")
-        st.dataframe(
-            plots.comparison_styler(df),
-            hide_index=True,
-            width="stretch",
-            height=560,
-            key="comparison_table",
-            column_config={"Differs": st.column_config.CheckboxColumn("Differs")},
+    if tab_table.open:
+        ok = [n for n in selected if n in reports]
+        sub = {n: cases[n] for n in ok}
+        only_diff = st.toggle(
+            "Show only the rows that differ", key="compare_only_diff", persist_state="session"
         )
-        st.download_button(
-            "Comparison table (CSV)",
-            data=cache.csv_bytes(rows),
-            file_name="comparison.csv",
-            mime="text/csv",
-            on_click="ignore",
-            icon=":material/download:",
-            key="dl_comparison",
-        )
+        try:
+            rows = cache.cached_comparison(cache.cases_key(sub)) if sub else []
+        except Exception as exc:  # noqa: BLE001
+            st.error(f"The comparison could not be built: {exc}")
+            rows = []
+        if rows:
+            df = plots.comparison_frame(rows, ok, only_differences=only_diff)
+            n_diff = int(sum(r["differs"] for r in rows))
+            st.caption(f"{n_diff} of {len(rows)} rows differ between the cases (highlighted).")
+            st.dataframe(
+                plots.comparison_styler(df),
+                hide_index=True,
+                width="stretch",
+                height=560,
+                key="comparison_table",
+                column_config={"Differs": st.column_config.CheckboxColumn("Differs")},
+            )
+            st.download_button(
+                "Comparison table (CSV)",
+                data=cache.csv_bytes(rows),
+                file_name="comparison.csv",
+                mime="text/csv",
+                on_click="ignore",
+                icon=":material/download:",
+                key="dl_comparison",
+            )
 
 with tab_perf:
-    if reports:
+    if tab_perf.open and reports:
         r1 = st.columns(2)
         r1[0].plotly_chart(plots.compare_performance_figure(reports, "blow_by"), key="cmp_blow_by")
         r1[1].plotly_chart(plots.compare_performance_figure(reports, "alpha_eq"), key="cmp_alpha")
@@ -213,7 +219,7 @@ with tab_perf:
         st.caption("Crosses mark wind speeds where a case breaks an operating limit.")
 
 with tab_tether:
-    if reports:
+    if tab_tether.open and reports:
         speeds = sorted({float(v) for r in reports.values() for v in r["tether"]["wind_speed"]})
         design_winds = {r["limits"]["design_wind"] for r in reports.values()}
         default = next(iter(design_winds)) if len(design_winds) == 1 else max(speeds)
@@ -229,22 +235,23 @@ with tab_tether:
         st.plotly_chart(plots.compare_tether_figure(reports, wind), key="cmp_tether")
 
 with tab_manage:
-    m1, m2, m3 = st.columns(3)
-    with m1:
-        st.markdown("**Rename**")
-        st.selectbox("Case", names, key="rename_from")
-        st.text_input("New name", key="rename_to", max_chars=state.MAX_NAME_CHARS)
-        st.button("Rename", on_click=_rename, icon=":material/edit:", key="rename_button")
-    with m2:
-        st.markdown("**Delete**")
-        st.multiselect("Cases to delete", names, key="delete_names")
-        st.button("Delete", on_click=_delete, icon=":material/delete:", key="delete_button")
-    with m3:
-        st.markdown("**Open on the Design page**")
-        st.selectbox("Case", names, key="load_name")
-        st.button(
-            "Make it the current design",
-            on_click=_load_into_design,
-            icon=":material/open_in_new:",
-            key="load_button",
-        )
+    if tab_manage.open:
+        m1, m2, m3 = st.columns(3)
+        with m1:
+            st.markdown("**Rename**")
+            st.selectbox("Case", names, key="rename_from")
+            st.text_input("New name", key="rename_to", max_chars=state.MAX_NAME_CHARS)
+            st.button("Rename", on_click=_rename, icon=":material/edit:", key="rename_button")
+        with m2:
+            st.markdown("**Delete**")
+            st.multiselect("Cases to delete", names, key="delete_names")
+            st.button("Delete", on_click=_delete, icon=":material/delete:", key="delete_button")
+        with m3:
+            st.markdown("**Open on the Design page**")
+            st.selectbox("Case", names, key="load_name")
+            st.button(
+                "Make it the current design",
+                on_click=_load_into_design,
+                icon=":material/open_in_new:",
+                key="load_button",
+            )

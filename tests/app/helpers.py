@@ -92,6 +92,13 @@ def _widget(at: AppTest, key: str):
     raise KeyError(key)
 
 
+def show_tab(at: AppTest, label: str, key: str = "design_tab") -> AppTest:
+    """Open a lazy result tab (st.tabs with on_change="rerun": only the open tab runs)."""
+    at.session_state[key] = label
+    at.run()
+    return at
+
+
 def goto(at: AppTest, page: str) -> AppTest:
     at.switch_page(page)
     at.run()

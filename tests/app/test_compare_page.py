@@ -18,6 +18,7 @@ from tests.app.helpers import (
     chart,
     goto,
     messages,
+    show_tab,
     submit,
     table,
     trace,
@@ -79,8 +80,13 @@ def test_only_differences_toggle(with_gui_cases):
     assert "Fineness ratio l/d [-]" not in set(df["Quantity"])
 
 
+def tab(at, label):
+    return show_tab(at, label, key="compare_tab")
+
+
 def test_overlaid_curves_one_line_per_case(with_gui_cases):
     at = with_gui_cases
+    tab(at, "Performance")
     designs = {n: design(*inputs_from_dict(c)) for n, c in thesis_gui_cases().items()}
     for key, attr in (
         ("cmp_blow_by", "blow_by"),
@@ -99,6 +105,7 @@ def test_overlaid_curves_one_line_per_case(with_gui_cases):
 
 def test_overlaid_tether_profiles_to_scale(with_gui_cases):
     at = with_gui_cases
+    tab(at, "Tether profiles")
     fig = chart(at, "cmp_tether")
     assert fig["layout"]["yaxis"]["scaleanchor"] == "x"
     names = [t["name"] for t in fig["data"] if t.get("showlegend", True) and t["name"] != "winch"]
@@ -131,6 +138,7 @@ def test_two_saved_designs_compared(at):
     assert list(df.columns) == ["Section", "Quantity", "light", "heavy", "Differs"]
     diff = df[df["Differs"]]
     assert {"Payload mass [kg]", "Hull volume [m³]", "Total mass [kg]"} <= set(diff["Quantity"])
+    tab(at, "Performance")
     fig = chart(at, "cmp_blow_by")
     assert [t["name"] for t in fig["data"] if t.get("showlegend", True)] == ["light", "heavy"]
 
@@ -140,18 +148,22 @@ def test_deselecting_a_case_drops_its_column(with_gui_cases):
     at.multiselect(key="compare_selected").set_value(GUI[:2]).run()
     df = table(at, "Section")
     assert list(df.columns) == ["Section", "Quantity", *GUI[:2], "Differs"]
+    tab(at, "Performance")
     fig = chart(at, "cmp_blow_by")
     assert {t["name"] for t in fig["data"] if t.get("showlegend", True)} == set(GUI[:2])
 
 
 def test_rename_and_refuse_duplicates(with_gui_cases):
     at = with_gui_cases
+    tab(at, "Manage cases")
     at.selectbox(key="rename_from").set_value(GUI[1])
     at.text_input(key="rename_to").set_value("thirty kilos")
     _button(at, "Rename").click().run()
     assert list(at.session_state["cases"]) == [GUI[0], "thirty kilos", *GUI[2:]]
     assert any("Renamed" in s for s in messages(at, "success"))
+    tab(at, "Side by side")
     assert "thirty kilos" in table(at, "Section").columns
+    tab(at, "Manage cases")
     at.selectbox(key="rename_from").set_value("thirty kilos")
     at.text_input(key="rename_to").set_value(GUI[0])
     _button(at, "Rename").click().run()
@@ -161,11 +173,14 @@ def test_rename_and_refuse_duplicates(with_gui_cases):
 
 def test_delete_cases(with_gui_cases):
     at = with_gui_cases
+    tab(at, "Manage cases")
     at.multiselect(key="delete_names").set_value(GUI[2:])
     _button(at, "Delete").click().run()
     assert not at.exception
     assert list(at.session_state["cases"]) == GUI[:2]
+    tab(at, "Side by side")
     assert list(table(at, "Section").columns) == ["Section", "Quantity", *GUI[:2], "Differs"]
+    tab(at, "Manage cases")
     at.multiselect(key="delete_names").set_value(GUI[:2])
     _button(at, "Delete").click().run()
     assert at.session_state["cases"] == {}
@@ -174,6 +189,7 @@ def test_delete_cases(with_gui_cases):
 
 def test_open_a_case_on_the_design_page(with_gui_cases):
     at = with_gui_cases
+    tab(at, "Manage cases")
     at.selectbox(key="load_name").set_value(GUI[1])
     _button(at, "Make it the current design").click().run()
     assert at.session_state["design_inputs"] == at.session_state["cases"][GUI[1]]
@@ -206,6 +222,14 @@ def test_bad_cases_file_changes_nothing(with_gui_cases):
     assert not at.exception
     assert any("Could not import" in e for e in messages(at, "error"))
     assert at.session_state["cases"] == before
+
+
+def test_only_the_open_tab_is_computed(with_gui_cases):
+    at = with_gui_cases
+    assert at.get("plotly_chart") == [] or len(at.get("plotly_chart")) == 0
+    tab(at, "Performance")
+    assert len(at.get("plotly_chart")) == 4
+    assert len(at.dataframe) == 0
 
 
 def test_exports_are_offered(with_gui_cases):

@@ -16,10 +16,12 @@ from tests.app.helpers import (
     COMPARE_PAGE,
     DESIGN_PAGE,
     chart,
+    chart_keys,
     goto,
     messages,
     metric,
     metric_float,
+    show_tab,
     submit,
     table,
     trace,
@@ -63,6 +65,7 @@ def test_payload_change_updates_mass_and_lift(at):
     # the volume is given, so 20 kg more payload is 20 kg more mass and 20 kg less free lift
     assert metric_float(at, "Total mass [kg]") - before_mass == pytest.approx(20.0, abs=0.11)
     assert before_lift - metric_float(at, "Free lift [kg]") == pytest.approx(20.0, abs=0.11)
+    show_tab(at, "Mass")
     masses = table(at, "Item")
     assert masses.loc[masses["Item"] == "payload", "Mass [kg]"].item() == pytest.approx(30.0)
 
@@ -81,12 +84,14 @@ def test_sized_volume_follows_the_payload(at):
     hull_x = values(trace(side, "hull"), "x")
     assert hull_x.max() == pytest.approx(float(expected.airframe.hull.length))
     # the 3-D view is the same hull: its surface spans the new length
+    show_tab(at, "3-D view")
     surf = next(t for t in chart(at, "hull_3d")["data"] if t["type"] == "surface")
     assert values(surf, "x").max() == pytest.approx(float(expected.airframe.hull.length))
 
 
 def test_performance_plots_show_the_engine_curves(at):
     d = _baseline()
+    show_tab(at, "Performance")
     blow = chart(at, "perf_blow_by")
     main = blow["data"][0]
     np.testing.assert_allclose(values(main, "x"), d.performance.wind_speed)
@@ -118,6 +123,7 @@ def test_rows_over_a_limit_stand_out(at):
     submit(at, in_min_sf=6.0)  # the baseline's safety factor drops below 6 above ~13 m/s
     req, cfg = thesis_baseline()
     d = design(replace(req, min_tether_safety_factor=6.0), cfg)
+    show_tab(at, "Performance")
     limited = np.asarray(d.performance.limited, bool)
     assert limited.any() and not limited.all()
     speeds = d.performance.wind_speed[limited]
@@ -135,6 +141,7 @@ def test_rows_over_a_limit_stand_out(at):
 
 def test_tether_profiles_are_to_scale_with_winch_and_aerostat(at):
     d = _baseline()
+    show_tab(at, "Tether profiles")
     fig = chart(at, "tether_plot")
     assert fig["layout"]["yaxis"]["scaleanchor"] == "x"
     assert fig["layout"]["yaxis"].get("scaleratio", 1) == 1
@@ -173,6 +180,7 @@ def test_geometry_and_mass_tables_have_units_and_match(at):
     ):
         assert geo.loc[geo["Quantity"] == q, "Value"].item() == pytest.approx(expect[q]), q
     assert geo.loc[geo["Quantity"] == "Hull volume", "Unit"].item() == "m³"
+    show_tab(at, "Mass")
     mass = table(at, "Item")
     assert list(mass.columns) == ["Item", "Mass [kg]", "Share [%]"]
     parts = mass[mass["Item"] != "total"]
@@ -250,6 +258,7 @@ def test_custom_fabric_and_catalogue_tether(at):
     submit(at, in_hull_fabric="Custom", in_hull_gsm=260.0)
     hull_fabric = at.session_state["design_inputs"]["configuration"]["hull_fabric"]
     assert hull_fabric["areal_density"] == pytest.approx(0.260)
+    show_tab(at, "Mass")
     mass = table(at, "Item")
     hull = mass.loc[mass["Item"] == "hull", "Mass [kg]"].item()
     assert hull == pytest.approx(2 * float(d0.airframe.mass.items["hull"]))
@@ -352,14 +361,24 @@ def test_corrupt_state_falls_back_to_the_baseline(at):
     assert metric(at, "Volume [m³]") == "170.0"
 
 
-def test_json_download_holds_every_input(at):
-    buttons = [b for b in at.get("download_button")]
-    labels = [b.proto.label for b in buttons]
-    for label in (
-        "Download design inputs (JSON)",
-        "Geometry table (CSV)",
-        "Mass table (CSV)",
-        "Performance table (CSV)",
-        "Tether profiles (CSV)",
+def test_downloads_are_offered_in_every_tab(at):
+    def labels():
+        return [b.proto.label for b in at.get("download_button")]
+
+    assert "Download design inputs (JSON)" in labels()
+    assert "Geometry table (CSV)" in labels()
+    for tab, label in (
+        ("Mass", "Mass table (CSV)"),
+        ("Performance", "Performance table (CSV)"),
+        ("Tether profiles", "Tether profiles (CSV)"),
     ):
-        assert label in labels
+        show_tab(at, tab)
+        assert label in labels(), tab
+
+
+def test_only_the_open_tab_is_computed(at):
+    assert [k for k in chart_keys(at)] == ["side_view"]
+    show_tab(at, "Performance")
+    assert chart_keys(at) == ["perf_blow_by", "perf_alpha", "perf_lift", "perf_tension", "perf_cm"]
+    submit(at, in_payload=12.0)  # the open tab stays open after a change
+    assert "perf_blow_by" in chart_keys(at)

@@ -60,11 +60,13 @@ def test_save_two_cases_and_compare_them(app_page: Page, console_errors: list[st
 
     # overlaid curves: one legend entry per case
     page.get_by_role("tab", name="Performance").click()
+    wait_for_rerun(page)
     plot = page.locator(".js-plotly-plot").filter(visible=True).first
     expect(plot).to_be_visible()
     expect(plot.locator(".legendtext").filter(has_text="light")).to_have_count(1)
     expect(plot.locator(".legendtext").filter(has_text="heavy")).to_have_count(1)
     page.get_by_role("tab", name="Tether profiles").click()
+    wait_for_rerun(page)
     tether = page.locator(".js-plotly-plot").filter(visible=True).first
     expect(tether.locator(".legendtext").filter(has_text="light (15 m/s)")).to_have_count(1)
 

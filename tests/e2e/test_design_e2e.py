@@ -72,6 +72,7 @@ def test_download_tables_and_design_file(app_page: Page):
     page = app_page
     blow_by = number(metric_value(page, "Blow-by [m]").inner_text())
     page.get_by_role("tab", name="Performance").click()
+    wait_for_rerun(page)
     with page.expect_download() as info:
         page.get_by_role("button", name="Performance table (CSV)").click()
     rows = list(csv.DictReader(io.StringIO(info.value.path().read_text())))
@@ -83,6 +84,8 @@ def test_download_tables_and_design_file(app_page: Page):
     assert float(at_15["blow_by_m"]) == pytest.approx(blow_by, abs=0.05)
 
     page.get_by_role("tab", name="Mass").click()
+
+    wait_for_rerun(page)
     with page.expect_download() as info:
         page.get_by_role("button", name="Mass table (CSV)").click()
     mass = list(csv.DictReader(io.StringIO(info.value.path().read_text())))
@@ -134,10 +137,11 @@ def test_screenshots_of_each_page(app_page: Page, console_errors: list[str]):
     expect(metric_value(page, "Volume [m³]")).to_have_text("170.0")
     expect(page.locator(".js-plotly-plot").filter(visible=True).first).to_be_visible()
     screenshot(page, "design")
-    for tab in ("Performance", "Tether profiles"):
+    for tab in ("Performance", "Tether profiles", "3-D view"):
         page.get_by_role("tab", name=tab).click()
+        wait_for_rerun(page)
         expect(page.locator(".js-plotly-plot").filter(visible=True).first).to_be_visible()
-        screenshot(page, f"design_{tab.lower().replace(' ', '_')}")
+        screenshot(page, f"design_{tab.lower().replace(' ', '_').replace('-', '')}")
     goto_page(page, "Compare")
     assert_no_exception(page, "Compare page")
     page.get_by_role("button", name="Load the thesis' GUI test cases").click()
@@ -145,6 +149,7 @@ def test_screenshots_of_each_page(app_page: Page, console_errors: list[str]):
     expect(page.get_by_test_id("stDataFrame").filter(visible=True).first).to_be_visible()
     screenshot(page, "compare")
     page.get_by_role("tab", name="Performance").click()
+    wait_for_rerun(page)
     expect(page.locator(".js-plotly-plot").filter(visible=True).first).to_be_visible()
     screenshot(page, "compare_performance")
     goto_page(page, "Method")
@@ -153,6 +158,7 @@ def test_screenshots_of_each_page(app_page: Page, console_errors: list[str]):
     expect(page.get_by_test_id("stMetric").first).to_be_visible()
     screenshot(page, "method")
     page.get_by_role("tab", name="Equations and assumptions").click()
+    wait_for_rerun(page)
     expect(page.get_by_text("Design chain.", exact=True)).to_be_visible()
     screenshot(page, "method_equations")
     assert console_errors == []
