@@ -97,10 +97,11 @@ def test_default_gust_run_plots_real_data(dyn):
     metrics = _df(at, "settling_5pct_s")
     xc = metrics[metrics["signal"] == view.SIGNALS["x_C"][0]].iloc[0]
     assert 0 < xc["settling_5pct_s"] < 130
-    assert {"dyn_snapshot", "dyn_hull"} <= {getattr(c, "key", None)
-                                           for c in at.get("plotly_chart")}
-    assert any(m.label == "Peak blow-by x_C [m]" and float(m.value) == pytest.approx(x.max(),
-               abs=0.05) for m in at.metric)
+    assert {"dyn_snapshot", "dyn_hull"} <= {getattr(c, "key", None) for c in at.get("plotly_chart")}
+    assert any(
+        m.label == "Peak blow-by x_C [m]" and float(m.value) == pytest.approx(x.max(), abs=0.05)
+        for m in at.metric
+    )
 
 
 def test_turbulence_statistics_table(dyn):
@@ -110,8 +111,15 @@ def test_turbulence_statistics_table(dyn):
     _set(dyn, "dyn_int", "light")
     at = _run(dyn)
     stats = _df(at, "rms_fluctuation")
-    assert list(stats.columns) == ["signal", "unit", "mean", "rms_fluctuation",
-                                   "peak_excursion", "min", "max"]
+    assert list(stats.columns) == [
+        "signal",
+        "unit",
+        "mean",
+        "rms_fluctuation",
+        "peak_excursion",
+        "min",
+        "max",
+    ]
     w = stats[stats["signal"] == view.SIGNALS["wind_x"][0]].iloc[0]
     assert w["mean"] == pytest.approx(10.0, abs=1.0)
     assert 0.1 < w["rms_fluctuation"] < 1.5  # light: sigma_u ~ 0.78 m/s over a short record
@@ -160,9 +168,20 @@ def test_modes_table(dyn):
 
 
 def test_csv_of_the_time_histories():
-    form = dict(source=view.THESIS, scenario="steady", speed=8.0, duration=12.0, exponent=1 / 7,
-                roughness=0.03, body="hull", segments=10, damping=1.0, wall=60.0, unsteady=True,
-                profile="uniform")
+    form = dict(
+        source=view.THESIS,
+        scenario="steady",
+        speed=8.0,
+        duration=12.0,
+        exponent=1 / 7,
+        roughness=0.03,
+        body="hull",
+        segments=10,
+        damping=1.0,
+        wall=60.0,
+        unsteady=True,
+        profile="uniform",
+    )
     out = view.run(view.build_request(form, None, {}))
     lines = out["csv"].splitlines()
     header = lines[0].split(",")
