@@ -308,8 +308,16 @@ def collect(res, req: Mapping[str, Any], d=None) -> dict:
         "solver": {k: (float(v) if isinstance(v, float) else v) for k, v in res.stats.items()},
         "is_hull": bool(res.system.is_hull), "csv": res.to_csv(),
         "equilibrium_shift_mm": (1e3 * res.equilibrium.shift if res.equilibrium else None),
-        "tether_segments": res.system.tether.segments, "modes": None,
+        "tether_segments": res.system.tether.segments, "modes": None, "turbulence": None,
     }
+    rec = res.wind.turbulence
+    if rec is not None:
+        p = rec.params
+        fu, fw = rec.variance_fraction
+        out["turbulence"] = {"sigma_u": p.sigma_u, "sigma_w": p.sigma_w, "length_u": p.length_u,
+                             "length_w": p.length_w, "height": p.height_used,
+                             "clamped": bool(p.clamped), "speed": rec.speed, "seed": rec.seed,
+                             "variance_fraction_u": fu, "variance_fraction_w": fw}
     if req.get("modes") and res.system.is_hull is not None:
         try:
             lin = linearise(res.system, wind=res.wind, state=res.y[0])
@@ -326,6 +334,19 @@ def cached_run(request_json: str, _progress: Callable[[float], None] | None = No
     """:func:`run` of a request (JSON text from :func:`request_key`); the progress callback is
     not part of the cache key."""
     return run(json.loads(request_json), _progress)
+
+
+def turbulence_caption(tb: Mapping[str, Any]) -> str:
+    """One line describing the realised Dryden turbulence."""
+    clamp = (" (the hull is above 1000 ft: the low-altitude values at 1000 ft are used)"
+             if tb["clamped"] else "")
+    return (f"Dryden turbulence (MIL-F-8785C low altitude, 8785C length convention) at "
+            f"h = {tb['height']:.0f} m{clamp}: σ_u = {tb['sigma_u']:.2f} m/s, "
+            f"σ_w = {tb['sigma_w']:.2f} m/s, L_u = {tb['length_u']:.0f} m, "
+            f"L_w = {tb['length_w']:.0f} m, convected at V = {tb['speed']:.1f} m/s (frozen "
+            f"turbulence, same u′, w′ along the tether), seed {tb['seed']}; the synthesised record "
+            f"holds {100 * tb['variance_fraction_u']:.1f} % / {100 * tb['variance_fraction_w']:.1f} % "
+            "of σ_u² / σ_w² (the rest lies above the highest frequency).")
 
 
 def current_inputs_or_none(state: Mapping[str, Any]) -> dict | None:

@@ -139,6 +139,9 @@ else:
     st.error(f"The simulation {out['message']}. The time histories up to that point are shown.",
              icon=":material/warning:")
 
+if out.get("turbulence"):
+    st.caption(view.turbulence_caption(out["turbulence"]))
+
 sig = out["signals"]
 k = st.columns(5)
 k[0].metric("Peak blow-by x_C [m]", f"{max(sig['x_C']):.1f}")

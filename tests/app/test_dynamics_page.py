@@ -125,6 +125,9 @@ def test_turbulence_statistics_table(dyn):
     assert 0.1 < w["rms_fluctuation"] < 1.5  # light: sigma_u ~ 0.78 m/s over a short record
     assert w["peak_excursion"] >= w["rms_fluctuation"]
     assert any("RMS fluctuation" in c.value and "t ≥ 20 s" in c.value for c in at.caption)
+    # light: W20 = 15 kt -> sigma_w = 0.77 m/s; at ~300 m sigma_u ~ sigma_w, L_u ~ 305 m
+    cap = next(c.value for c in at.caption if c.value.startswith("Dryden turbulence"))
+    assert "σ_w = 0.77 m/s" in cap and "L_w = 30" in cap
 
 
 def test_saved_case_is_simulated(dyn):
