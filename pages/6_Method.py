@@ -6,6 +6,8 @@ from __future__ import annotations
 import pandas as pd
 import streamlit as st
 
+from aerostat_core.io import rows_to_csv
+
 st.title("Method")
 st.caption(
     "How the design is computed, step by step. The method follows Mahmood (2020, USM MSc thesis, "
@@ -41,8 +43,9 @@ Z up; the aerostat faces into the wind. α is the pitch angle of the hull axis, 
 
     with st.expander("1 · Atmosphere (ISA troposphere)", expanded=True):
         st.markdown(
-            "Air properties at the operating altitude h (site elevation + altitude), "
-            "with an optional temperature offset ΔT for an off-standard day:"
+            "Air properties at the operating altitude (site elevation + altitude; h below "
+            "is its geopotential altitude, h = r₀z/(r₀ + z) with r₀ = 6 356 766 m), with an "
+            "optional temperature offset ΔT for an off-standard day:"
         )
         st.latex(
             r"T = 288.15 - 0.0065\,h + \Delta T,\qquad "
@@ -312,6 +315,7 @@ with tab_val:
             df,
             hide_index=True,
             width="stretch",
+            height=36 * (len(df) + 1) + 3,
             key="validation_table",
             column_config={
                 "Reference": st.column_config.NumberColumn(format="%.4g"),
@@ -319,6 +323,15 @@ with tab_val:
                 "Error [%]": st.column_config.NumberColumn(format="%+.3f"),
                 "Tolerance [%]": st.column_config.NumberColumn(format="%.2f"),
             },
+        )
+        st.download_button(
+            "Validation table (CSV)",
+            data=rows_to_csv(ref).encode("utf-8"),
+            file_name="validation.csv",
+            mime="text/csv",
+            on_click="ignore",
+            icon=":material/download:",
+            key="dl_validation",
         )
 
 with tab_src:

@@ -70,6 +70,8 @@ def test_live_validation_table(method):
     n_ok = sum(bool(r.get("passed", abs(r["error_pct"]) <= r["tolerance_pct"])) for r in ref)
     shown = next(m.value for m in method.metric if m.label == "Checks within tolerance")
     assert shown == f"{n_ok} / {len(ref)}"
+    labels = [b.proto.label for b in method.get("download_button")]
+    assert "Validation table (CSV)" in labels
 
 
 def test_missing_reference_module_shows_a_message(at, clear_cache, monkeypatch):
