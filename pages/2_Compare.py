@@ -17,7 +17,11 @@ st.caption(
 
 
 def _load_gui_cases() -> None:
-    names = state.add_cases(thesis_gui_cases())
+    try:
+        names = state.add_cases(thesis_gui_cases())
+    except ValueError as exc:  # e.g. the case limit
+        st.session_state["compare_feedback"] = ("error", str(exc))
+        return
     st.session_state["compare_feedback"] = (
         "success",
         f"Added the thesis' GUI test cases: {', '.join(names)}.",
@@ -48,12 +52,17 @@ def _delete() -> None:
 def _load_into_design() -> None:
     name = st.session_state.get("load_name")
     cases = state.get_cases()
-    if name in cases:
+    if name not in cases:
+        return
+    try:
         state.set_current_inputs(*inputs_from_dict(cases[name]))
-        st.session_state["compare_feedback"] = (
-            "success",
-            f"“{name}” is now the current design: open the Design page to edit it.",
-        )
+    except ValueError as exc:
+        st.session_state["compare_feedback"] = ("error", f"“{name}” cannot be opened: {exc}")
+        return
+    st.session_state["compare_feedback"] = (
+        "success",
+        f"“{name}” is now the current design: open the Design page to edit it.",
+    )
 
 
 def _on_upload() -> None:

@@ -240,3 +240,16 @@ def test_exports_are_offered(with_gui_cases):
         "Comparison table (CSV)",
     ):
         assert label in labels
+
+
+def test_case_limit_is_a_message_not_a_traceback(compare):
+    from aerostat_core.io import MAX_CASES
+
+    at = compare
+    one = thesis_gui_cases()[GUI[0]]
+    at.session_state["cases"] = {f"c{i}": one for i in range(MAX_CASES - 2)}
+    at.run()
+    _button(at, "Load the thesis' GUI test cases").click().run()
+    assert not at.exception
+    assert any("at most" in e for e in messages(at, "error"))
+    assert len(at.session_state["cases"]) == MAX_CASES - 2
