@@ -224,7 +224,7 @@ def design(req: Requirement | None = None, cfg: Configuration | None = None) -> 
         violations.append(f"blow-by {design_point['blow_by_m']:.1f} m exceeds the limit "
                           f"{req.blow_by_limit:g} m at {req.design_wind:g} m/s")
     for key, text in FLAG_TEXT.items():
-        if key == "no_free_lift":
+        if key in ("no_free_lift", "over_blow_by_limit"):  # reported above in more detail
             continue
         if bool(ev.flags[key][-1]):
             violations.append(f"at the design wind: {text}")

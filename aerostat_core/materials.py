@@ -9,7 +9,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from .validation import check_number
+from .validation import check_name, check_number
 
 
 @dataclass(frozen=True)
@@ -28,7 +28,7 @@ class Fabric:
     areal_density: float = 0.130
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "name", str(self.name))
+        object.__setattr__(self, "name", check_name("Fabric", "name", self.name))
         check_number("Fabric", "areal_density", self.areal_density, 0.0, 2.0, "kg/m2", lo_open=True)
 
 
@@ -64,7 +64,7 @@ class TetherSpec:
     axial_stiffness: float = 1.0e6
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "name", str(self.name))
+        object.__setattr__(self, "name", check_name("TetherSpec", "name", self.name))
         o = "TetherSpec"
         check_number(o, "linear_density", self.linear_density, 0, 1, "kg/m", lo_open=True)
         check_number(o, "diameter", self.diameter, 0, 0.05, "m", lo_open=True)

@@ -24,6 +24,7 @@ FLAG_TEXT = {
     "slack": "slack tether (no upward tension somewhere along it)",
     "low_safety_factor": "tether safety factor below the required value",
     "unstable": "statically unstable (no stable trim)",
+    "over_blow_by_limit": "blow-by above the limit",
 }
 
 
@@ -80,6 +81,7 @@ def evaluate(req: Requirement, cfg: Configuration, af: Airframe, speed) -> Evalu
         "slack": teth.slack | (tz <= 0.0),
         "low_safety_factor": sf < req.min_tether_safety_factor,
         "unstable": ~eq.found | (eq.moment_slope >= 0.0),
+        "over_blow_by_limit": teth.blow_by > req.blow_by_limit * (1.0 + 1e-9),
     }
     return Evaluation(af, speed, eq, loads.lift, tx, tx, tz, teth, sf, flags)
 

@@ -1,9 +1,9 @@
 """Hull sizing: the smallest volume that meets the blow-by limit at the design wind.
 
 Vectorised over a batch of design variables (the optimiser's nested V*(x), methods.md §1.12):
-every design is evaluated on a logarithmic volume grid in one numpy call, the first feasible
-grid volume brackets the answer, and three rounds of 12-point refinement shrink the bracket to
-about 1e-4 relative. No scipy root-finder is involved, so nothing raises on an infeasible case.
+every design is evaluated on a 24-point logarithmic volume grid (ratio 1.49 between points) in
+one numpy call, the first feasible grid volume brackets the answer, and four rounds of 8 interior
+points shrink the bracket to 1.49^(1/9^4) - 1 = 6e-5 relative (52 evaluations per design). No scipy root-finder is involved, so nothing raises on an infeasible case.
 """
 
 from __future__ import annotations
@@ -18,7 +18,9 @@ from .performance import evaluate
 
 #: Volume search range [m3].
 VOLUME_MIN, VOLUME_MAX = 2.0, 2.0e4
-_GRID = np.geomspace(VOLUME_MIN, VOLUME_MAX, 48)
+_GRID = np.geomspace(VOLUME_MIN, VOLUME_MAX, 24)
+#: Points per refinement round inside the bracket.
+_REFINE = 8
 
 
 @dataclass(frozen=True)
@@ -48,7 +50,7 @@ def _feasibility(req, cfg, volume, f, dsf, pos):
 
 
 def size_volume(req: Requirement, cfg: Configuration, fineness_ratio=None, area_change=None,
-                position=None, rounds: int = 3) -> SizingResult:
+                position=None, rounds: int = 4) -> SizingResult:
     """Smallest hull volume with positive free lift, a taut tether and blow-by <= limit.
 
     Parameters
@@ -57,7 +59,7 @@ def size_volume(req: Requirement, cfg: Configuration, fineness_ratio=None, area_
     fineness_ratio, area_change, position : array_like or None
         Design variables (broadcast together); ``None`` takes ``cfg``'s values.
     rounds : int
-        Bracket refinement rounds (12 points each).
+        Bracket refinement rounds (8 interior points each).
 
     Returns
     -------
@@ -76,7 +78,7 @@ def size_volume(req: Requirement, cfg: Configuration, fineness_ratio=None, area_
     k = np.argmax(ok, axis=0)
     lo = np.where(k > 0, _GRID[np.maximum(k - 1, 0)], VOLUME_MIN)
     hi = _GRID[k]
-    t = np.linspace(0.0, 1.0, 13)[1:-1].reshape((-1,) + (1,) * len(shape))
+    t = np.linspace(0.0, 1.0, _REFINE + 2)[1:-1].reshape((-1,) + (1,) * len(shape))
     for _ in range(rounds):
         vs = np.exp(np.log(lo) + (np.log(hi) - np.log(lo)) * t)
         oks, *_ = _feasibility(req, cfg, vs, f, dsf, pos)

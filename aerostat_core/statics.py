@@ -133,7 +133,7 @@ def equilibrium(af: Airframe, aero: AeroModel, speed, iterations: int = 40) -> E
     """Equilibrium pitch: the stable root of M_C(alpha) = 0 nearest to alpha = 0.
 
     Brackets on a 1 deg grid over [-30, 60] deg (roots where M_C falls through zero), then refines
-    every bracket at once with the Illinois (modified regula falsi) method to 1e-10 rad.
+    every bracket at once with the Illinois (modified regula falsi) method to 1e-12 rad.
 
     Parameters
     ----------
@@ -175,8 +175,8 @@ def equilibrium(af: Airframe, aero: AeroModel, speed, iterations: int = 40) -> E
         hi = np.where(pos, hi, x)
         f_hi = np.where(pos, np.where(side == 1, 0.5 * f_hi, f_hi), fx)
         side = np.where(pos, 1, -1)
-        tiny = np.abs(fx) <= 1e-9 * (1.0 + np.abs(f_lo) + np.abs(f_hi))
-        if np.all((np.abs(hi - lo) < 1e-10) | tiny):
+        tiny = np.abs(fx) <= 1e-12 * (1.0 + np.abs(f_lo) + np.abs(f_hi))
+        if np.all((np.abs(hi - lo) < 1e-12) | tiny):
             break
     alpha = x
     # where no stable root: the grid angle with the least |moment|

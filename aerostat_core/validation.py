@@ -70,9 +70,31 @@ def check_choice(owner: str, field: str, value: object, choices: tuple[str, ...]
 
 def check_int(owner: str, field: str, value: object, lo: int, hi: int) -> int:
     """Return ``value`` as int if it is a whole number in [lo, hi], else raise ``ValueError``."""
-    if isinstance(value, bool) or not isinstance(value, Real) or float(value) != int(value):
+    if (isinstance(value, bool) or not isinstance(value, Real) or not math.isfinite(float(value))
+            or float(value) != int(value)):
         raise ValueError(f"{owner}.{field} = {value!r} is not a whole number in [{lo}, {hi}]")
     v = int(value)
     if not lo <= v <= hi:
         raise ValueError(f"{owner}.{field} = {v} is outside the valid range [{lo}, {hi}]")
     return v
+
+
+#: Longest name accepted for catalogue items and cases [characters].
+MAX_NAME_LENGTH = 100
+
+
+def check_name(owner: str, field: str, value: object) -> str:
+    """Return ``value`` as a stripped string of 1-100 characters, else raise ``ValueError``.
+
+    >>> check_name("Fabric", "name", "x" * 101)
+    Traceback (most recent call last):
+    ...
+    ValueError: Fabric.name is 101 characters long; the limit is 100
+    """
+    text = str(value).strip()
+    if not text:
+        raise ValueError(f"{owner}.{field} must not be empty")
+    if len(text) > MAX_NAME_LENGTH:
+        raise ValueError(f"{owner}.{field} is {len(text)} characters long; the limit is "
+                         f"{MAX_NAME_LENGTH}")
+    return text

@@ -94,9 +94,11 @@ def test_design_invariants_hold_over_the_whole_input_domain(req, cfg):
     if found.any():
         m = moment_about_confluence(d.airframe, cfg.aero, np.radians(p.alpha_eq[found]),
                                     p.wind_speed[found])
-        scale = float(d.airframe.buoyancy + d.airframe.aerostat_weight) * float(
-            d.airframe.hull.length)
-        assert np.max(np.abs(m)) <= 1e-7 * scale
+        af = d.airframe
+        q_max = 0.5 * float(af.air_density) * float(p.wind_speed.max()) ** 2
+        force = float(af.buoyancy + af.aerostat_weight) + q_max * float(
+            af.hull.reference_area + af.fins.area_total)
+        assert np.max(np.abs(m)) <= 1e-7 * force * float(af.hull.length)
     # a feasible design meets its blow-by limit
     if d.feasible:
         assert d.design_point["blow_by_m"] <= req.blow_by_limit * (1 + 1e-3)
