@@ -91,12 +91,16 @@ DEFAULT_BOUNDS: dict[str, tuple[float, float]] = {
 }
 
 #: Constraint names, in the column order of ``DesignBatch.constraints``.
-CONSTRAINTS = ("blow_by", "stability", "stall", "free_lift", "safety_factor", "fins_on_hull")
+CONSTRAINTS = (
+    "blow_by", "stability", "weathervane", "stall", "free_lift", "safety_factor", "fins_on_hull",
+)
 
 #: Plain-language meaning of each constraint (g <= 0 means met).
 CONSTRAINT_TEXT = {
     "blow_by": "blow-by at the design wind within the limit",
     "stability": "statically stable trim (C_m_alpha < 0 at the equilibrium angle)",
+    "weathervane": "aerodynamically stable hull (C_m_alpha of hull + fins about the centre of "
+    "volume <= 0): the fins beat the Munk moment without help from the buoyancy pendulum",
     "stall": "equilibrium angle of attack below fin stall",
     "free_lift": "positive free lift",
     "safety_factor": "tether safety factor at least the required value",
@@ -153,6 +157,7 @@ class DesignBatch:
         What stopped the sizing: ``"none"``, ``"blow_by"``, ``"free_lift"``, ``"slack"``, or
         ``"given"`` for a given volume.
     total_mass [kg], gas_cost [USD], blow_by [m], alpha [deg], cm_alpha [1/rad],
+    cm_alpha_aero (aerodynamic C_m_alpha about the centre of volume) [1/rad],
     moment_slope [N m/rad], dynamic_lift [N], drag [N], free_lift [N], buoyancy [N],
     safety_factor [-], tension_top [N], fin_te_ratio (fin trailing edge / hull length) [-],
     length [m], diameter [m] : ndarray
@@ -163,7 +168,7 @@ class DesignBatch:
         Fin stall angle [deg].
     min_safety_factor : float
         Required tether safety factor [-].
-    constraints : ndarray, shape (n, 6)
+    constraints : ndarray, shape (n, 7)
         g values in the order of ``CONSTRAINTS`` (<= 0 is met).
     """
 
@@ -179,6 +184,7 @@ class DesignBatch:
     blow_by: np.ndarray
     alpha: np.ndarray
     cm_alpha: np.ndarray
+    cm_alpha_aero: np.ndarray
     moment_slope: np.ndarray
     dynamic_lift: np.ndarray
     drag: np.ndarray
@@ -232,6 +238,8 @@ class DesignBatch:
             "blow_by": f"blow-by {self.blow_by[i]:.2f} m exceeds the limit "
             f"{self.blow_by_limit[i]:.2f} m",
             "stability": f"statically unstable trim (C_m_alpha = {self.cm_alpha[i]:+.3f} /rad)",
+            "weathervane": "hull aerodynamically unstable about its centre of volume "
+            f"(C_m_alpha = {self.cm_alpha_aero[i]:+.3f} /rad): fins too small or too far forward",
             "stall": f"equilibrium angle {self.alpha[i]:.1f} deg beyond fin stall "
             f"{self.stall_angle:g} deg",
             "free_lift": f"free lift not positive ({self.free_lift[i]:.0f} N)",
@@ -256,6 +264,7 @@ class DesignBatch:
             "blow_by_m": float(self.blow_by[i]),
             "alpha_eq_deg": float(self.alpha[i]),
             "cm_alpha_per_rad": float(self.cm_alpha[i]),
+            "cm_alpha_aero_cv_per_rad": float(self.cm_alpha_aero[i]),
             "dynamic_lift_N": float(self.dynamic_lift[i]),
             "free_lift_N": float(self.free_lift[i]),
             "safety_factor": float(self.safety_factor[i]),
@@ -300,6 +309,7 @@ def _outputs(req: Requirement, cfg: Configuration, volume, f, dsf, pos) -> dict[
         "blow_by": ev.tether.blow_by * one,
         "alpha": np.degrees(ev.equilibrium.alpha) * one,
         "cm_alpha": cma * one,
+        "cm_alpha_aero": ev.weathervane_slope / (q * af.hull.reference_area * af.hull.length) * one,
         "moment_slope": ev.equilibrium.moment_slope * one,
         "dynamic_lift": ev.lift * one,
         "drag": ev.drag * one,
@@ -316,7 +326,7 @@ def _outputs(req: Requirement, cfg: Configuration, volume, f, dsf, pos) -> dict[
 
 
 def _constraint_matrix(out: dict, limit: np.ndarray, stall_deg: float, sf_min: float) -> np.ndarray:
-    """Constraint values g (n, 6) from evaluated outputs (see the module docstring table).
+    """Constraint values g (n, 7) from evaluated outputs (see the module docstring table).
 
     Parameters
     ----------
@@ -335,6 +345,7 @@ def _constraint_matrix(out: dict, limit: np.ndarray, stall_deg: float, sf_min: f
         [
             out["blow_by"] / limit - 1.0,
             stab,
+            out["cm_alpha_aero"],
             np.abs(out["alpha"]) / stall_deg - 1.0,
             -out["free_lift"] / np.maximum(np.abs(out["buoyancy"]), 1e-9),
             1.0 - out["safety_factor"] / sf_min,
@@ -442,6 +453,7 @@ def evaluate_designs(
         blow_by=out["blow_by"],
         alpha=out["alpha"],
         cm_alpha=out["cm_alpha"],
+        cm_alpha_aero=out["cm_alpha_aero"],
         moment_slope=out["moment_slope"],
         dynamic_lift=out["dynamic_lift"],
         drag=out["drag"],

@@ -12,7 +12,7 @@ import numpy as np
 
 from .airframe import Airframe
 from .inputs import Configuration, Requirement
-from .statics import Equilibrium, aero_loads, equilibrium, moment_coefficient
+from .statics import Equilibrium, aero_loads, equilibrium, moment_coefficient, weathervane_slope
 from .tether import TetherSolution, solve_tether
 from .wind import profile_speed
 
@@ -25,6 +25,8 @@ FLAG_TEXT = {
     "low_safety_factor": "tether safety factor below the required value",
     "unstable": "statically unstable (no stable trim)",
     "over_blow_by_limit": "blow-by above the limit",
+    "weathervane_unstable": "aerodynamically unstable about the centre of volume (fins lose to "
+                            "the Munk moment)",
 }
 
 
@@ -34,6 +36,7 @@ class Evaluation:
 
     alpha [rad], moment_slope dM_C/dalpha [N m/rad], lift (dynamic) [N], drag [N],
     tension_x/z at the confluence point [N], tether (TetherSolution), safety_factor [-],
+    weathervane_slope (d aerodynamic moment about the centre of volume / d alpha) [N m/rad],
     flags (dict of bool arrays, keys of ``FLAG_TEXT``).
     """
 
@@ -46,6 +49,7 @@ class Evaluation:
     tension_z: np.ndarray
     tether: TetherSolution
     safety_factor: np.ndarray
+    weathervane_slope: np.ndarray
     flags: dict
 
 
@@ -74,6 +78,7 @@ def evaluate(req: Requirement, cfg: Configuration, af: Airframe, speed) -> Evalu
     tmax = np.max(teth.tension, axis=0)
     sf = cfg.tether.breaking_strength / np.maximum(tmax, 1e-9)
     stall = np.radians(cfg.aero.fin_stall_angle_deg)
+    wv = weathervane_slope(af, cfg.aero, eq.alpha, speed) * np.ones_like(eq.alpha)
     flags = {
         "tether_over_45": teth.max_angle_from_vertical > np.radians(45.0),
         "past_stall": np.abs(eq.alpha) > stall,
@@ -82,8 +87,9 @@ def evaluate(req: Requirement, cfg: Configuration, af: Airframe, speed) -> Evalu
         "low_safety_factor": sf < req.min_tether_safety_factor,
         "unstable": ~eq.found | (eq.moment_slope >= 0.0),
         "over_blow_by_limit": teth.blow_by > req.blow_by_limit * (1.0 + 1e-9),
+        "weathervane_unstable": (wv > 0.0) & (speed > 0.0),
     }
-    return Evaluation(af, speed, eq, loads.lift, tx, tx, tz, teth, sf, flags)
+    return Evaluation(af, speed, eq, loads.lift, tx, tx, tz, teth, sf, wv, flags)
 
 
 @dataclass(frozen=True)
@@ -92,8 +98,9 @@ class PerformanceTable:
     wind_speed [m/s], alpha_eq [deg], dynamic_lift [N], drag [N], blow_by [m], flying_height [m],
     altitude_loss [m], tension_top [N], tension_winch [N], tether_angle_top [deg from vertical],
     tether_angle_winch [deg from vertical], safety_factor [-], cm_alpha [1/rad] (C_m slope about
-    the confluence point; NaN-free: 0 at zero wind, where C_m is undefined), flags (dict of bool
-    arrays) and ``limited`` (any flag set)."""
+    the confluence point; NaN-free: 0 at zero wind, where C_m is undefined), cm_alpha_aero
+    [1/rad] (aerodynamic moment slope about the centre of volume, the weathervane stability;
+    0 at zero wind), flags (dict of bool arrays) and ``limited`` (any flag set)."""
 
     wind_speed: np.ndarray
     alpha_eq: np.ndarray
@@ -108,6 +115,7 @@ class PerformanceTable:
     tether_angle_winch: np.ndarray
     safety_factor: np.ndarray
     cm_alpha: np.ndarray
+    cm_alpha_aero: np.ndarray
     flags: dict
 
     @property
@@ -136,6 +144,7 @@ class PerformanceTable:
                 "tether_angle_winch_deg": float(self.tether_angle_winch[i]),
                 "safety_factor": float(self.safety_factor[i]),
                 "cm_alpha_per_rad": float(self.cm_alpha[i]),
+                "cm_alpha_aero_cv_per_rad": float(self.cm_alpha_aero[i]),
                 "flags": "; ".join(FLAG_TEXT[k] for k, f in self.flags.items() if f[i]),
             })
         return out
@@ -146,7 +155,9 @@ def performance_table(ev: Evaluation) -> PerformanceTable:
     af = ev.airframe
     q = 0.5 * af.air_density * ev.speed**2
     denom = q * af.hull.reference_area * af.hull.length
-    cma = np.where(q > 0, ev.equilibrium.moment_slope / np.where(q > 0, denom, 1.0), 0.0)
+    safe = np.where(q > 0, denom, 1.0)
+    cma = np.where(q > 0, ev.equilibrium.moment_slope / safe, 0.0)
+    cma_aero = np.where(q > 0, ev.weathervane_slope / safe, 0.0)
     t = ev.tether
     return PerformanceTable(
         wind_speed=ev.speed,
@@ -162,6 +173,7 @@ def performance_table(ev: Evaluation) -> PerformanceTable:
         tether_angle_winch=90.0 - np.degrees(t.elevation[-1]),
         safety_factor=ev.safety_factor,
         cm_alpha=cma,
+        cm_alpha_aero=cma_aero,
         flags=ev.flags,
     )
 

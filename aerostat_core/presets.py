@@ -21,10 +21,10 @@ from .inputs import Configuration, FinSpec, HullSpec, LiftingGas, Requirement
 THESIS_FIN_AREA_RATIO = 0.227
 #: Blow-by limit of the thesis preset at the 15 m/s design wind [m]. CALIBRATED, not found in
 #: the thesis (methods.md G5): chosen so that the optimiser (aerostat_core.optimize, default
-#: bounds) sizes the optimum at ~120 m3 as the thesis abstract reports (45.8 m gives 119.9 m3);
-#: the optimum's mass is then a prediction (64.9 kg vs the thesis' 71.6 kg). 0.1 x altitude
-#: (30 m) would size the optimum at ~256 m3.
-THESIS_BLOW_BY_LIMIT = 45.8
+#: bounds, all seven constraints including weathervane stability) sizes the optimum at ~120 m3
+#: as the thesis abstract reports (53.4 m gives 119.9 m3); the optimum's mass is then a
+#: prediction (64.7 kg vs the thesis' 71.6 kg). 0.1 x altitude (30 m) would size ~250 m3.
+THESIS_BLOW_BY_LIMIT = 53.4
 
 
 def thesis_requirement() -> Requirement:
@@ -51,9 +51,10 @@ def thesis_baseline() -> tuple[Requirement, Configuration]:
 
 #: Design variables of the optimised configuration found by aerostat_core.optimize with the
 #: thesis preset, default bounds f [2.5, 4.5], Delta S_f [-50, 100] %, Delta l_f [0.60, 0.75]
-#: (SLSQP, surrogate and particle swarm agree within 0.2 %; fineness ratio [-], fin-area change
-#: [%], fin position [-]); the volume is sized (119.9 m3, 64.9 kg). PREDICTED, not calibrated.
-THESIS_OPTIMUM = {"fineness_ratio": 3.033, "area_change": -43.64, "position": 0.60}
+#: (SLSQP, surrogate and particle swarm agree within 0.1 %; fineness ratio [-], fin-area change
+#: [%], fin position [-]); the volume is sized (119.9 m3, 64.7 kg). Active constraints: blow-by,
+#: weathervane stability and the lower fineness bound. PREDICTED, not calibrated.
+THESIS_OPTIMUM = {"fineness_ratio": 2.5, "area_change": -30.79, "position": 0.673}
 
 
 def thesis_optimised() -> tuple[Requirement, Configuration]:

@@ -115,6 +115,45 @@ def moment_about_confluence(af: Airframe, aero: AeroModel, alpha, speed, cd0=Non
     return -m + ld.hull_moment
 
 
+def aerodynamic_moment(af: Airframe, aero: AeroModel, alpha, speed, xi_ref, cd0=None):
+    """Nose-up aerodynamic pitching moment of hull and fins about axis station ``xi_ref`` [N m].
+
+    M = -sum (dX F_Z - dZ F_X) + M_h over the hull force (D_h, L_h) at xi_m with its couple M_h
+    and the fin force (D_f, L_f) at the fin aerodynamic centre; no buoyancy, weight or tether.
+    Its slope dM/dalpha about the centre of volume is the weathervane (aerodynamic) stability of
+    the free hull: negative means the hull turns into a change of the flow direction, as a
+    vertical gust, without help from the buoyancy pendulum below the confluence point.
+
+    Parameters
+    ----------
+    af : Airframe
+    aero : AeroModel
+    alpha : array_like
+        Angle of attack [rad].
+    speed : array_like
+        Airspeed [m/s].
+    xi_ref : array_like
+        Reference station on the hull axis, from the nose [m].
+
+    Notes
+    -----
+    Source: methods.md §1.8 ("Cm_alpha can also be quoted about CB/CG"); the need for the fins to
+    beat the Munk moment: dynamics.md §1.3.
+    """
+    ld = aero_loads(af, aero, alpha, speed, cd0)
+    ca, sa = np.cos(alpha), np.sin(alpha)
+    m = _ccw(af.xi_m - xi_ref, 0.0, ca, sa, ld.hull_drag, ld.hull_lift)
+    m = m + _ccw(af.fins.xi_ac - xi_ref, 0.0, ca, sa, ld.fin_drag, ld.fin_lift)
+    return -m + ld.hull_moment
+
+
+def weathervane_slope(af: Airframe, aero: AeroModel, alpha, speed, cd0=None, h: float = 1e-5):
+    """d(aerodynamic moment about the centre of volume)/d(alpha) at ``alpha`` [N m/rad]
+    (central difference, step ``h`` [rad]); negative = weathervane stable."""
+    return (aerodynamic_moment(af, aero, alpha + h, speed, af.hull.xi_cb, cd0)
+            - aerodynamic_moment(af, aero, alpha - h, speed, af.hull.xi_cb, cd0)) / (2.0 * h)
+
+
 #: Angle-of-attack grid used to bracket the equilibrium [rad].
 ALPHA_GRID = np.radians(np.arange(-30.0, 60.01, 1.0))
 

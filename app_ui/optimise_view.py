@@ -49,6 +49,7 @@ from aerostat_core.optimize import (
     solve,
     thesis_comparison_rows,
 )
+from aerostat_core.presets import THESIS_BLOW_BY_LIMIT
 from aerostat_core.sensitivity import (
     OUTPUTS,
     SensitivityMap,
@@ -875,11 +876,12 @@ def render_results(job: Mapping[str, Any], baseline_inputs_json: str) -> None:
             },
         )
         st.caption(
-            "Calibrated: the blow-by limit (45.8 m at 15 m/s, not given in the thesis) so "
-            "that the optimum is ~120 m³. Predicted: the optimum's mass and variables. "
-            "Our optimum is lighter than the thesis' because it halves the fin area "
-            "(ΔS_f ≈ −44 %), which the thesis' 'fin area increase' variable probably "
-            "did not allow."
+            f"Calibrated: the blow-by limit ({THESIS_BLOW_BY_LIMIT:g} m at 15 m/s, not given "
+            "in the thesis) so that the optimum is ~120 m³. Predicted: the optimum's mass and "
+            "variables. Our optimum is lighter than the thesis' because it shrinks the fins "
+            "(ΔS_f ≈ −31 %, as far as weathervane stability allows) and takes the shortest "
+            "hull allowed (f = 2.5); the thesis' 'fin area increase' variable probably did "
+            "not let the fins shrink."
         )
     st.plotly_chart(performance_figure(cmp["baseline"], cmp["optimum"]), key="opt_performance")
     st.download_button(
