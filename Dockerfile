@@ -10,7 +10,8 @@ ENV OPENBLAS_NUM_THREADS=1 \
     PYTHONDONTWRITEBYTECODE=1 \
     PIP_NO_CACHE_DIR=1 \
     PIP_DISABLE_PIP_VERSION_CHECK=1 \
-    STREAMLIT_BROWSER_GATHER_USAGE_STATS=false
+    STREAMLIT_BROWSER_GATHER_USAGE_STATS=false \
+    NUMBA_CACHE_DIR=/var/cache/numba
 
 RUN groupadd --system --gid 10001 app \
     && useradd --system --uid 10001 --gid app --create-home --home-dir /home/app \
@@ -24,6 +25,12 @@ RUN pip install --no-cache-dir -r requirements.txt
 
 # The code stays owned by root: the app user can read it, not change it.
 COPY . .
+
+# Compile the dynamics' numba kernels once at build time (about 15 s), so the first simulation
+# in a container does not pay for it; the cache stays writable for the app user.
+RUN mkdir -p /var/cache/numba \
+    && python -c "from aerostat_core.dynamics import warm_up; warm_up()" \
+    && chown -R 10001:10001 /var/cache/numba
 
 # Numeric uid (the "app" user above): lets runtimes check runAsNonRoot without reading /etc/passwd.
 USER 10001:10001

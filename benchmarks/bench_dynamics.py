@@ -125,8 +125,8 @@ def main() -> None:
 
 
 def thesis_comparison() -> None:
-    """Responses of the thesis design (120 m3 NPL, f = 4, 10 kg at 300 m) to the three thesis wind
-    cases, with the parameters printed (the thesis' own parameters are not known)."""
+    """Responses of the thesis preset's optimised design (about 120 m3, 10 kg at 300 m) to the
+    three thesis wind cases, with the parameters printed (the thesis' own are not known)."""
     from aerostat_core.dynamics.simulate import response_metrics
 
     d = cases.thesis_design()

@@ -66,12 +66,16 @@ def r3_wind() -> WindScenario:
 R3_TOP0 = (0.0, 319.5)
 
 
-def thesis_design(volume: float = 120.0, fineness_ratio: float = 4.0):
-    """The thesis' optimised aerostat as the issue describes it: the static engine's thesis preset
-    with an NPL hull of ``volume`` [m3] and fineness ``fineness_ratio`` (120 m3, f = 4: about
-    70 kg with a 10 kg payload at 300 m)."""
+def thesis_design(volume: float | None = None, fineness_ratio: float | None = None):
+    """The thesis' optimised aerostat: the static engine's ``thesis_optimised()`` preset (about
+    120 m3, 10 kg payload at 300 m, volume sized to the calibrated blow-by limit). ``volume`` [m3]
+    and ``fineness_ratio`` [-] override the preset (e.g. 120 m3 with f = 4, the issue's reading of
+    the thesis)."""
     from .. import design, thesis_optimised
 
     req, cfg = thesis_optimised()
-    cfg = cfg.with_design_variables(fineness_ratio=fineness_ratio, volume=volume)
+    if volume is not None:
+        cfg = cfg.with_design_variables(volume=volume)
+    if fineness_ratio is not None:
+        cfg = cfg.with_design_variables(fineness_ratio=fineness_ratio)
     return design(req, cfg)
