@@ -77,7 +77,8 @@ def _parser() -> argparse.ArgumentParser:
     d.add_argument("--isa-offset", type=float, help="ISA temperature offset [K]")
     d.add_argument("--wind-max", type=float, help="largest sweep wind speed [m/s]")
     d.add_argument("--design-wind", type=float, help="design wind speed [m/s]")
-    d.add_argument("--blow-by-limit", type=float, help="blow-by limit at the design wind [m]")
+    d.add_argument("--blow-by-limit", type=float,
+                   help="blow-by limit at the design wind [m] (default 0.1 x altitude)")
     d.add_argument("--volume", type=float, help="hull volume [m3] (default: sized)")
     d.add_argument("--config", type=Path, help="JSON design file with every input")
     d.add_argument("--csv", type=Path, help="write geometry, mass and performance CSV here")
@@ -98,7 +99,7 @@ def main(argv: list[str] | None = None) -> int:
             req, cfg = Requirement(), Configuration()
         changes = {f: getattr(args, o) for o, f in _OPTIONS.items() if getattr(args, o) is not None}
         if "blow_by_limit" not in changes and "altitude" in changes and args.config is None:
-            changes["blow_by_limit"] = min(req.blow_by_limit, 0.1 * changes["altitude"])
+            changes["blow_by_limit"] = 0.1 * changes["altitude"]  # methods.md G5 default
         req = replace(req, **changes)
         if args.volume is not None:
             cfg = cfg.with_design_variables(volume=args.volume)
@@ -108,6 +109,10 @@ def main(argv: list[str] | None = None) -> int:
     d = design(req, cfg)
     print(format_summary(d))
     if args.csv is not None:
-        args.csv.write_text(design_csv(d))
+        try:
+            args.csv.write_text(design_csv(d))
+        except OSError as exc:
+            print(f"error: --csv {args.csv}: {exc.strerror}", file=sys.stderr)
+            return 2
         print(f"  CSV written to {args.csv}")
     return 0

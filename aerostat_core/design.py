@@ -223,7 +223,14 @@ def design(req: Requirement | None = None, cfg: Configuration | None = None) -> 
     if design_point["blow_by_m"] > req.blow_by_limit * (1 + 1e-3) and not violations:
         violations.append(f"blow-by {design_point['blow_by_m']:.1f} m exceeds the limit "
                           f"{req.blow_by_limit:g} m at {req.design_wind:g} m/s")
+    if sizing is not None and bool(ev.flags["low_safety_factor"][-1]) and not violations:
+        violations.append(
+            f"tether safety factor {design_point['safety_factor']:.2f} is below the required "
+            f"{req.min_tether_safety_factor:g} at the smallest hull that meets the blow-by limit; a "
+            "larger hull only pulls harder: choose a stronger tether or relax the blow-by limit")
     for key, text in FLAG_TEXT.items():
+        if key == "low_safety_factor" and sizing is not None and violations:
+            continue
         if key in ("no_free_lift", "over_blow_by_limit"):  # reported above in more detail
             continue
         if bool(ev.flags[key][-1]):

@@ -31,6 +31,7 @@ from .inputs import (
     WindProfile,
 )
 from .materials import Fabric, TetherSpec
+from .validation import check_name
 
 FORMAT_DESIGN = "aerostat-design"
 FORMAT_CASES = "aerostat-cases"
@@ -120,7 +121,7 @@ def inputs_from_dict(data: Any) -> tuple[Requirement, Configuration]:
     if fmt != FORMAT_DESIGN:
         raise ValueError(f"format = {fmt!r}: expected {FORMAT_DESIGN!r}")
     version = data.get("version", VERSION)
-    if version != VERSION:
+    if type(version) is not int or version != VERSION:
         raise ValueError(f"version = {version!r}: this program reads version {VERSION}")
     unknown = sorted(set(data) - {"format", "version", "requirement", "configuration", "name"})
     if unknown:
@@ -146,6 +147,8 @@ def _loads_limited(text: str | bytes) -> Any:
         raise ValueError(f"file is not valid JSON: {exc.msg} at line {exc.lineno}") from None
     except RecursionError:
         raise ValueError("file is nested too deeply") from None
+    except ValueError as exc:  # e.g. an integer with more digits than Python converts
+        raise ValueError(f"file has a number that cannot be read: {exc}") from None
 
 
 def _reject_constant(name: str) -> Any:
@@ -175,10 +178,10 @@ def cases_from_json(text: str | bytes) -> dict[str, dict[str, Any]]:
     data = _loads_limited(text)
     if isinstance(data, dict) and data.get("format") == FORMAT_DESIGN:
         req, cfg = inputs_from_dict(data)
-        return {str(data.get("name", "imported")): inputs_to_dict(req, cfg)}
+        return {check_name("design", "name", data.get("name", "imported")): inputs_to_dict(req, cfg)}
     if not isinstance(data, dict) or data.get("format") != FORMAT_CASES:
         raise ValueError(f"file is neither {FORMAT_CASES!r} nor {FORMAT_DESIGN!r} JSON")
-    if data.get("version") != VERSION:
+    if type(data.get("version")) is not int or data.get("version") != VERSION:
         raise ValueError(f"version = {data.get('version')!r}: this program reads version {VERSION}")
     cases = data.get("cases")
     if not isinstance(cases, dict):

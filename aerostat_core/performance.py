@@ -23,7 +23,7 @@ FLAG_TEXT = {
     "no_free_lift": "free lift not positive",
     "slack": "slack tether (no upward tension somewhere along it)",
     "low_safety_factor": "tether safety factor below the required value",
-    "unstable": "statically unstable (no stable trim)",
+    "unstable": "statically unstable (no stable trim within +-80 deg)",
     "over_blow_by_limit": "blow-by above the limit",
     "weathervane_unstable": "aerodynamically unstable about the centre of volume (fins lose to "
                             "the Munk moment)",

@@ -17,7 +17,10 @@ from dataclasses import replace
 
 from .inputs import Configuration, FinSpec, HullSpec, LiftingGas, Requirement
 
-#: Thesis preset: fin planform / hull area, calibrated to Table 2.2's 7.8 kg of fins.
+#: Thesis preset: fin planform / hull area, calibrated to Table 2.2's 7.8 kg of fins. Table 2.2
+#: fixes only the product area_ratio x fabric_factor (0.227 x 2.2, with 4 fins at 130 g/m2); the
+#: split between them (fabric factor 2.2 = two faces + 10 % seams and ribs) is an assumption, and
+#: the fin planform drives trim, weathervane stability and the optimum (see the Sensitivity page).
 THESIS_FIN_AREA_RATIO = 0.227
 #: Blow-by limit of the thesis preset at the 15 m/s design wind [m]. CALIBRATED, not found in
 #: the thesis (methods.md G5): chosen so that the optimiser (aerostat_core.optimize, default

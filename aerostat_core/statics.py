@@ -154,8 +154,10 @@ def weathervane_slope(af: Airframe, aero: AeroModel, alpha, speed, cd0=None, h: 
             - aerodynamic_moment(af, aero, alpha - h, speed, af.hull.xi_cb, cd0)) / (2.0 * h)
 
 
-#: Angle-of-attack grid used to bracket the equilibrium [rad].
+#: Angle-of-attack grid used to bracket the equilibrium [rad]: where every usual trim lies.
 ALPHA_GRID = np.radians(np.arange(-30.0, 60.01, 1.0))
+#: Wider grid searched only where the usual one holds no stable root [rad] (J&D: |alpha| < 90).
+ALPHA_GRID_WIDE = np.radians(np.arange(-80.0, 80.01, 1.0))
 
 
 @dataclass(frozen=True)
@@ -171,7 +173,8 @@ class Equilibrium:
 def equilibrium(af: Airframe, aero: AeroModel, speed, iterations: int = 40) -> Equilibrium:
     """Equilibrium pitch: the stable root of M_C(alpha) = 0 nearest to alpha = 0.
 
-    Brackets on a 1 deg grid over [-30, 60] deg (roots where M_C falls through zero), then refines
+    Brackets on a 1 deg grid over [-30, 60] deg (then [-80, 80] deg where that holds no stable
+    root; J&D needs |alpha| < 90 deg) (roots where M_C falls through zero), then refines
     every bracket at once with the Illinois (modified regula falsi) method to 1e-12 rad.
 
     Parameters
@@ -188,16 +191,19 @@ def equilibrium(af: Airframe, aero: AeroModel, speed, iterations: int = 40) -> E
     speed = np.asarray(speed, float)
     shape = np.broadcast(af.hull.length, speed).shape
     cd0 = axial_drag_coefficient(af, aero, speed)
-    grid = ALPHA_GRID.reshape((-1,) + (1,) * len(shape))
-    m = moment_about_confluence(af, aero, grid, speed, cd0) * np.ones((1,) + shape)
-    down = (m[:-1] > 0.0) & (m[1:] <= 0.0)
-    mid = 0.5 * (grid[:-1] + grid[1:]) * np.ones((1,) + shape)
-    score = np.where(down, np.abs(mid), np.inf)
-    k = np.argmin(score, axis=0)
-    found = np.isfinite(np.min(score, axis=0))
+    for alphas in (ALPHA_GRID, ALPHA_GRID_WIDE):
+        grid = alphas.reshape((-1,) + (1,) * len(shape))
+        m = moment_about_confluence(af, aero, grid, speed, cd0) * np.ones((1,) + shape)
+        down = (m[:-1] > 0.0) & (m[1:] <= 0.0)
+        mid = 0.5 * (grid[:-1] + grid[1:]) * np.ones((1,) + shape)
+        score = np.where(down, np.abs(mid), np.inf)
+        k = np.argmin(score, axis=0)
+        found = np.isfinite(np.min(score, axis=0))
+        if np.all(found):
+            break
     idx = np.indices(shape)
-    lo = ALPHA_GRID[k]
-    hi = ALPHA_GRID[k + 1]
+    lo = alphas[k]
+    hi = alphas[k + 1]
     f_lo = m[(k,) + tuple(idx)]
     f_hi = m[(k + 1,) + tuple(idx)]
     # Illinois iterations on all brackets at once; x is the running root estimate
@@ -220,7 +226,7 @@ def equilibrium(af: Airframe, aero: AeroModel, speed, iterations: int = 40) -> E
     alpha = x
     # where no stable root: the grid angle with the least |moment|
     kmin = np.argmin(np.abs(m), axis=0)
-    alpha = np.where(found, alpha, ALPHA_GRID[kmin])
+    alpha = np.where(found, alpha, alphas[kmin])
     h = 1e-5
     slope = (
         moment_about_confluence(af, aero, alpha + h, speed, cd0)

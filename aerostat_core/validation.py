@@ -45,9 +45,13 @@ def check_number(
     rng = f"{'(' if lo_open else '['}{lo:g}, {hi:g}{')' if hi_open else ']'}{u}"
     if isinstance(value, bool) or not isinstance(value, Real):
         raise ValueError(f"{owner}.{field} = {value!r} is not a number; valid range {rng}")
-    v = float(value)
+    try:
+        v = float(value)
+    except OverflowError:  # an integer too large for a float
+        v = math.inf
     if not math.isfinite(v):
-        raise ValueError(f"{owner}.{field} = {value!r} is not finite; valid range {rng}")
+        shown = repr(value) if len(repr(value)) <= 30 else repr(value)[:27] + "..."
+        raise ValueError(f"{owner}.{field} = {shown} is not finite; valid range {rng}")
     below = v <= lo if lo_open else v < lo
     above = v >= hi if hi_open else v > hi
     if below or above:
@@ -70,8 +74,12 @@ def check_choice(owner: str, field: str, value: object, choices: tuple[str, ...]
 
 def check_int(owner: str, field: str, value: object, lo: int, hi: int) -> int:
     """Return ``value`` as int if it is a whole number in [lo, hi], else raise ``ValueError``."""
-    if (isinstance(value, bool) or not isinstance(value, Real) or not math.isfinite(float(value))
-            or float(value) != int(value)):
+    try:
+        bad = (isinstance(value, bool) or not isinstance(value, Real)
+               or not math.isfinite(float(value)) or float(value) != int(value))
+    except OverflowError:
+        bad = True
+    if bad:
         raise ValueError(f"{owner}.{field} = {value!r} is not a whole number in [{lo}, {hi}]")
     v = int(value)
     if not lo <= v <= hi:
@@ -94,6 +102,8 @@ def check_name(owner: str, field: str, value: object) -> str:
     text = str(value).strip()
     if not text:
         raise ValueError(f"{owner}.{field} must not be empty")
+    if any(ord(ch) < 32 for ch in text):
+        raise ValueError(f"{owner}.{field} contains control characters")
     if len(text) > MAX_NAME_LENGTH:
         raise ValueError(f"{owner}.{field} is {len(text)} characters long; the limit is "
                          f"{MAX_NAME_LENGTH}")

@@ -120,9 +120,9 @@ def test_performance_plots_show_the_engine_curves(at):
 
 
 def test_rows_over_a_limit_stand_out(at):
-    submit(at, in_min_sf=6.0)  # the baseline's safety factor drops below 6 above ~13 m/s
+    submit(at, in_min_sf=15.0)  # the baseline's safety factor drops below 15 above 13 m/s
     req, cfg = thesis_baseline()
-    d = design(replace(req, min_tether_safety_factor=6.0), cfg)
+    d = design(replace(req, min_tether_safety_factor=15.0), cfg)
     show_tab(at, "Performance")
     limited = np.asarray(d.performance.limited, bool)
     assert limited.any() and not limited.all()

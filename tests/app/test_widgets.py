@@ -60,7 +60,7 @@ def test_display_units_convert(base):
     values = widget_values(base)
     assert values["in_fin_pos"] == 68.0  # fraction 0.68 -> % of hull length
     assert values["in_hull_gsm"] == 130.0  # 0.130 kg/m2 -> g/m2
-    assert values["in_tether_mbl"] == 8.0  # 8000 N -> kN
+    assert values["in_tether_mbl"] == 20.0  # 20000 N -> kN
     assert values["in_purity"] == 100.0
     values["in_fin_pos"] = 70.0
     values["in_purity"] = 98.0
@@ -191,7 +191,7 @@ def test_tether_figure_is_to_scale_and_marks_winch_and_aerostat(rep):
 
 def test_limit_markers_only_on_limited_rows():
     req, cfg = thesis_baseline()
-    r = design_report(design(replace(req, min_tether_safety_factor=6.0), cfg))
+    r = design_report(design(replace(req, min_tether_safety_factor=15.0), cfg))
     fig = plots.performance_figure(r, "blow_by")
     marks = next(t for t in fig.data if t.name == plots.LIMIT_TRACE)
     np.testing.assert_allclose(marks.x, r["perf"]["wind_speed"][r["perf"]["limited"]])
@@ -208,7 +208,7 @@ def test_default_tether_speeds():
 
 def test_performance_table_highlights_limited_rows():
     req, cfg = thesis_baseline()
-    r = design_report(design(replace(req, min_tether_safety_factor=6.0), cfg))
+    r = design_report(design(replace(req, min_tether_safety_factor=15.0), cfg))
     df = plots.performance_frame(r["performance_rows"])
     assert "Blow-by [m]" in df and "Safety factor [-]" in df
     assert not (np.signbit(df["Blow-by [m]"]) & (df["Blow-by [m]"] == 0)).any()  # no -0.0

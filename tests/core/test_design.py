@@ -170,3 +170,32 @@ def test_bad_input_message_shows_value_and_range():
     with pytest.raises(ValueError) as e:
         LiftingGas(purity=1.5)
     assert str(e.value) == "LiftingGas.purity = 1.5 is outside the valid range (0, 1]"
+
+
+@pytest.mark.parametrize("offset, drop", [(-0.2, 0.6), (0.2, 0.05)])
+def test_trim_outside_the_usual_range_is_still_found(offset, drop):
+    from aerostat_core import ConfluenceSpec, HullSpec
+
+    cfg = Configuration(confluence=ConfluenceSpec(xi_offset=offset, drop_ratio=drop),
+                        hull=HullSpec(volume=200.0))
+    d = design(Requirement(), cfg)
+    ok = ~d.performance.flags["unstable"]
+    assert ok[0] and ok[:10].all()  # calm and light wind: a stable trim exists and is found
+    assert abs(d.performance.alpha_eq[0]) > 30.0  # outside the first search grid
+    m = moment_about_confluence(d.airframe, cfg.aero, np.radians(d.performance.alpha_eq[ok]),
+                                d.performance.wind_speed[ok])
+    assert np.max(np.abs(m)) < 1e-6 * float(d.airframe.buoyancy * d.airframe.hull.length)
+
+
+def test_sized_hull_too_strong_for_the_tether_says_so():
+    from aerostat_core import TetherSpec
+
+    weak = TetherSpec("weak", 0.02, 0.005, 1.0, 0.01, 3000.0, 1e6)
+    d = design(Requirement(), Configuration(tether=weak))
+    assert not d.feasible
+    assert any("stronger tether" in v for v in d.violations)
+
+
+def test_default_requirement_gives_a_feasible_design():
+    d = design(Requirement())
+    assert d.feasible, d.violations

@@ -44,6 +44,12 @@ def test_json_round_trip_keeps_every_input():
         (b"\xff\xfe", "UTF-8"),
         (b"[" * 100000 + b"]" * 100000, "nested"),
         (b" " * (MAX_JSON_BYTES + 1), "limit"),
+        (b'{"requirement": {"payload_mass": 1' + b"0" * 400 + b"}}", "payload_mass .* not finite"),
+        (b'{"requirement": {"payload_mass": 1' + b"0" * 5000 + b"}}", "number that cannot"),
+        (b'{"configuration": {"tether_segments": 1' + b"0" * 400 + b"}}", "tether_segments"),
+        (json.dumps({"version": True}), "version"),
+        (json.dumps({"configuration": {"tether": {"name": "a\nb"}}}), "control characters"),
+        (json.dumps({"configuration": {"tether": {"axial_stiffness": 1e-3}}}), "axial_stiffness"),
     ],
 )
 def test_hostile_design_files_get_a_clear_message(text, message):
@@ -106,3 +112,14 @@ def test_cli_bad_value_exits_2_with_one_line(argv, field, capsys):
 def test_design_csv_has_units_in_columns():
     text = design_csv(design(*thesis_baseline()))
     assert "mass_kg" in text and "tension_top_N" in text and "alpha_eq_deg" in text
+
+
+def test_cli_default_blow_by_limit_is_a_tenth_of_the_altitude(capsys):
+    assert main(["design", "--payload", "10", "--altitude", "500", "--volume", "170"]) == 0
+    out = capsys.readouterr().out
+    assert "exceeds the limit 50 m" in out or "feasible: all requirements met" in out
+
+
+def test_cli_unwritable_csv_exits_2(capsys):
+    assert main(["design", "--volume", "170", "--csv", "/nonexistent/dir/x.csv"]) == 2
+    assert "--csv" in capsys.readouterr().err

@@ -129,7 +129,7 @@ def test_design_report_holds_the_engine_numbers(baseline):
 
 def test_performance_rows_flag_the_limited_rows():
     req, cfg = thesis_baseline()
-    d = design(replace(req, min_tether_safety_factor=6.0), cfg)  # SF < 6 above ~13 m/s
+    d = design(replace(req, min_tether_safety_factor=15.0), cfg)  # SF < 15 above 13 m/s
     rows = performance_rows(d)
     lim = [r["limit_exceeded"] for r in rows]
     assert lim == [bool(x) for x in d.performance.limited]
