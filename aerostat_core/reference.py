@@ -11,6 +11,7 @@ from __future__ import annotations
 import numpy as np
 
 from .atmosphere import isa
+from .constants import THESIS_HELIUM_DENSITY
 from .design import design
 from .geometry import half_spheroid_area, hull_geometry, lamb_factors
 from .materials import TetherSpec
@@ -73,7 +74,8 @@ def reference_checks() -> list[dict]:
     rows.append(_row("Table 2.2 sphere hull fabric mass (100 m3)", 13.54,
                      0.130 * float(2 * half_spheroid_area(d_sphere / 2, d_sphere / 2)), "kg", 1.0,
                      "calibrated", "thesis Table 2.2 (fixes 130 g/m2)"))
-    rows.append(_row("Table 2.2 helium mass (100 m3, 0.169 kg/m3)", 16.9, 0.169 * 100.0, "kg",
+    rows.append(_row("Table 2.2 helium mass (100 m3, 0.169 kg/m3)", 16.9,
+                     THESIS_HELIUM_DENSITY * 100.0, "kg",
                      0.5, "calibrated", "thesis Table 2.2 / Table 2.5"))
     req, cfg = thesis_baseline()
     from dataclasses import replace

@@ -366,32 +366,16 @@ def performance_figure(rep: Mapping[str, Any], key: str) -> go.Figure:
     ]
     traces += _limit_trace(v, y, p["limited"], p["flag_text"])
     lines = [dict(axis="x", value=lim["design_wind"], text="design wind", dash="dot")]
-    if key == "blow_by":
+    # horizontal limit line of this quantity, if it has one: (limit key, label format)
+    limit_line = {
+        "blow_by": ("blow_by_limit", "blow-by limit {:g} m"),
+        "alpha_eq": ("stall_deg", "fin stall {:g} deg"),
+        "safety_factor": ("min_safety_factor", "required {:g}"),
+    }.get(key)
+    if limit_line is not None:
+        name, label = limit_line
         lines.append(
-            dict(
-                axis="y",
-                value=lim["blow_by_limit"],
-                colour=LIMIT_COLOUR,
-                text=f"blow-by limit {lim['blow_by_limit']:g} m",
-            )
-        )
-    if key == "alpha_eq":
-        lines.append(
-            dict(
-                axis="y",
-                value=lim["stall_deg"],
-                colour=LIMIT_COLOUR,
-                text=f"fin stall {lim['stall_deg']:g} deg",
-            )
-        )
-    if key == "safety_factor":
-        lines.append(
-            dict(
-                axis="y",
-                value=lim["min_safety_factor"],
-                colour=LIMIT_COLOUR,
-                text=f"required {lim['min_safety_factor']:g}",
-            )
+            dict(axis="y", value=lim[name], colour=LIMIT_COLOUR, text=label.format(lim[name]))
         )
     return _figure(
         traces, title, lines=lines, height=360, xaxis=_axis(WIND_AXIS), yaxis=_axis(ylabel)

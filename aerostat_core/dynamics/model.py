@@ -46,6 +46,7 @@ from dataclasses import dataclass, field, replace
 import numpy as np
 from numba import njit
 
+from ..constants import G0
 from ._layout import (
     P_AERO_AX,
     P_AERO_CF,
@@ -569,7 +570,7 @@ class DynamicSystem:
         Winch position [m] (the earth origin by default).
     """
 
-    def __init__(self, body, tether: TetherModel, g: float = 9.80665,
+    def __init__(self, body, tether: TetherModel, g: float = G0,
                  atmosphere: Atmosphere | None = None, winch=(0.0, 0.0)) -> None:
         self.body = body
         self.tether = tether
