@@ -2071,6 +2071,8 @@ def default_limits(
     limit, capped at the altitude, always including the requirement's own limit [m]."""
     lim = req.blow_by_limit
     vals = np.linspace(low * lim, min(high * lim, req.altitude), max(int(n_points), 2))
+    # drop grid values equal to the limit up to round-off, or the front holds a duplicate point
+    vals = vals[np.abs(vals - lim) > 1e-9 * lim]
     return np.unique(np.concatenate([vals, [lim]]))
 
 

@@ -379,3 +379,9 @@ def test_fixed_variables_are_held_at_the_configuration() -> None:
     assert r.x["fineness_ratio"] == 4.0 and r.x["position"] == 0.68
     assert len(CONSTRAINTS) == p.n_constr and p.n_var == 1
     assert any(row["item"] == "fixed position" for row in p.describe())
+
+
+def test_default_limits_hold_the_requirement_limit_once() -> None:
+    req = thesis_baseline()[0]
+    lims = default_limits(req)
+    assert np.sum(np.isclose(lims, req.blow_by_limit, rtol=1e-6)) == 1
