@@ -2315,6 +2315,12 @@ def pareto_nsga2(
     d = problem.n_var
     count = {"n": 0}
 
+    def evaluate_population(X):
+        """Evaluate unit-cube variables plus the log-volume column as one design batch."""
+        v = problem.full_variables(problem.from_unit(X[:, :d]))
+        return evaluate_designs(req, cfg0, v["fineness_ratio"], v["area_change"], v["position"],
+                                volume=_volume_from_unit(X[:, d]), blow_by_limit=hi_bb)
+
     class _MO(Problem):
         """pymoo view of the two-objective problem: (objective, blow-by) over [x, log V]."""
 
@@ -2330,17 +2336,7 @@ def pareto_nsga2(
 
         def _evaluate(self, X, out, *args, **kwargs):
             """pymoo hook: one vectorised evaluation of the population X into out['F'], out['G']."""
-            x = problem.from_unit(X[:, :d])
-            v = problem.full_variables(x)
-            b = evaluate_designs(
-                req,
-                cfg0,
-                v["fineness_ratio"],
-                v["area_change"],
-                v["position"],
-                volume=_volume_from_unit(X[:, d]),
-                blow_by_limit=hi_bb,
-            )
+            b = evaluate_population(X)
             count["n"] += len(b)
             out["F"] = np.column_stack([b.objective(objective), b.blow_by])
             out["G"] = b.constraints
@@ -2348,18 +2344,7 @@ def pareto_nsga2(
     res = pymoo_minimize(
         _MO(), NSGA2(pop_size=pop_size), ("n_gen", int(generations)), seed=int(seed), verbose=False
     )
-    X = res.pop.get("X")
-    x = problem.from_unit(X[:, :d])
-    v = problem.full_variables(x)
-    b = evaluate_designs(
-        req,
-        cfg0,
-        v["fineness_ratio"],
-        v["area_change"],
-        v["position"],
-        volume=_volume_from_unit(X[:, d]),
-        blow_by_limit=hi_bb,
-    )
+    b = evaluate_population(res.pop.get("X"))
     keep = b.feasible & (b.blow_by >= lo_bb)
     b = b.take(np.nonzero(keep)[0])
     nd = nondominated_mask(b.objective(objective), b.blow_by)

@@ -88,6 +88,31 @@ def var_label(name: str) -> str:
 # --- inputs ------------------------------------------------------------------------------------
 
 
+def variable_range_inputs(prefix: str, lower: str, upper: str) -> dict[str, tuple[float, float]]:
+    """Two number inputs (lower, upper) per design variable, defaulting to ``DEFAULT_BOUNDS``.
+
+    Widget keys are ``{prefix}_lo_{name}`` / ``{prefix}_hi_{name}`` (kept across pages);
+    ``lower``/``upper`` are the words after the variable label, e.g. "from"/"to".
+    Returns {variable: (lower, upper)} in the variables' units.
+    """
+    out = {}
+    for name in VARIABLES:
+        lo, hi = DEFAULT_BOUNDS[name]
+        c = st.columns(2)
+        values = [
+            col.number_input(
+                f"{var_label(name)} – {word}",
+                value=float(default),
+                key=f"{prefix}_{side}_{name}",
+                format="%.3f",
+                persist_state="session",
+            )
+            for col, word, default, side in ((c[0], lower, lo, "lo"), (c[1], upper, hi, "hi"))
+        ]
+        out[name] = (values[0], values[1])
+    return out
+
+
 def load_inputs() -> tuple[str, Requirement, Configuration]:
     """The current design inputs (``st.session_state["design_inputs"]``; the thesis baseline when
     missing or corrupt) as (canonical JSON, Requirement, Configuration)."""

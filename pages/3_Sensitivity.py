@@ -7,7 +7,7 @@ import json
 
 import streamlit as st
 
-from aerostat_core.optimize import DEFAULT_BOUNDS, VARIABLE_INFO, VARIABLES
+from aerostat_core.optimize import VARIABLE_INFO, VARIABLES
 from app_ui import optimise_view as view
 
 st.title("Sensitivity")
@@ -81,25 +81,7 @@ with st.form("sens_form"):
         persist_state="session",
     )
     st.markdown("**Ranges**")
-    ranges = {}
-    for name in VARIABLES:
-        lo, hi = DEFAULT_BOUNDS[name]
-        r = st.columns(2)
-        lo_v = r[0].number_input(
-            f"{view.var_label(name)} – from",
-            value=float(lo),
-            key=f"sens_lo_{name}",
-            format="%.3f",
-            persist_state="session",
-        )
-        hi_v = r[1].number_input(
-            f"{view.var_label(name)} – to",
-            value=float(hi),
-            key=f"sens_hi_{name}",
-            format="%.3f",
-            persist_state="session",
-        )
-        ranges[name] = (lo_v, hi_v)
+    ranges = view.variable_range_inputs("sens", "from", "to")
     st.form_submit_button("Update", type="primary", key="sens_run", icon=":material/refresh:")
 
 n_points, n_map = view.SENS_RESOLUTION[level]

@@ -6,7 +6,7 @@ from __future__ import annotations
 import pandas as pd
 import streamlit as st
 
-from aerostat_core.optimize import DEFAULT_BOUNDS, OBJECTIVES, SOLVERS, VARIABLES
+from aerostat_core.optimize import OBJECTIVES, SOLVERS
 from app_ui import optimise_view as view
 
 st.title("Optimise")
@@ -77,25 +77,7 @@ with st.form("opt_form"):
         persist_state="session",
     )
     st.markdown("**Bounds of the design variables**")
-    bounds = {}
-    for name in VARIABLES:
-        lo, hi = DEFAULT_BOUNDS[name]
-        b = st.columns(2)
-        lo_v = b[0].number_input(
-            f"{view.var_label(name)} – lower",
-            value=float(lo),
-            key=f"opt_lo_{name}",
-            format="%.3f",
-            persist_state="session",
-        )
-        hi_v = b[1].number_input(
-            f"{view.var_label(name)} – upper",
-            value=float(hi),
-            key=f"opt_hi_{name}",
-            format="%.3f",
-            persist_state="session",
-        )
-        bounds[name] = (lo_v, hi_v)
+    bounds = view.variable_range_inputs("opt", "lower", "upper")
     st.markdown("**Trade-off curve**")
     p = st.columns(4)
     pareto = p[0].checkbox(
