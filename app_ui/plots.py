@@ -488,6 +488,36 @@ def default_tether_speeds(wind_speed: Sequence[float], n: int = 5) -> list[float
     return [v[i] for i in idx]
 
 
+def _line(x: Any, y: Any, name: str, colour: str, **kw: Any) -> dict:
+    """A solid line trace of width 2.2 in ``colour``."""
+    return dict(type="scatter", x=_l(x), y=_l(y), mode="lines", name=name,
+                line=dict(color=colour, width=2.2), **kw)
+
+
+def _profile_at(tether: Mapping[str, Any], speed: float) -> tuple[np.ndarray, np.ndarray, float]:
+    """Tether profile (x, z) [m] at the sweep speed nearest ``speed``, and that speed [m/s]."""
+    ws = np.asarray(tether["wind_speed"], float)
+    j = int(np.argmin(np.abs(ws - speed)))
+    return np.asarray(tether["x"])[:, j], np.asarray(tether["z"])[:, j], float(ws[j])
+
+
+def _winch_trace(label: bool) -> dict:
+    """The winch at the origin (black square), optionally labelled."""
+    return dict(type="scatter", x=[0.0], y=[0.0], mode="markers+text" if label else "markers",
+                name="winch", text=["winch"] if label else None, textposition="bottom center",
+                marker=dict(symbol="square", size=12, color="#000000"))
+
+
+def _to_scale_figure(traces: list[dict], title: str, **kw: Any) -> go.Figure:
+    """Tether plot with equal axis scales, winch at the origin."""
+    return _figure(
+        traces, title, height=560, xaxis=_axis("Downwind distance from the winch [m]"),
+        yaxis=_axis("Height above the winch [m]", scaleanchor="x", scaleratio=1,
+                    rangemode="tozero"),
+        **kw,
+    )
+
+
 def tether_figure(rep: Mapping[str, Any], speeds: Sequence[float] | None = None) -> go.Figure:
     """Tether profiles for several wind speeds, to scale, with the winch and the aerostat."""
     t, lim = rep["tether"], rep["limits"]
@@ -496,22 +526,12 @@ def tether_figure(rep: Mapping[str, Any], speeds: Sequence[float] | None = None)
     traces: list[dict] = []
     tops_x, tops_z, tops_t = [], [], []
     for k, s in enumerate(speeds):
-        j = int(np.argmin(np.abs(ws - s)))
-        x, z = np.asarray(t["x"])[:, j], np.asarray(t["z"])[:, j]
-        traces.append(
-            dict(
-                type="scatter",
-                x=_l(x),
-                y=_l(z),
-                mode="lines",
-                name=f"{ws[j]:g} m/s",
-                line=dict(color=PALETTE[k % len(PALETTE)], width=2.2),
-            )
-        )
+        x, z, w = _profile_at(t, s)
+        traces.append(_line(x, z, f"{w:g} m/s", PALETTE[k % len(PALETTE)]))
         top = int(np.argmax(z))
         tops_x.append(float(x[top]))
         tops_z.append(float(z[top]))
-        tops_t.append(f"{ws[j]:g} m/s: blow-by {x[top]:.1f} m, height {z[top]:.1f} m")
+        tops_t.append(f"{w:g} m/s: blow-by {x[top]:.1f} m, height {z[top]:.1f} m")
     traces.append(
         dict(
             type="scatter",
@@ -526,18 +546,7 @@ def tether_figure(rep: Mapping[str, Any], speeds: Sequence[float] | None = None)
             ),
         )
     )
-    traces.append(
-        dict(
-            type="scatter",
-            x=[0.0],
-            y=[0.0],
-            mode="markers+text",
-            name="winch",
-            text=["winch"],
-            textposition="bottom center",
-            marker=dict(symbol="square", size=12, color="#000000"),
-        )
-    )
+    traces.append(_winch_trace(label=True))
     lines = [
         dict(
             axis="x",
@@ -546,16 +555,11 @@ def tether_figure(rep: Mapping[str, Any], speeds: Sequence[float] | None = None)
             text=f"blow-by limit {lim['blow_by_limit']:g} m",
         )
     ]
-    return _figure(
+    return _to_scale_figure(
         traces,
         "Tether profiles (to scale)",
         legend=dict(orientation="v", x=1.02, y=1.0),
         lines=lines,
-        height=560,
-        xaxis=_axis("Downwind distance from the winch [m]"),
-        yaxis=_axis(
-            "Height above the winch [m]", scaleanchor="x", scaleratio=1, rangemode="tozero"
-        ),
     )
 
 
@@ -569,17 +573,7 @@ def compare_performance_figure(reps: Mapping[str, Mapping[str, Any]], key: str) 
     for k, (name, rep) in enumerate(reps.items()):
         p = rep["perf"]
         colour = PALETTE[k % len(PALETTE)]
-        traces.append(
-            dict(
-                type="scatter",
-                x=_l(p["wind_speed"]),
-                y=_l(p[key]),
-                mode="lines",
-                name=name,
-                legendgroup=name,
-                line=dict(color=colour, width=2.2),
-            )
-        )
+        traces.append(_line(p["wind_speed"], p[key], name, colour, legendgroup=name))
         traces += _limit_trace(
             p["wind_speed"],
             p[key],
@@ -597,23 +591,10 @@ def compare_tether_figure(reps: Mapping[str, Mapping[str, Any]], wind: float) ->
     """Tether profiles of every case at the sweep speed nearest ``wind``, to scale."""
     traces: list[dict] = []
     for k, (name, rep) in enumerate(reps.items()):
-        t = rep["tether"]
-        ws = np.asarray(t["wind_speed"], float)
-        j = int(np.argmin(np.abs(ws - wind)))
-        x, z = np.asarray(t["x"])[:, j], np.asarray(t["z"])[:, j]
+        x, z, w = _profile_at(rep["tether"], wind)
         colour = PALETTE[k % len(PALETTE)]
         top = int(np.argmax(z))
-        traces.append(
-            dict(
-                type="scatter",
-                x=_l(x),
-                y=_l(z),
-                mode="lines",
-                name=f"{name} ({ws[j]:g} m/s)",
-                legendgroup=name,
-                line=dict(color=colour, width=2.2),
-            )
-        )
+        traces.append(_line(x, z, f"{name} ({w:g} m/s)", colour, legendgroup=name))
         traces.append(
             dict(
                 type="scatter",
@@ -626,25 +607,8 @@ def compare_tether_figure(reps: Mapping[str, Mapping[str, Any]], wind: float) ->
                 marker=dict(size=11, color=colour, line=dict(color="#000", width=1)),
             )
         )
-    traces.append(
-        dict(
-            type="scatter",
-            x=[0.0],
-            y=[0.0],
-            mode="markers",
-            name="winch",
-            marker=dict(symbol="square", size=12, color="#000000"),
-        )
-    )
-    return _figure(
-        traces,
-        f"Tether profiles at {wind:g} m/s (to scale)",
-        height=560,
-        xaxis=_axis("Downwind distance from the winch [m]"),
-        yaxis=_axis(
-            "Height above the winch [m]", scaleanchor="x", scaleratio=1, rangemode="tozero"
-        ),
-    )
+    traces.append(_winch_trace(label=False))
+    return _to_scale_figure(traces, f"Tether profiles at {wind:g} m/s (to scale)")
 
 
 # --- tables (display frames: units in every column name) -----------------------------------
@@ -666,10 +630,17 @@ PERF_COLUMNS: dict[str, str] = {
     "tether_angle_winch_deg": "Tether angle at winch [deg from vertical]",
     "safety_factor": "Safety factor [-]",
     "cm_alpha_per_rad": "C_mα [1/rad]",
+    "cm_alpha_aero_cv_per_rad": "Weathervane C_mα, hull + fins about CV [1/rad]",
     "flags": "Limits exceeded",
 }
 #: Decimals per performance column.
-_PERF_DECIMALS = {"Wind [m/s]": 1, "α_eq [deg]": 2, "Safety factor [-]": 2, "C_mα [1/rad]": 3}
+_PERF_DECIMALS = {
+    "Wind [m/s]": 1,
+    "α_eq [deg]": 2,
+    "Safety factor [-]": 2,
+    "C_mα [1/rad]": 3,
+    "Weathervane C_mα, hull + fins about CV [1/rad]": 3,
+}
 LIMIT_ROW_STYLE = "background-color: #fde2e2"
 
 
