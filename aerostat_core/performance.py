@@ -34,8 +34,8 @@ FLAG_TEXT = {
 class Evaluation:
     """Static solution of an airframe at given wind speed(s) (all arrays broadcast together).
 
-    alpha [rad], moment_slope dM_C/dalpha [N m/rad], lift (dynamic) [N], drag [N],
-    tension_x/z at the confluence point [N], tether (TetherSolution), safety_factor [-],
+    alpha [rad], moment_slope dM_C/dalpha [N m/rad], lift (dynamic) [N], drag [N] (= the
+    horizontal tension at the confluence point), tension_z (vertical tension there) [N], tether (TetherSolution), safety_factor [-],
     weathervane_slope (d aerodynamic moment about the centre of volume / d alpha) [N m/rad],
     flags (dict of bool arrays, keys of ``FLAG_TEXT``).
     """
@@ -45,7 +45,6 @@ class Evaluation:
     equilibrium: Equilibrium
     lift: np.ndarray
     drag: np.ndarray
-    tension_x: np.ndarray
     tension_z: np.ndarray
     tether: TetherSolution
     safety_factor: np.ndarray
@@ -89,7 +88,7 @@ def evaluate(req: Requirement, cfg: Configuration, af: Airframe, speed) -> Evalu
         "over_blow_by_limit": teth.blow_by > req.blow_by_limit * (1.0 + 1e-9),
         "weathervane_unstable": (wv > 0.0) & (speed > 0.0),
     }
-    return Evaluation(af, speed, eq, loads.lift, tx, tx, tz, teth, sf, wv, flags)
+    return Evaluation(af, speed, eq, loads.lift, tx, tz, teth, sf, wv, flags)
 
 
 @dataclass(frozen=True)
