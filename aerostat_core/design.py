@@ -8,17 +8,13 @@ from dataclasses import dataclass
 import numpy as np
 
 from .airframe import Airframe, build_airframe
+from .constraints import NAMES as CONSTRAINT_NAMES
+from .constraints import ConstraintState, constraint_state, wind_flags
 from .cost import gas_fill_cost
 from .inputs import Configuration, Requirement
 from .mass import ITEM_NAMES
-from .performance import (
-    FLAG_TEXT,
-    PerformanceTable,
-    cm_curve,
-    evaluate,
-    performance_table,
-    wind_speeds,
-)
+from .performance import PerformanceTable, cm_curve, evaluate, performance_table, wind_speeds
+from .presets import rules_configuration
 from .sizing import SizingResult, size_volume
 
 
@@ -32,7 +28,9 @@ class Design:
 
     Attributes
     ----------
-    requirement, configuration : the inputs.
+    requirement : Requirement
+        The requirement as applied: every limit resolved from its rule set.
+    configuration : Configuration
     volume : float
         Hull volume [m3]; ``sized`` says whether it was sized or given.
     sizing : SizingResult or None
@@ -48,9 +46,10 @@ class Design:
         C_m about the confluence point versus alpha [deg] at the design wind.
     gas_cost : float
         Gas fill cost [USD].
+    constraints : ConstraintState
+        The constraint table (aerostat_core.constraints) at this volume: value, limit, margin.
     feasible : bool
-        All requirements met at the design wind (blow-by limit, positive free lift, taut tether,
-        stable trim below fin stall, tether safety factor, fins on the hull).
+        Every constraint of the table met (the one definition the optimiser and pages use).
     violations : tuple of str
         Plain-language reasons when not feasible.
     """
@@ -68,6 +67,7 @@ class Design:
     cm_alpha_deg: np.ndarray
     cm: np.ndarray
     gas_cost: float
+    constraints: ConstraintState
     feasible: bool
     violations: tuple
 
@@ -159,7 +159,21 @@ class Design:
             "safety_factor_at_design_wind": dp["safety_factor"],
             "gas_cost_USD": self.gas_cost,
             "feasible": self.feasible,
+            "hull_mass_kg": _f(self.airframe.mass.items["hull"]),
+            "tether_mass_kg": _f(self.airframe.mass.items["tether"]),
+            "altitude_loss_m": dp["altitude_loss_m"],
+            "survival_wind_m_s": self.requirement.survival_wind,
+            "safety_factor_at_survival_wind": self.constraints.value[
+                CONSTRAINT_NAMES.index("survival_safety_factor")].item(),
+            "binding_constraint": (str(np.asarray(self.sizing.binding).reshape(-1)[0])
+                                   if self.sizing is not None else "given volume"),
+            "violations": list(self.violations),
+            "rules": self.requirement.rules,
         }
+
+    def constraint_rows(self) -> list[dict]:
+        """The constraint table at this design: value, limit, margin (own unit) and met."""
+        return self.constraints.rows()
 
 
 def design(req: Requirement | None = None, cfg: Configuration | None = None) -> Design:
@@ -168,9 +182,10 @@ def design(req: Requirement | None = None, cfg: Configuration | None = None) -> 
     Parameters
     ----------
     req : Requirement, optional
-        Defaults to ``Requirement()`` (10 kg at 300 m).
+        Defaults to ``Requirement()`` (10 kg at 300 m, "practice" rules); resolved against its
+        rule set.
     cfg : Configuration, optional
-        Defaults to ``Configuration()``.
+        Defaults to the rule set's configuration (:func:`aerostat_core.presets.rules_configuration`).
 
     Returns
     -------
@@ -186,8 +201,8 @@ def design(req: Requirement | None = None, cfg: Configuration | None = None) -> 
     >>> d.sized, d.performance.wind_speed.size
     (True, 21)
     """
-    req = Requirement() if req is None else req
-    cfg = Configuration() if cfg is None else cfg
+    req = (Requirement() if req is None else req).resolved()
+    cfg = rules_configuration(req.rules) if cfg is None else cfg
     sizing = None
     if cfg.hull.volume is None:
         sizing = size_volume(req, cfg)
@@ -195,10 +210,11 @@ def design(req: Requirement | None = None, cfg: Configuration | None = None) -> 
     else:
         volume = float(cfg.hull.volume)
     af = build_airframe(req, cfg, volume)
+    state = sizing.state if sizing is not None else constraint_state(req, cfg, af)
     speeds = wind_speeds(req)
     all_speeds = np.append(speeds, req.design_wind)
     ev = evaluate(req, cfg, af, all_speeds)
-    table_all = performance_table(ev)
+    table_all = performance_table(ev, wind_flags(req, cfg, ev))
     rows = table_all.rows()
     design_point = rows[-1]
     n = speeds.size
@@ -207,36 +223,15 @@ def design(req: Requirement | None = None, cfg: Configuration | None = None) -> 
         for k, v in table_all.__dict__.items()
     })
     a_deg, cm = cm_curve(af, cfg, req.design_wind if req.design_wind > 0 else 10.0)
+    state = ConstraintState(
+        g=np.asarray(state.g).reshape(-1), margin=np.asarray(state.margin).reshape(-1),
+        value=np.asarray(state.value).reshape(-1), limit=np.asarray(state.limit).reshape(-1),
+        design_wind=state.design_wind, survival_wind=state.survival_wind,
+        evaluation=state.evaluation)
     violations = []
     if sizing is not None and not bool(np.asarray(sizing.feasible).reshape(-1)[0]):
-        b = str(np.asarray(sizing.binding).reshape(-1)[0])
-        violations.append({
-            "blow_by": f"blow-by limit {req.blow_by_limit:g} m at {req.design_wind:g} m/s cannot "
-                       f"be met by any hull up to 20000 m3 "
-                       f"(best {design_point['blow_by_m']:.1f} m)",
-            "free_lift": "no hull up to 20000 m3 has positive free lift (fabric too heavy for the "
-                         "payload, gas and altitude)",
-            "slack": "the tether goes slack at the design wind for every hull volume",
-        }.get(b, b))
-    if _f(af.free_lift) <= 0:
-        violations.append(f"free lift is not positive ({_f(af.free_lift):.0f} N)")
-    if design_point["blow_by_m"] > req.blow_by_limit * (1 + 1e-3) and not violations:
-        violations.append(f"blow-by {design_point['blow_by_m']:.1f} m exceeds the limit "
-                          f"{req.blow_by_limit:g} m at {req.design_wind:g} m/s")
-    if sizing is not None and bool(ev.flags["low_safety_factor"][-1]) and not violations:
-        violations.append(
-            f"tether safety factor {design_point['safety_factor']:.2f} is below the required "
-            f"{req.min_tether_safety_factor:g} at the smallest hull that meets the blow-by limit; a "
-            "larger hull only pulls harder: choose a stronger tether or relax the blow-by limit")
-    for key, text in FLAG_TEXT.items():
-        if key == "low_safety_factor" and sizing is not None and violations:
-            continue
-        if key in ("no_free_lift", "over_blow_by_limit"):  # reported above in more detail
-            continue
-        if bool(ev.flags[key][-1]):
-            violations.append(f"at the design wind: {text}")
-    if _f(af.fins.xi_root_te) > _f(af.hull.length):
-        violations.append("fin trailing edge lies behind the tail (fins off the hull)")
+        violations.append(str(np.asarray(sizing.message).reshape(-1)[0]))
+    violations += state.messages()
     return Design(
         requirement=req,
         configuration=cfg,
@@ -251,6 +246,7 @@ def design(req: Requirement | None = None, cfg: Configuration | None = None) -> 
         cm_alpha_deg=a_deg,
         cm=np.asarray(cm, float),
         gas_cost=_f(gas_fill_cost(volume, cfg.gas_price_value)),
+        constraints=state,
         feasible=not violations,
         violations=tuple(violations),
     )

@@ -11,6 +11,7 @@ from dataclasses import dataclass, field, fields, replace
 
 from . import constants as c
 from .materials import Fabric, TetherSpec
+from .rules import DEFAULT_RULES, RULE_NAMES, RuleSet, get_rules
 from .validation import check_choice, check_int, check_number
 
 GAS_KINDS = ("helium", "hydrogen")
@@ -20,56 +21,119 @@ WIND_PROFILES = ("uniform", "power", "log")
 CUTOFF_MODES = ("fin", "tail")
 
 
+#: Requirement fields that a rule set fills in when left as ``None`` (aerostat_core.rules).
+RULE_FIELDS = (
+    "design_wind", "survival_wind", "blow_by_limit", "altitude_loss_limit",
+    "free_lift_fraction", "min_tether_safety_factor", "survival_safety_factor",
+    "max_tether_angle_deg", "weathervane_margin",
+)
+
+
 @dataclass(frozen=True)
 class Requirement:
-    """The mission: payload, altitude, site and wind envelope.
+    """The mission, in the language of thesis Table 2.4 and of vendor spec sheets.
+
+    Any limit left as ``None`` takes the value of the rule set ``rules`` (see
+    :mod:`aerostat_core.rules`, where each default has its source); :meth:`resolved` returns the
+    requirement with every limit filled in, and every engine entry point resolves first.
 
     Parameters
     ----------
     payload_mass : float
         Payload carried below the hull [kg], valid (0, 500].
     altitude : float
-        Operating altitude above the launch site [m], valid [10, 3000]. The tether length is set
-        equal to it (thesis practice); the table reports the altitude loss in wind.
+        Floating (operating) altitude above the launch site [m], valid [10, 3000]. The tether
+        length is set equal to it (thesis practice); the table reports the altitude loss in wind.
     site_elevation : float
-        Launch-site elevation above mean sea level [m], valid [-400, 5000]; site + altitude must
+        Base-station elevation above mean sea level [m], valid [-400, 5000]; site + altitude must
         stay within the ISA troposphere (<= 11 km).
     isa_offset : float
-        Temperature offset from ISA [K], valid [-40, 40] (hot tropical day about +15 K).
+        Temperature offset from ISA [K], valid [-40, 40] (hot tropical day about +15 K). Ignored
+        when ``site_temperature`` is given.
+    site_temperature : float or None
+        Air temperature at the launch site [degC], valid [-60, 60]; sets the ISA offset so that
+        the ISA lapse rate runs through it (thesis Table 2.4 "temperature at launch site").
     wind_max : float
-        Largest wind speed of the performance sweep [m/s], valid (0, 40].
+        Largest wind speed of the performance sweep [m/s], valid (0, 60].
     wind_step : float
         Step of the sweep [m/s], valid [0.1, 10].
-    design_wind : float
-        Wind speed at which the blow-by limit applies [m/s], valid [0, 40].
-    blow_by_limit : float
+    design_wind : float or None
+        Operational wind at the aerostat [m/s], valid [0, 40], at which blow-by, altitude loss,
+        tether angle, stall and stability are checked.
+    survival_wind : float or None
+        Survival wind at the aerostat [m/s], valid [0, 60] and >= ``design_wind``, at which the
+        tether safety factor must still be ``survival_safety_factor``.
+    blow_by_limit : float or None
         Largest acceptable horizontal offset of the confluence point from the winch at the design
         wind [m], valid (0, altitude].
-    min_tether_safety_factor : float
-        Required breaking strength / maximum tether tension [-], valid [1, 20].
+    altitude_loss_limit : float or None
+        Permissible reduction in altitude at the design wind [m], valid (0, 3000] (a limit above
+        the altitude never binds).
+    free_lift_fraction : float or None
+        Required free lift at rest / gross lift [-], valid [0, 0.8].
+    min_tether_safety_factor : float or None
+        Breaking strength / largest tether tension at the design wind [-], valid [1, 20].
+    survival_safety_factor : float or None
+        Breaking strength / largest tether tension at the survival wind [-], valid [1, 20].
+    max_tether_angle_deg : float or None
+        Largest tether angle from the vertical at the design wind [deg], valid (0, 90].
+    weathervane_margin : float or None
+        Required aerodynamic stability margin, C_m_alpha about the centre of volume <= -margin
+        [1/rad], valid [0, 1].
+    rules : {"practice", "thesis"}
+        Rule set for the limits left as ``None``.
     """
 
     payload_mass: float = 10.0
     altitude: float = 300.0
     site_elevation: float = 0.0
     isa_offset: float = 0.0
+    site_temperature: float | None = None
     wind_max: float = 20.0
     wind_step: float = 1.0
-    design_wind: float = 15.0
-    blow_by_limit: float = 30.0
-    min_tether_safety_factor: float = 3.0
+    design_wind: float | None = None
+    survival_wind: float | None = None
+    blow_by_limit: float | None = None
+    altitude_loss_limit: float | None = None
+    free_lift_fraction: float | None = None
+    min_tether_safety_factor: float | None = None
+    survival_safety_factor: float | None = None
+    max_tether_angle_deg: float | None = None
+    weathervane_margin: float | None = None
+    rules: str = DEFAULT_RULES
 
     def __post_init__(self) -> None:
         o = "Requirement"
+        check_choice(o, "rules", self.rules, RULE_NAMES)
         check_number(o, "payload_mass", self.payload_mass, 0, 500, "kg", lo_open=True)
         check_number(o, "altitude", self.altitude, 10, 3000, "m")
         check_number(o, "site_elevation", self.site_elevation, -400, 5000, "m")
         check_number(o, "isa_offset", self.isa_offset, -40, 40, "K")
-        check_number(o, "wind_max", self.wind_max, 0, 40, "m/s", lo_open=True)
+        if self.site_temperature is not None:
+            check_number(o, "site_temperature", self.site_temperature, -60, 60, "degC")
+        check_number(o, "wind_max", self.wind_max, 0, 60, "m/s", lo_open=True)
         check_number(o, "wind_step", self.wind_step, 0.1, 10, "m/s")
-        check_number(o, "design_wind", self.design_wind, 0, 40, "m/s")
-        check_number(o, "blow_by_limit", self.blow_by_limit, 0, self.altitude, "m", lo_open=True)
-        check_number(o, "min_tether_safety_factor", self.min_tether_safety_factor, 1, 20)
+        opt = (
+            ("design_wind", 0, 40, "m/s", False),
+            ("survival_wind", 0, 60, "m/s", False),
+            ("blow_by_limit", 0, self.altitude, "m", True),
+            ("altitude_loss_limit", 0, 3000, "m", True),
+            ("free_lift_fraction", 0, 0.8, "", False),
+            ("min_tether_safety_factor", 1, 20, "", False),
+            ("survival_safety_factor", 1, 20, "", False),
+            ("max_tether_angle_deg", 0, 90, "deg", True),
+            ("weathervane_margin", 0, 1, "1/rad", False),
+        )
+        for name, lo, hi, unit, lo_open in opt:
+            v = getattr(self, name)
+            if v is not None:
+                check_number(o, name, v, lo, hi, unit, lo_open=lo_open)
+        if (self.design_wind is not None and self.survival_wind is not None
+                and self.survival_wind < self.design_wind):
+            raise ValueError(
+                f"Requirement.survival_wind = {self.survival_wind:g} m/s is below the design "
+                f"wind {self.design_wind:g} m/s; valid range [{self.design_wind:g}, 60] m/s"
+            )
         top = self.site_elevation + self.altitude
         if top > c.ISA_TROPOPAUSE:
             raise ValueError(
@@ -78,6 +142,56 @@ class Requirement:
                 f"the atmosphere model's valid range "
                 f"[{c.ISA_MIN_ALTITUDE:g}, {c.ISA_TROPOPAUSE:g}] m"
             )
+
+    @property
+    def rule_set(self) -> RuleSet:
+        """The :class:`~aerostat_core.rules.RuleSet` named by ``rules``."""
+        return get_rules(self.rules)
+
+    @property
+    def is_resolved(self) -> bool:
+        """True when no limit is left to the rule set."""
+        return all(getattr(self, k) is not None for k in RULE_FIELDS)
+
+    def resolved(self) -> Requirement:
+        """This requirement with every ``None`` limit filled in from its rule set.
+
+        Fractions of the tether length become lengths (tether length = ``altitude``); a rule set
+        without a survival wind checks the survival safety factor at the design wind; one without
+        an altitude-loss limit sets it to the whole altitude (never binding). A given
+        ``site_temperature`` sets ``isa_offset`` = T_site - T_ISA(site_elevation).
+        """
+        changes = {}
+        if self.site_temperature is not None:
+            t_isa = c.ISA_T0 - c.ISA_LAPSE * (
+                c.ISA_EARTH_RADIUS * self.site_elevation / (c.ISA_EARTH_RADIUS + self.site_elevation))
+            off = float(self.site_temperature) + 273.15 - t_isa
+            if abs(off - self.isa_offset) > 1e-12:
+                changes["isa_offset"] = off
+        if self.is_resolved and not changes:
+            return self
+        r = self.rule_set
+        h = float(self.altitude)
+        design_wind = r.design_wind if self.design_wind is None else self.design_wind
+        survival = self.survival_wind
+        if survival is None:
+            survival = max(r.survival_wind or design_wind, design_wind)
+        defaults = {
+            "design_wind": design_wind,
+            "survival_wind": survival,
+            "blow_by_limit": r.blow_by_fraction * h,
+            "altitude_loss_limit": (h if r.altitude_loss_fraction is None
+                                    else r.altitude_loss_fraction * h),
+            "free_lift_fraction": r.free_lift_fraction,
+            "min_tether_safety_factor": r.min_tether_safety_factor,
+            "survival_safety_factor": r.survival_safety_factor,
+            "max_tether_angle_deg": r.max_tether_angle_deg,
+            "weathervane_margin": r.weathervane_margin,
+        }
+        for k, v in defaults.items():
+            if getattr(self, k) is None:
+                changes[k] = v
+        return replace(self, **changes)
 
 
 @dataclass(frozen=True)

@@ -10,23 +10,16 @@ the hull volume (= the helium bill) as an option.
 
 Volume is *not* a design variable: it enters as the smallest hull that meets the requirement for
 the given x, V*(x) = :func:`aerostat_core.sizing.size_volume` (blow-by at the design wind <= the
-limit, positive free lift, taut tether). This nested form is what makes "fins supply dynamic lift,
+limit and every other constraint of the table). This nested form is what makes "fins supply dynamic lift,
 so a smaller hull suffices" visible to an optimiser that only moves f, S_f and l_f (methods.md
 G4). The sizing brackets V* to about 1e-4 relative; :func:`evaluate_designs` finishes it with one
-secant step on the blow-by so that V*(x) is smooth enough for finite-difference gradients.
+secant step on the binding constraint so that V*(x) is smooth enough for finite-difference gradients.
 
-Constraints g_i(x) <= 0, all dimensionless and evaluated on the sized design at the design wind:
-
-===============  ===========================================  ======================================
-name             g                                            meaning
-===============  ===========================================  ======================================
-blow_by          x_bb / x_max - 1                             blow-by within the limit
-stability        C_m_alpha(alpha_eq) [1/rad]                  statically stable trim (slope < 0)
-stall            abs(alpha_eq) / alpha_stall - 1              trim angle below fin stall
-free_lift        -L_free / F_B                                positive free lift
-safety_factor    1 - SF / SF_min                              tether strength / max tension
-fins_on_hull     xi_TE / l - 1                                fin trailing edge on the hull
-===============  ===========================================  ======================================
+Constraints g_i(x) <= 0: the whole constraint table of :mod:`aerostat_core.constraints`
+(blow-by, altitude loss, free-lift margin, taut tether, tether angle, tether safety factor at the
+design and the survival wind, fin stall, static and weathervane stability, fins on the hull), all
+dimensionless, evaluated on the sized design. The same table sizes V*(x), so an x whose V*
+exists meets every constraint except those that volume cannot fix.
 
 Solvers (each seeded, each returns its convergence history and number of evaluations)
 -------------------------------------------------------------------------------------
@@ -63,9 +56,11 @@ from typing import Any
 import numpy as np
 
 from .airframe import build_airframe
+from .constraints import CONSTRAINTS as CONSTRAINT_TABLE
+from .constraints import NAMES as CONSTRAINT_NAMES
+from .constraints import TOLERANCE, constraint_state, violation_messages
 from .cost import gas_fill_cost
 from .inputs import Configuration, Requirement
-from .performance import evaluate
 from .sizing import VOLUME_MAX, VOLUME_MIN, size_volume
 
 # ------------------------------------------------------------------------------------------------
@@ -90,28 +85,18 @@ DEFAULT_BOUNDS: dict[str, tuple[float, float]] = {
     "position": (0.60, 0.75),
 }
 
-#: Constraint names, in the column order of ``DesignBatch.constraints``.
-CONSTRAINTS = (
-    "blow_by", "stability", "weathervane", "stall", "free_lift", "safety_factor", "fins_on_hull",
-)
+#: Constraint names, in the column order of ``DesignBatch.constraints``: the one constraint
+#: table of aerostat_core.constraints.
+CONSTRAINTS = CONSTRAINT_NAMES
 
 #: Plain-language meaning of each constraint (g <= 0 means met).
-CONSTRAINT_TEXT = {
-    "blow_by": "blow-by at the design wind within the limit",
-    "stability": "statically stable trim (C_m_alpha < 0 at the equilibrium angle)",
-    "weathervane": "aerodynamically stable hull (C_m_alpha of hull + fins about the centre of "
-    "volume <= 0): the fins beat the Munk moment without help from the buoyancy pendulum",
-    "stall": "equilibrium angle of attack below fin stall",
-    "free_lift": "positive free lift",
-    "safety_factor": "tether safety factor at least the required value",
-    "fins_on_hull": "fin trailing edge on the hull",
-}
+CONSTRAINT_TEXT = {c.name: c.text for c in CONSTRAINT_TABLE}
 
 #: Objectives: key -> (label, unit).
 OBJECTIVES = {"total_mass": ("Total mass", "kg"), "volume": ("Hull volume", "m3")}
 
-#: A design is feasible when every g <= this tolerance [-].
-FEASIBILITY_TOL = 1e-6
+#: A design is feasible when every g <= this tolerance [-] (the constraint table's).
+FEASIBILITY_TOL = TOLERANCE
 
 #: A constraint counts as active (binding) at the optimum when g > -ACTIVE_TOL [-].
 ACTIVE_TOL = 2e-3
@@ -152,10 +137,12 @@ class DesignBatch:
     sized : bool
         True when the volume was sized.
     sizing_feasible : ndarray of bool
-        A volume meeting blow-by, free lift and taut tether exists (always True when given).
+        A volume meeting the whole constraint table exists (always True when given).
     binding : ndarray of str
-        What stopped the sizing: ``"none"``, ``"blow_by"``, ``"free_lift"``, ``"slack"``, or
+        The constraint that sets the size (see :class:`~aerostat_core.sizing.SizingResult`), or
         ``"given"`` for a given volume.
+    sizing_message : ndarray of str
+        Why no volume is feasible ("" otherwise).
     total_mass [kg], gas_cost [USD], blow_by [m], alpha [deg], cm_alpha [1/rad],
     cm_alpha_aero (aerodynamic C_m_alpha about the centre of volume) [1/rad],
     moment_slope [N m/rad], dynamic_lift [N], drag [N], free_lift [N], buoyancy [N],
@@ -168,8 +155,12 @@ class DesignBatch:
         Fin stall angle [deg].
     min_safety_factor : float
         Required tether safety factor [-].
-    constraints : ndarray, shape (n, 7)
+    constraints : ndarray, shape (n, len(CONSTRAINTS))
         g values in the order of ``CONSTRAINTS`` (<= 0 is met).
+    constraint_value, constraint_limit : ndarray, shape (n, len(CONSTRAINTS))
+        Value and limit of each constraint in its own unit (for the messages and tables).
+    design_wind, survival_wind : float
+        Where the wind-dependent constraints were checked [m/s].
     """
 
     fineness_ratio: np.ndarray
@@ -179,6 +170,7 @@ class DesignBatch:
     sized: bool
     sizing_feasible: np.ndarray
     binding: np.ndarray
+    sizing_message: np.ndarray
     total_mass: np.ndarray
     gas_cost: np.ndarray
     blow_by: np.ndarray
@@ -199,6 +191,10 @@ class DesignBatch:
     stall_angle: float
     min_safety_factor: float
     constraints: np.ndarray
+    constraint_value: np.ndarray
+    constraint_limit: np.ndarray
+    design_wind: float
+    survival_wind: float
 
     def __len__(self) -> int:
         """Number of designs (points) in the batch."""
@@ -222,35 +218,10 @@ class DesignBatch:
 
     def violations(self, i: int) -> list[str]:
         """Plain-language reasons why design ``i`` is infeasible (empty when feasible)."""
-        g = self.constraints[i]
-        out = []
-        if not self.sizing_feasible[i]:
-            out.append(
-                {
-                    "blow_by": f"no hull volume in [{VOLUME_MIN:g}, {VOLUME_MAX:g}] m3 meets the "
-                    f"blow-by limit {self.blow_by_limit[i]:.4g} m (best "
-                    f"{self.blow_by[i]:.1f} m)",
-                    "free_lift": f"no hull volume up to {VOLUME_MAX:g} m3 has positive free lift",
-                    "slack": "the tether goes slack at the design wind for every hull volume",
-                }.get(str(self.binding[i]), str(self.binding[i]))
-            )
-        msgs = {
-            "blow_by": f"blow-by {self.blow_by[i]:.2f} m exceeds the limit "
-            f"{self.blow_by_limit[i]:.2f} m",
-            "stability": f"statically unstable trim (C_m_alpha = {self.cm_alpha[i]:+.3f} /rad)",
-            "weathervane": "hull aerodynamically unstable about its centre of volume "
-            f"(C_m_alpha = {self.cm_alpha_aero[i]:+.3f} /rad): fins too small or too far forward",
-            "stall": f"equilibrium angle {self.alpha[i]:.1f} deg beyond fin stall "
-            f"{self.stall_angle:g} deg",
-            "free_lift": f"free lift not positive ({self.free_lift[i]:.0f} N)",
-            "safety_factor": f"tether safety factor {self.safety_factor[i]:.2f} below the "
-            f"required {self.min_safety_factor:g}",
-            "fins_on_hull": f"fin trailing edge at {self.fin_te_ratio[i]:.3f} l, behind the tail",
-        }
-        for k, name in enumerate(CONSTRAINTS):
-            if g[k] > FEASIBILITY_TOL and not (name == "blow_by" and not self.sizing_feasible[i]):
-                out.append(msgs[name])
-        return out
+        out = [str(self.sizing_message[i])] if not self.sizing_feasible[i] else []
+        return out + violation_messages(self.constraints[i], self.constraint_value[i],
+                                        self.constraint_limit[i], self.design_wind,
+                                        self.survival_wind)
 
     def row(self, i: int) -> dict[str, Any]:
         """Design ``i`` as a flat dict with units in the keys (tables, CSV)."""
@@ -283,76 +254,52 @@ class DesignBatch:
 
 
 def _outputs(req: Requirement, cfg: Configuration, volume, f, dsf, pos) -> dict[str, np.ndarray]:
-    """Evaluate airframe + trim + tether at the design wind and collect the outputs.
+    """Evaluate airframe + the constraint table (design and survival wind) and collect outputs.
 
     Parameters
     ----------
     req, cfg : Requirement, Configuration
+        ``req`` resolved.
     volume, f, dsf, pos : ndarray
         Hull volume [m3] and design variables (same shape).
 
     Returns
     -------
     dict
-        Float arrays (see :class:`DesignBatch`) plus bool arrays ``found`` and ``slack``.
+        Float arrays (see :class:`DesignBatch`) at the design wind, plus the constraint table's
+        ``g``, ``value`` and ``limit`` (shape + (n_constraints,)).
     """
     af = build_airframe(req, cfg, volume, f, dsf, pos)
-    u = float(req.design_wind)
-    ev = evaluate(req, cfg, af, u)
+    st = constraint_state(req, cfg, af)
+    ev = st.evaluation
     shape = np.shape(volume)
     one = np.ones(shape)
-    # C_m_alpha about the confluence point; below 1 m/s the 1 m/s dynamic pressure normalises it
-    q = 0.5 * af.air_density * max(u, 1.0) ** 2
-    cma = ev.equilibrium.moment_slope / (q * af.hull.reference_area * af.hull.length)
+    col = {n: k for k, n in enumerate(CONSTRAINTS)}
+    ncol = (shape + (len(CONSTRAINTS),))
+    g = np.broadcast_to(st.g, ncol)
+    value = np.broadcast_to(st.value, ncol)
+    q = 0.5 * af.air_density * max(float(req.design_wind), 1.0) ** 2
+    norm = q * af.hull.reference_area * af.hull.length
     return {
         "total_mass": af.mass.total * one,
-        "blow_by": ev.tether.blow_by * one,
-        "alpha": np.degrees(ev.equilibrium.alpha) * one,
-        "cm_alpha": cma * one,
-        "cm_alpha_aero": ev.weathervane_slope / (q * af.hull.reference_area * af.hull.length) * one,
-        "moment_slope": ev.equilibrium.moment_slope * one,
-        "dynamic_lift": ev.lift * one,
-        "drag": ev.drag * one,
+        "blow_by": value[..., col["blow_by"]] * one,
+        "alpha": np.degrees(ev.equilibrium.alpha[0]) * one,
+        "cm_alpha": ev.equilibrium.moment_slope[0] / norm * one,
+        "cm_alpha_aero": ev.weathervane_slope[0] / norm * one,
+        "moment_slope": ev.equilibrium.moment_slope[0] * one,
+        "dynamic_lift": ev.lift[0] * one,
+        "drag": ev.drag[0] * one,
         "free_lift": af.free_lift * one,
         "buoyancy": af.buoyancy * one,
-        "safety_factor": ev.safety_factor * one,
-        "tension_top": ev.tether.tension_top * one,
+        "safety_factor": value[..., col["safety_factor"]] * one,
+        "tension_top": ev.tether.tension_top[0] * one,
         "fin_te_ratio": af.fins.xi_root_te / af.hull.length * one,
         "length": af.hull.length * one,
         "diameter": af.hull.diameter * one,
-        "found": ev.equilibrium.found * np.ones(shape, bool),
-        "slack": ev.flags["slack"] * np.ones(shape, bool),
+        "g": np.array(g),
+        "value": np.array(value),
+        "limit": np.array(np.broadcast_to(st.limit, ncol)),
     }
-
-
-def _constraint_matrix(out: dict, limit: np.ndarray, stall_deg: float, sf_min: float) -> np.ndarray:
-    """Constraint values g (n, 7) from evaluated outputs (see the module docstring table).
-
-    Parameters
-    ----------
-    out : dict
-        Output arrays of :func:`_outputs`.
-    limit : ndarray
-        Blow-by limit per design [m].
-    stall_deg : float
-        Fin stall angle [deg].
-    sf_min : float
-        Required tether safety factor [-].
-    """
-    # no stable trim at all: count as unstable whatever the local slope says
-    stab = np.where(out["found"], out["cm_alpha"], np.abs(out["cm_alpha"]) + 1e-3)
-    return np.stack(
-        [
-            out["blow_by"] / limit - 1.0,
-            stab,
-            out["cm_alpha_aero"],
-            np.abs(out["alpha"]) / stall_deg - 1.0,
-            -out["free_lift"] / np.maximum(np.abs(out["buoyancy"]), 1e-9),
-            1.0 - out["safety_factor"] / sf_min,
-            out["fin_te_ratio"] - 1.0,
-        ],
-        axis=-1,
-    )
 
 
 def evaluate_designs(
@@ -389,6 +336,7 @@ def evaluate_designs(
     DesignBatch
         Flattened to 1-D in C order of the broadcast shape.
     """
+    req = req.resolved()
     f = cfg.hull.fineness_ratio if fineness_ratio is None else fineness_ratio
     dsf = cfg.fins.area_change if area_change is None else area_change
     pos = cfg.fins.position if position is None else position
@@ -399,37 +347,41 @@ def evaluate_designs(
         for a in np.broadcast_arrays(*(np.asarray(a, float) for a in (f, dsf, pos, vol_in, lim_in)))
     )
     n = f.size
+    col = {name: k for k, name in enumerate(CONSTRAINTS)}
     if volume is None:
         s = size_volume(req, cfg, f, dsf, pos)
         v_hi = np.asarray(s.volume, float).reshape(-1)
         feasible_size = np.asarray(s.feasible, bool).reshape(-1)
         binding = np.asarray(s.binding).reshape(-1).astype(str)
+        message = np.asarray(s.message).reshape(-1).astype(str)
         v_lo = v_hi * (1.0 - _SECANT_PROBE)
         both = _outputs(
             req, cfg, np.concatenate([v_lo, v_hi]), np.tile(f, 2), np.tile(dsf, 2), np.tile(pos, 2)
         )
         lo = {k: v[:n] for k, v in both.items()}
         hi = {k: v[n:] for k, v in both.items()}
-        x_max = req.blow_by_limit
+        # secant on the binding constraint's g between the two probes: g(V*) = 0
+        k_bind = np.array([col.get(b, -1) for b in binding])
+        rows = np.arange(n)
+        g_lo = np.where(k_bind >= 0, lo["g"][rows, k_bind], 0.0)
+        g_hi = np.where(k_bind >= 0, hi["g"][rows, k_bind], 0.0)
+        others_lo = lo["g"].copy()
+        others_lo[rows, np.maximum(k_bind, 0)] = -np.inf
         bracket = (
-            feasible_size
-            & (lo["blow_by"] > x_max)
-            & (hi["blow_by"] <= x_max)
-            & (lo["free_lift"] > 0)
-            & ~lo["slack"]
+            feasible_size & (k_bind >= 0) & (g_lo > g_hi) & (g_lo > 0.0) & (g_hi <= FEASIBILITY_TOL)
+            & (others_lo.max(axis=1) <= FEASIBILITY_TOL)
         )
-        den = np.where(bracket, hi["blow_by"] - lo["blow_by"], -1.0)
-        t = np.where(bracket, (x_max - lo["blow_by"]) / den, 1.0)
-        t = np.clip(t, 0.0, 1.0)
+        den = np.where(bracket, g_lo - g_hi, 1.0)
+        # g_hi may sit within the tolerance above 0: allow the few-% extrapolation that reaches 0
+        t = np.clip(np.where(bracket, g_lo / den, 1.0), 0.0, 1.05)
         out = {}
         for k in hi:
-            if hi[k].dtype == bool:
-                out[k] = hi[k]
-            else:
-                out[k] = lo[k] + t * (hi[k] - lo[k])
+            tt = t.reshape((-1,) + (1,) * (hi[k].ndim - 1))
+            out[k] = lo[k] + tt * (hi[k] - lo[k])
         vol = v_lo + t * (v_hi - v_lo)
-        if np.any(bracket):  # exactly at the limit where the secant applies (removes round-off)
-            out["blow_by"] = np.where(bracket, np.minimum(out["blow_by"], x_max), out["blow_by"])
+        if np.any(bracket):  # exactly on the limit where the secant applies (removes round-off)
+            out["g"][rows[bracket], k_bind[bracket]] = np.minimum(
+                out["g"][rows[bracket], k_bind[bracket]], 0.0)
         sized = True
     else:
         vol = vol_in
@@ -438,8 +390,13 @@ def evaluate_designs(
         out = _outputs(req, cfg, vol, f, dsf, pos)
         feasible_size = np.ones(n, bool)
         binding = np.full(n, "given")
+        message = np.full(n, "")
         sized = False
-    g = _constraint_matrix(out, lim, cfg.aero.fin_stall_angle_deg, req.min_tether_safety_factor)
+    g, value, limit = out["g"], out["value"], out["limit"]
+    if blow_by_limit is not None:  # a limit per design (Pareto front): re-normalise that column
+        kb = col["blow_by"]
+        limit[:, kb] = lim
+        g[:, kb] = value[:, kb] / lim - 1.0
     return DesignBatch(
         fineness_ratio=f,
         area_change=dsf,
@@ -448,6 +405,7 @@ def evaluate_designs(
         sized=sized,
         sizing_feasible=feasible_size,
         binding=binding,
+        sizing_message=message,
         total_mass=out["total_mass"],
         gas_cost=np.asarray(gas_fill_cost(vol, cfg.gas_price_value), float),
         blow_by=out["blow_by"],
@@ -468,6 +426,10 @@ def evaluate_designs(
         stall_angle=float(cfg.aero.fin_stall_angle_deg),
         min_safety_factor=float(req.min_tether_safety_factor),
         constraints=g,
+        constraint_value=value,
+        constraint_limit=limit,
+        design_wind=float(req.design_wind),
+        survival_wind=float(req.survival_wind),
     )
 
 
@@ -561,7 +523,7 @@ class OptimisationProblem:
         if objective not in OBJECTIVES:
             raise ValueError(f"objective = {objective!r}: choose one of {', '.join(OBJECTIVES)}")
         checked = _check_bounds(DEFAULT_BOUNDS if bounds is None else bounds)
-        self.requirement = requirement
+        self.requirement = requirement.resolved()
         self.configuration = configuration.with_design_variables(volume=None)
         self.objective = objective
         self.names = tuple(v for v in VARIABLES if v in checked)
@@ -1848,6 +1810,7 @@ def baseline_vs_optimum(
     list of dict
         Rows (quantity, unit, baseline, optimum, change).
     """
+    req = req.resolved()
     from .design import design
 
     base = design(req, cfg_baseline)
@@ -2069,6 +2032,7 @@ def default_limits(
 ) -> np.ndarray:
     """Blow-by limits for the front: ``n_points`` from ``low`` to ``high`` x the requirement's
     limit, capped at the altitude, always including the requirement's own limit [m]."""
+    req = req.resolved()
     lim = req.blow_by_limit
     vals = np.linspace(low * lim, min(high * lim, req.altitude), max(int(n_points), 2))
     # drop grid values equal to the limit up to round-off, or the front holds a duplicate point
@@ -2152,6 +2116,7 @@ def pareto_front(
     Haimes Y.Y., Lasdon L.S., Wismer D.A., "On a bicriterion formulation of the problems of
     integrated system identification and system optimization", IEEE TSMC 1(3), 1971.
     """
+    req = req.resolved()
     t0 = time.perf_counter()
     problem = OptimisationProblem(req, cfg, bounds, objective)
     eps = default_limits(req, n_points) if limits is None else _check_limits(limits, req.altitude)
@@ -2295,6 +2260,7 @@ def pareto_nsga2(
     Deb K. et al., "A fast and elitist multiobjective genetic algorithm: NSGA-II", IEEE TEC
     6(2):182-197, 2002.
     """
+    req = req.resolved()
     from pymoo.algorithms.moo.nsga2 import NSGA2
     from pymoo.core.problem import Problem
     from pymoo.optimize import minimize as pymoo_minimize
@@ -2381,6 +2347,7 @@ def performance_curves(req: Requirement, cfg: Configuration) -> dict[str, Any]:
         ``wind_speed`` [m/s] and the keys of :data:`PERFORMANCE_CURVES` (arrays), plus
         ``volume`` [m3], ``total_mass`` [kg], ``feasible`` (bool) and ``violations`` (list).
     """
+    req = req.resolved()
     from .design import design
 
     d = design(req, cfg)

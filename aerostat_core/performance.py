@@ -16,19 +16,21 @@ from .statics import Equilibrium, aero_loads, equilibrium, moment_coefficient, w
 from .tether import TetherSolution, solve_tether
 from .wind import profile_speed
 
-#: Operating-limit flags, in display order, with their meaning.
-FLAG_TEXT = {
-    "tether_over_45": "tether more than 45 deg from vertical",
-    "past_stall": "angle of attack past fin stall",
-    "no_free_lift": "free lift not positive",
-    "slack": "slack tether (no upward tension somewhere along it)",
-    "low_safety_factor": "tether safety factor below the required value",
-    "unstable": "statically unstable (no stable trim within +-80 deg)",
-    "over_blow_by_limit": "blow-by above the limit",
-    "weathervane_unstable": "aerodynamically unstable about the centre of volume (fins lose to "
-                            "the Munk moment)",
+#: Short text of each constraint broken at a sweep speed (the table's ``flags`` column); the
+#: constraint definitions themselves live in aerostat_core.constraints.
+FLAG_LABELS = {
+    "blow_by": "blow-by above the limit",
+    "altitude_loss": "altitude loss above the permissible reduction",
+    "free_lift": "free lift below the required share of gross lift",
+    "taut_tether": "slack tether (no upward tension somewhere along it)",
+    "tether_angle": "tether angle from the vertical above the limit",
+    "safety_factor": "tether safety factor below the required value",
+    "stall": "angle of attack past fin stall",
+    "stability": "statically unstable (no stable trim within +-80 deg)",
+    "weathervane": "aerodynamically unstable about the centre of volume (fins lose to the Munk "
+                   "moment)",
+    "fins_on_hull": "fin trailing edge behind the tail",
 }
-
 
 @dataclass(frozen=True)
 class Evaluation:
@@ -36,8 +38,8 @@ class Evaluation:
 
     alpha [rad], moment_slope dM_C/dalpha [N m/rad], lift (dynamic) [N], drag [N] (= the
     horizontal tension at the confluence point), tension_z (vertical tension there) [N], tether (TetherSolution), safety_factor [-],
-    weathervane_slope (d aerodynamic moment about the centre of volume / d alpha) [N m/rad],
-    flags (dict of bool arrays, keys of ``FLAG_TEXT``).
+    weathervane_slope (d aerodynamic moment about the centre of volume / d alpha) [N m/rad].
+    Which limits a solution breaks is the constraint table's job (aerostat_core.constraints).
     """
 
     airframe: Airframe
@@ -49,7 +51,6 @@ class Evaluation:
     tether: TetherSolution
     safety_factor: np.ndarray
     weathervane_slope: np.ndarray
-    flags: dict
 
 
 def evaluate(req: Requirement, cfg: Configuration, af: Airframe, speed) -> Evaluation:
@@ -76,19 +77,8 @@ def evaluate(req: Requirement, cfg: Configuration, af: Airframe, speed) -> Evalu
     )
     tmax = np.max(teth.tension, axis=0)
     sf = cfg.tether.breaking_strength / np.maximum(tmax, 1e-9)
-    stall = np.radians(cfg.aero.fin_stall_angle_deg)
     wv = weathervane_slope(af, cfg.aero, eq.alpha, speed) * np.ones_like(eq.alpha)
-    flags = {
-        "tether_over_45": teth.max_angle_from_vertical > np.radians(45.0),
-        "past_stall": np.abs(eq.alpha) > stall,
-        "no_free_lift": (af.free_lift <= 0.0) * np.ones_like(eq.alpha, dtype=bool),
-        "slack": teth.slack | (tz <= 0.0),
-        "low_safety_factor": sf < req.min_tether_safety_factor,
-        "unstable": ~eq.found | (eq.moment_slope >= 0.0),
-        "over_blow_by_limit": teth.blow_by > req.blow_by_limit * (1.0 + 1e-9),
-        "weathervane_unstable": (wv > 0.0) & (speed > 0.0),
-    }
-    return Evaluation(af, speed, eq, loads.lift, tx, tz, teth, sf, wv, flags)
+    return Evaluation(af, speed, eq, loads.lift, tx, tz, teth, sf, wv)
 
 
 @dataclass(frozen=True)
@@ -99,7 +89,9 @@ class PerformanceTable:
     tether_angle_winch [deg from vertical], safety_factor [-], cm_alpha [1/rad] (C_m slope about
     the confluence point; NaN-free: 0 at zero wind, where C_m is undefined), cm_alpha_aero
     [1/rad] (aerodynamic moment slope about the centre of volume, the weathervane stability;
-    0 at zero wind), flags (dict of bool arrays) and ``limited`` (any flag set)."""
+    0 at zero wind), flags (constraint name -> bool array: the constraint of the table that
+    this wind speed breaks, with the requirement's design-wind limits; see
+    aerostat_core.constraints) and ``limited`` (any flag set)."""
 
     wind_speed: np.ndarray
     alpha_eq: np.ndarray
@@ -144,13 +136,14 @@ class PerformanceTable:
                 "safety_factor": float(self.safety_factor[i]),
                 "cm_alpha_per_rad": float(self.cm_alpha[i]),
                 "cm_alpha_aero_cv_per_rad": float(self.cm_alpha_aero[i]),
-                "flags": "; ".join(FLAG_TEXT[k] for k, f in self.flags.items() if f[i]),
+                "flags": "; ".join(FLAG_LABELS.get(k, k) for k, f in self.flags.items() if f[i]),
             })
         return out
 
 
-def performance_table(ev: Evaluation) -> PerformanceTable:
-    """Collect a :class:`PerformanceTable` from an :class:`Evaluation` over a wind sweep."""
+def performance_table(ev: Evaluation, flags: dict) -> PerformanceTable:
+    """Collect a :class:`PerformanceTable` from an :class:`Evaluation` over a wind sweep and the
+    per-speed constraint flags (:func:`aerostat_core.constraints.wind_flags`)."""
     af = ev.airframe
     q = 0.5 * af.air_density * ev.speed**2
     denom = q * af.hull.reference_area * af.hull.length
@@ -173,7 +166,7 @@ def performance_table(ev: Evaluation) -> PerformanceTable:
         safety_factor=ev.safety_factor,
         cm_alpha=cma,
         cm_alpha_aero=cma_aero,
-        flags=ev.flags,
+        flags=flags,
     )
 
 

@@ -13,7 +13,6 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping
-from dataclasses import replace
 from typing import Any
 
 import numpy as np
@@ -21,8 +20,9 @@ import numpy as np
 from .design import Design, design
 from .fins import ARRANGEMENT_ANGLES_DEG
 from .geometry import radius
+from .inputs import Requirement
 from .io import inputs_from_dict, inputs_to_dict, rows_to_csv
-from .presets import thesis_baseline
+from .presets import practice_configuration
 
 # --------------------------------------------------------------------------------------------
 # Input fields: labels and units (display and CSV)
@@ -38,9 +38,19 @@ INPUT_FIELDS: dict[str, tuple[str, str, float, str]] = {
     "requirement.isa_offset": ("Temperature offset from ISA", "K", 1.0, "K"),
     "requirement.wind_max": ("Maximum wind of the sweep", "m/s", 1.0, "m_s"),
     "requirement.wind_step": ("Wind step of the sweep", "m/s", 1.0, "m_s"),
-    "requirement.design_wind": ("Design wind", "m/s", 1.0, "m_s"),
+    "requirement.site_temperature": ("Temperature at the launch site", "°C", 1.0, "degC"),
+    "requirement.design_wind": ("Operational (design) wind", "m/s", 1.0, "m_s"),
+    "requirement.survival_wind": ("Survival wind", "m/s", 1.0, "m_s"),
     "requirement.blow_by_limit": ("Blow-by limit at the design wind", "m", 1.0, "m"),
+    "requirement.altitude_loss_limit": ("Permissible altitude loss", "m", 1.0, "m"),
+    "requirement.free_lift_fraction": ("Free lift, share of gross lift", "%", 100.0, ""),
     "requirement.min_tether_safety_factor": ("Required tether safety factor", "-", 1.0, ""),
+    "requirement.survival_safety_factor": ("Tether safety factor at the survival wind", "-", 1.0,
+                                           ""),
+    "requirement.max_tether_angle_deg": ("Largest tether angle from the vertical", "deg", 1.0,
+                                         "deg"),
+    "requirement.weathervane_margin": ("Weathervane stability margin", "1/rad", 1.0, "per_rad"),
+    "requirement.rules": ("Rule set", "", 1.0, ""),
     "configuration.gas.kind": ("Lifting gas", "", 1.0, ""),
     "configuration.gas.purity": ("Gas purity", "%", 100.0, ""),
     "configuration.gas.superpressure": ("Hull superpressure", "Pa", 1.0, "Pa"),
@@ -124,6 +134,7 @@ def flatten_inputs(inputs: Mapping[str, Any]) -> dict[str, Any]:
 
     Only the ``requirement`` and ``configuration`` parts are kept (not format/version).
 
+    >>> from aerostat_core.presets import thesis_baseline
     >>> flat = flatten_inputs(inputs_to_dict(*thesis_baseline()))
     >>> flat["requirement.payload_mass"], flat["configuration.hull.volume"]
     (10.0, 170.0)
@@ -499,15 +510,14 @@ def thesis_gui_cases() -> dict[str, dict[str, Any]]:
     """The thesis' GUI test cases as saved-case dicts: payload 10 vs 30 kg at 300 m, altitude
     100 vs 500 m with 10 kg (thesis §4.5, Table 4.15, Figs 4.24-4.35).
 
-    Built from :func:`~aerostat_core.presets.thesis_baseline` with the volume sized
-    (``hull.volume = None``) so that payload and altitude change the hull. The blow-by limit is
-    0.1 x altitude (the baseline's 30 m at 300 m; methods.md G5).
+    Sized (``hull.volume = None``) under the default "practice" rule set and its configuration
+    (aerostat_core.rules, presets.practice_configuration), so payload and altitude change the hull
+    and every limit scales with the altitude; all four are feasible (tests/core/test_fielded.py).
     """
-    req0, cfg0 = thesis_baseline()
-    cfg = cfg0.with_design_variables(volume=None)
+    cfg = practice_configuration()
 
     def case(payload: float, altitude: float) -> dict[str, Any]:
-        req = replace(req0, payload_mass=payload, altitude=altitude, blow_by_limit=0.1 * altitude)
+        req = Requirement(payload_mass=payload, altitude=altitude).resolved()
         return inputs_to_dict(req, cfg)
 
     return {

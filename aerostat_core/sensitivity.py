@@ -60,6 +60,7 @@ def baseline_variables(cfg: Configuration) -> dict[str, float]:
 
 def baseline_volume(req: Requirement, cfg: Configuration) -> float:
     """The baseline hull volume [m3]: the configuration's, or V*(x0) sized when it has none."""
+    req = req.resolved()
     if cfg.hull.volume is not None:
         return float(cfg.hull.volume)
     return float(_evaluate(req, cfg).volume[0])
@@ -200,6 +201,7 @@ def one_at_a_time(
     ValueError
         Bad ranges (empty, low > high, outside the engine's valid range) or point count.
     """
+    req = req.resolved()
     rng = _ranges(ranges)
     n = _check_points(n_points)
     x0 = baseline_variables(cfg)
@@ -315,6 +317,7 @@ def two_variable_map(
     -------
     SensitivityMap
     """
+    req = req.resolved()
     for v in (x_variable, y_variable):
         if v not in VARIABLES:
             raise ValueError(f"map variable {v!r} is unknown; valid: {', '.join(VARIABLES)}")

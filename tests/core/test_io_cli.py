@@ -114,10 +114,14 @@ def test_design_csv_has_units_in_columns():
     assert "mass_kg" in text and "tension_top_N" in text and "alpha_eq_deg" in text
 
 
-def test_cli_default_blow_by_limit_is_a_tenth_of_the_altitude(capsys):
-    assert main(["design", "--payload", "10", "--altitude", "500", "--volume", "170"]) == 0
+def test_cli_default_limits_scale_with_the_altitude(capsys):
+    """Practice rules: blow-by limit 0.5 x altitude, altitude loss 0.15 x altitude."""
+    assert main(["design", "--payload", "10", "--altitude", "500", "--json"]) == 0
+    s = json.loads(capsys.readouterr().out)
+    assert s["rules"] == "practice" and s["feasible"]
+    assert main(["design", "--payload", "10", "--altitude", "500", "--volume", "20"]) == 0
     out = capsys.readouterr().out
-    assert "exceeds the limit 50 m" in out or "feasible: all requirements met" in out
+    assert "NOT FEASIBLE" in out and "free lift" in out
 
 
 def test_cli_unwritable_csv_exits_2(capsys):

@@ -90,7 +90,7 @@ def test_design_invariants_hold_over_the_whole_input_domain(req, cfg):
                       atol=1e-9)
     # wherever a stable trim was found, the moment about the confluence point vanishes
     p = d.performance
-    found = ~p.flags["unstable"]
+    found = ~p.flags["stability"]
     if found.any():
         m = moment_about_confluence(d.airframe, cfg.aero, np.radians(p.alpha_eq[found]),
                                     p.wind_speed[found])

@@ -58,9 +58,11 @@ def test_resized_sweep_sits_on_the_blow_by_limit(ofat_resized, thesis) -> None:
     req = thesis[0]
     for sw in ofat_resized.sweeps.values():
         b = sw.designs
-        ok = b.sizing_feasible
-        assert ok.all()
+        ok = b.sizing_feasible & (b.binding == "blow_by")
+        assert ok.sum() >= 6  # the blow-by limit sizes most of each sweep
         assert np.allclose(b.blow_by[ok], req.blow_by_limit, rtol=1e-6)
+        # where no volume works, sizing names the constraint the sweep pushed past its limit
+        assert set(b.binding[~b.sizing_feasible]) <= {"fins_on_hull", "blow_by+weathervane"}
     # the 170 m3 baseline has blow-by below the calibrated limit, so re-sized it shrinks
     assert ofat_resized.baseline_design["volume_m3"] < 170.0
     # thesis story: smaller fins -> more hull lift at a larger angle -> a smaller hull here
@@ -111,7 +113,9 @@ def test_resized_map_sizes_every_point(thesis) -> None:
     req, cfg = thesis
     m = two_variable_map(req, cfg, "area_change", "position", n=5, resize=True)
     assert m.volume_held is None and m.volume.shape == (5, 5)
-    assert np.allclose(m.blow_by, req.blow_by_limit, rtol=1e-6)
+    on_limit = np.isclose(m.blow_by, req.blow_by_limit, rtol=1e-6)
+    assert on_limit.sum() >= 12  # sized to the limit wherever fins fit on the hull
+    assert np.all(m.blow_by[~on_limit] < req.blow_by_limit)  # the rest: sized by another limit
     assert np.ptp(m.volume) > 0
     assert baseline_volume(req, cfg.with_design_variables(volume=None)) < 170.0
 
