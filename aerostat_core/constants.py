@@ -57,6 +57,14 @@ HULL_EFFICIENCY = 1.19
 #: Hull cross-flow drag coefficient (C_dc)_h [-] (S6; 0.32 Skyship-type value).
 HULL_CROSSFLOW_DRAG = 0.32
 #: Fin efficiency eta_f used with a 3-D (Helmbold/DATCOM) lift slope [-] (methods.md G7).
+#: Why not the Jones & DeLaurier / Gomes pairing of the design notes (eta_f = 0.29 on a section
+#: slope of 5.73 /rad, i.e. 1.66 /rad per fin pair): there eta_f lumps the finite-span loss and
+#: the hull-fin interference into one factor fitted to a 2-D slope. Here the finite-span loss is
+#: already in the Helmbold slope (2.60 /rad at aspect ratio 2; Helmbold 1942, USAF DATCOM
+#: §4.1.3.2), so 0.29 on top would count it twice; the interference that remains (typically a
+#: 10-30 % loss on a fin pair at the hull, DATCOM §4.3.1) is NOT modelled, is listed as an
+#: uncertainty in docs/validation.md, and is covered in the "practice" rules by the weathervane
+#: margin (aerostat_core.rules).
 FIN_EFFICIENCY = 1.0
 #: Two-dimensional section lift slope [1/rad] (thin-aerofoil theory, 2 pi).
 SECTION_LIFT_SLOPE = 2.0 * math.pi

@@ -37,7 +37,6 @@ def test_table_2_2_npl_hull_is_predicted_within_1_percent():
     req, cfg = thesis_baseline()
     d = design(req, cfg.with_design_variables(fineness_ratio=2.7, volume=100.0))
     assert float(d.airframe.mass.items["hull"]) == pytest.approx(15.57, rel=0.01)
-    assert float(d.airframe.mass.items["lifting gas"]) == pytest.approx(16.9, rel=1e-9)
     # fins (calibrated area ratio) and misc (calibrated ratio) reproduce Table 2.2
     assert float(d.airframe.mass.items["fins"]) == pytest.approx(7.8, rel=0.01)
     assert float(d.airframe.mass.items["miscellaneous"]) == pytest.approx(4.7, rel=0.01)

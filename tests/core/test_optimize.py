@@ -192,7 +192,8 @@ def test_baseline_to_optimum_changes_match_the_thesis_order(thesis_results) -> N
     rows = {r["quantity"]: r for r in baseline_vs_optimum(req, cfg, best.x)}
     assert rows["Hull volume"]["baseline"] == pytest.approx(170.0)
     assert rows["Hull volume"]["change"] == pytest.approx(-50.0, abs=2.0)
-    assert rows["Gas fill cost"]["change"] == pytest.approx(-1925.0, rel=0.05)
+    # (the gas cost change is not checked: the price is derived from the same USD 1925 / 50 m3,
+    # so it would only restate the volume change above)
     assert rows["Total mass"]["change"] < -15.0
     t = {r["quantity"]: r for r in thesis_comparison_rows(list(rows.values()))}
     assert t["Gas fill cost"]["thesis_change"] == -1925.0
