@@ -2,14 +2,12 @@
 
 from __future__ import annotations
 
-from dataclasses import replace
-
 import numpy as np
 import pytest
 
 from aerostat_core.design import design
 from aerostat_core.fielded import FIELDED, practice_configuration_for, validate_fielded
-from aerostat_core.inputs import HullSpec, Requirement
+from aerostat_core.inputs import Requirement
 from aerostat_core.presets import PRACTICE_FABRIC_AREAL_DENSITY, PRACTICE_FINENESS_RATIO
 
 
@@ -23,11 +21,10 @@ def test_every_fielded_system_sizes_feasibly_near_its_published_length(harness) 
     for r in harness.rows:
         assert r.feasible, r.system.name
         assert abs(r.length_error) < 0.25, (r.system.name, r.length_error)
-    # measured: median |error| 10.3 %, worst 19 % (TIF-1600, whose 16 kg at 610 m does not fit
-    # its published 45 m3 with any 15 % free-lift margin). The 10 % median target is
-    # missed by 0.3 points; the value is pinned so that a change to it is seen.
-    assert harness.median_abs_length_error == pytest.approx(0.1025, abs=0.005)
-    assert harness.max_abs_length_error < 0.20
+    # targets: median |error| <= 10 %, none worse than 25 % (measured 9.3 % and 16 %: TIF-1600,
+    # whose 16 kg at 610 m does not fit its published 45 m3 with a 15 % free-lift margin)
+    assert harness.median_abs_length_error <= 0.10
+    assert harness.max_abs_length_error <= 0.25
 
 
 def test_held_out_systems_are_predictions(harness) -> None:
@@ -48,12 +45,12 @@ def test_practice_fabric_is_the_least_squares_fit_on_the_fit_set() -> None:
 
     def rms(gsm: float) -> float:
         cfg = practice_configuration_for(gsm)
-        cfg = replace(cfg, hull=HullSpec(fineness_ratio=PRACTICE_FINENESS_RATIO))
+        assert cfg.hull.fineness_ratio == PRACTICE_FINENESS_RATIO
         e = [np.log(design(Requirement(payload_mass=s.payload_mass, altitude=s.altitude),
                            cfg).summary()["length_m"] / s.length) for s in FIELDED if s.fit]
         return float(np.sqrt(np.mean(np.square(e))))
 
-    scan = np.arange(0.19, 0.2101, 0.005)
+    scan = np.arange(0.20, 0.2401, 0.005)
     best = scan[int(np.argmin([rms(g) for g in scan]))]
     assert best == pytest.approx(PRACTICE_FABRIC_AREAL_DENSITY, abs=0.0051)
 

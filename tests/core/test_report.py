@@ -13,6 +13,7 @@ import pytest
 from aerostat_core import design, thesis_baseline
 from aerostat_core.geometry import radius
 from aerostat_core.io import inputs_from_dict, inputs_to_dict
+from aerostat_core.presets import PRACTICE_FABRIC_AREAL_DENSITY
 from aerostat_core.report import (
     INPUT_FIELDS,
     case_designs,
@@ -180,7 +181,8 @@ def test_comparison_rows_mark_the_differences():
     assert [vol[n] for n in names] == pytest.approx([designs[n].volume for n in names])
     assert vol["differs"] is True
     # display units: fabric in g/m2, fin position in % of length
-    assert by_q["Hull fabric areal density [g/m²]"][names[0]] == pytest.approx(200.0)
+    assert by_q["Hull fabric areal density [g/m²]"][names[0]] == pytest.approx(
+        1000 * PRACTICE_FABRIC_AREAL_DENSITY)
     assert by_q["Fin root LE position Δl_f [% of l]"][names[0]] == pytest.approx(68.0)
     assert by_q["Hull volume (given; empty = sized) [m³]"][names[0]] == "auto"
     sections = [r["section"] for r in rows]
