@@ -99,7 +99,7 @@ def main(argv: list[str] | None = None) -> int:
             req, cfg = Requirement(), Configuration()
         changes = {f: getattr(args, o) for o, f in _OPTIONS.items() if getattr(args, o) is not None}
         if "blow_by_limit" not in changes and "altitude" in changes and args.config is None:
-            changes["blow_by_limit"] = 0.1 * changes["altitude"]  # methods.md G5 default
+            changes["blow_by_limit"] = 0.1 * changes["altitude"]  # docs/methods.md G5 default
         req = replace(req, **changes)
         if args.volume is not None:
             cfg = cfg.with_design_variables(volume=args.volume)

@@ -501,7 +501,7 @@ def thesis_gui_cases() -> dict[str, dict[str, Any]]:
 
     Built from :func:`~aerostat_core.presets.thesis_baseline` with the volume sized
     (``hull.volume = None``) so that payload and altitude change the hull. The blow-by limit is
-    0.1 x altitude (the baseline's 30 m at 300 m; methods.md G5).
+    0.1 x altitude (the baseline's 30 m at 300 m; docs/methods.md G5).
     """
     req0, cfg0 = thesis_baseline()
     cfg = cfg0.with_design_variables(volume=None)

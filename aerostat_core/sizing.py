@@ -1,6 +1,6 @@
 """Hull sizing: the smallest volume that meets the blow-by limit at the design wind.
 
-Vectorised over a batch of design variables (the optimiser's nested V*(x), methods.md §1.12):
+Vectorised over a batch of design variables (the optimiser's nested V*(x), docs/methods.md §1.12):
 every design is evaluated on a 24-point logarithmic volume grid (ratio 1.49 between points) in
 one numpy call, the first feasible grid volume brackets the answer, and four rounds of 8 interior
 points shrink the bracket to 1.49^(1/9^4) - 1 = 6e-5 relative (52 evaluations per design). No scipy root-finder is involved, so nothing raises on an infeasible case.
