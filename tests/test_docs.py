@@ -297,3 +297,16 @@ def test_nothing_outside_tests_and_benchmarks_imports_them(package: str) -> None
     ]
     bad = _violations(_python_files(*others), lambda n: _top(n) != package)
     assert not bad, "\n".join(bad)
+
+
+def test_method_page_shows_the_design_documents() -> None:
+    from streamlit.testing.v1 import AppTest
+
+    at = AppTest.from_file(str(ROOT / "pages" / "6_Method.py"), default_timeout=120).run()
+    assert not at.exception
+    assert any(e.label.startswith("Design documents (docs/)") for e in at.expander)
+    for doc in DOC_NAMES:
+        at.radio(key="method_doc").set_value(f"docs/{doc}.md").run()
+        assert not at.exception
+        first_line = (DOCS / f"{doc}.md").read_text(encoding="utf-8").splitlines()[0]
+        assert any(first_line in str(m.value) for m in at.markdown), doc
