@@ -1,6 +1,6 @@
 """Aerodynamic forces on hull and fins versus angle of attack and dynamic pressure.
 
-Hull: Jones & DeLaurier (1983) component model (methods.md §1.7, sources S1, S6).
+Hull: Jones & DeLaurier (1983) component model (docs/methods.md §1.7, sources S1, S6).
 Axial drag: Hoerner's volumetric drag law (S10). Fins: Helmbold/DATCOM lift slope with Oswald
 induced drag (S11). Forces are in body axes: normal N along body +z (up at alpha = 0), axial A
 along +xi (aft, drag-like); moments nose-up positive. Every function broadcasts, so the static
@@ -50,7 +50,7 @@ def hoerner_volumetric_drag(fineness_ratio, reynolds):
 
     Notes
     -----
-    Source: Hoerner, *Fluid-Dynamic Drag* (1965) ch. 6; methods.md §1.7 (confirmed in S5).
+    Source: Hoerner, *Fluid-Dynamic Drag* (1965) ch. 6; docs/methods.md §1.7 (confirmed in S5).
 
     Examples
     --------
@@ -160,7 +160,7 @@ def fin_lift_drag(q, alpha, lift_slope, efficiency, stall_angle, lifting_area, t
 
     Notes
     -----
-    Sources: DATCOM/Raymer (methods.md §1.7, S11).
+    Sources: DATCOM/Raymer (docs/methods.md §1.7, S11).
     """
     cl = efficiency * lift_slope * np.clip(alpha, -stall_angle, stall_angle)
     lift = q * lifting_area * cl

@@ -82,7 +82,7 @@ def build_airframe(
     -----
     Air properties are taken at the operating altitude (site + altitude); the few metres of
     altitude loss in wind change density by < 0.1 %, which is neglected. The confluence point is
-    placed below the centre of net static lift (methods.md §1.8, G9), so the hull flies level in
+    placed below the centre of net static lift (docs/methods.md §1.8, G9), so the hull flies level in
     calm air: xi_C = (F_B xi_CB - W_a xi_CG)/(F_B - W_a) + offset * l, z_C = -(b + drop * d).
     Where F_B <= W_a there is no net lift at the confluence point and xi_C falls back to xi_CB.
     """

@@ -1,7 +1,7 @@
 """Physical constants and documented default coefficients, each with its unit and source.
 
 Every module imports its constants from here so that a value is typed once. Values tagged
-*INFERRED* or *calibrated* are documented in ``presets.py`` and in ../shared/design/methods.md §3.
+*INFERRED* or *calibrated* are documented in ``presets.py`` and in docs/methods.md §3.
 """
 
 from __future__ import annotations
@@ -51,12 +51,12 @@ HELIUM_PRICE_USD_PER_M3 = 38.5
 #: thesis).
 HYDROGEN_PRICE_USD_PER_M3 = 10.0
 
-# --- Aerodynamic defaults (methods.md §1.7, sources S1, S6, S10, S11) ---------------------------
+# --- Aerodynamic defaults (docs/methods.md §1.7, sources S1, S6, S10, S11) ---------------------------
 #: Jones & DeLaurier hull efficiency factor eta_k [-] (S6, YEZ-2A value).
 HULL_EFFICIENCY = 1.19
 #: Hull cross-flow drag coefficient (C_dc)_h [-] (S6; 0.32 Skyship-type value).
 HULL_CROSSFLOW_DRAG = 0.32
-#: Fin efficiency eta_f used with a 3-D (Helmbold/DATCOM) lift slope [-] (methods.md G7).
+#: Fin efficiency eta_f used with a 3-D (Helmbold/DATCOM) lift slope [-] (docs/methods.md G7).
 #: Why not the Jones & DeLaurier / Gomes pairing of the design notes (eta_f = 0.29 on a section
 #: slope of 5.73 /rad, i.e. 1.66 /rad per fin pair): there eta_f lumps the finite-span loss and
 #: the hull-fin interference into one factor fitted to a 2-D slope. Here the finite-span loss is
@@ -70,7 +70,7 @@ FIN_EFFICIENCY = 1.0
 SECTION_LIFT_SLOPE = 2.0 * math.pi
 #: Fin zero-lift drag coefficient on planform area [-] (S6: 0.003-0.010).
 FIN_ZERO_LIFT_DRAG = 0.008
-#: Fin stall angle [deg] for low-aspect-ratio fins (methods.md §1.7: 15-20 deg).
+#: Fin stall angle [deg] for low-aspect-ratio fins (docs/methods.md §1.7: 15-20 deg).
 FIN_STALL_ANGLE_DEG = 20.0
 #: Smallest Reynolds number used in Hoerner's drag law [-]; guards the V -> 0 limit where q -> 0.
 MIN_REYNOLDS = 1.0e4

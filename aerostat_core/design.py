@@ -94,7 +94,7 @@ class Design:
 
     @property
     def percent_static_lift(self) -> float:
-        """PSL = 100 free lift / gross buoyancy [%] (methods.md §1.3, our definition)."""
+        """PSL = 100 free lift / gross buoyancy [%] (docs/methods.md §1.3, our definition)."""
         return 100.0 * self.free_lift / self.buoyancy
 
     def tether_profile(self, speed: float) -> tuple[np.ndarray, np.ndarray]:

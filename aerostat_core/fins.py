@@ -61,7 +61,7 @@ def oswald_efficiency(aspect_ratio, sweep_le):
 
     Straight wing: e = 1.78 (1 - 0.045 AR^0.68) - 0.64;
     swept (Lambda_LE > 30 deg): e = 4.61 (1 - 0.045 AR^0.68) (cos Lambda_LE)^0.15 - 3.1.
-    The fits exceed 1 for AR < 2, hence the clamp (methods.md §1.7). Source: Raymer eq. 12.48-12.49.
+    The fits exceed 1 for AR < 2, hence the clamp (docs/methods.md §1.7). Source: Raymer eq. 12.48-12.49.
 
     Parameters
     ----------
@@ -141,7 +141,7 @@ def fin_geometry(
 
     Notes
     -----
-    Sources: methods.md §1.5; planform relations are textbook (Raymer ch. 7); the area ratio
+    Sources: docs/methods.md §1.5; planform relations are textbook (Raymer ch. 7); the area ratio
     0.227 is calibrated so that thesis Table 2.2's 100 m3 hull has 7.8 kg of fins (presets.py).
     """
     dsf = spec.area_change if area_change is None else np.asarray(area_change, dtype=float)

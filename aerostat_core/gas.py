@@ -1,4 +1,4 @@
-"""Lifting-gas density, buoyancy and free lift (methods.md §1.3)."""
+"""Lifting-gas density, buoyancy and free lift (docs/methods.md §1.3)."""
 
 from __future__ import annotations
 
@@ -29,7 +29,7 @@ def gas_density(gas: LiftingGas, pressure, temperature):
 
     Notes
     -----
-    Sources: ideal-gas law; PADS (methods.md S3) for purity and off-standard density.
+    Sources: ideal-gas law; PADS (docs/methods.md S3) for purity and off-standard density.
 
     Examples
     --------

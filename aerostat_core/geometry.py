@@ -1,7 +1,7 @@
 """NPL double-ellipsoid hull: profile, volume, area, centroids, Lamb inertia factors, J&D integrals.
 
 All functions broadcast over numpy arrays, so one call can size a whole batch of hulls.
-Body frame (methods.md §1): station xi from the nose, aft positive; z up.
+Body frame (docs/methods.md §1): station xi from the nose, aft positive; z up.
 """
 
 from __future__ import annotations
@@ -27,7 +27,7 @@ def hull_dimensions(volume, fineness_ratio, nose_fraction=0.432):
     fineness_ratio : array_like
         l/d [-], valid 1.5-8 (the NPL shape is a standard at 4.0).
     nose_fraction : array_like
-        a1/l [-], 0.432 for the NPL standard (public Gertler-envelope tables, methods.md S7).
+        a1/l [-], 0.432 for the NPL standard (public Gertler-envelope tables, docs/methods.md S7).
 
     Returns
     -------
@@ -93,7 +93,7 @@ def radius(xi, a1, a2, b):
     """Local hull radius r(xi) [m] of the NPL profile (zero outside the hull).
 
     r = b sqrt(1 - ((a1 - xi)/a1)^2) for 0 <= xi <= a1, and b sqrt(1 - ((xi - a1)/a2)^2) for
-    a1 <= xi <= a1 + a2.  Source: thesis Fig. 3.4; methods.md §1.4.
+    a1 <= xi <= a1 + a2.  Source: thesis Fig. 3.4; docs/methods.md §1.4.
     """
     xi = np.asarray(xi, dtype=float)
     a = np.where(xi <= a1, a1, a2)
@@ -203,7 +203,7 @@ class HullGeometry:
 def hull_geometry(volume, fineness_ratio, nose_fraction=0.432) -> HullGeometry:
     """Build :class:`HullGeometry` from volume [m3], fineness ratio [-] and a1/l [-].
 
-    Closed forms (methods.md §1.4): S = S_half(a1, b) + S_half(a2, b);
+    Closed forms (docs/methods.md §1.4): S = S_half(a1, b) + S_half(a2, b);
     xi_CB = [a1 (5 a1/8) + a2 (a1 + 3 a2/8)] / (a1 + a2) (half-ellipsoid centroids 3a/8 from the
     base, volumes in proportion to a1, a2); planform J1 = pi b l / 2 with centroid
     [a1 (a1 - 4 a1/(3 pi)) + a2 (a1 + 4 a2/(3 pi))] / l.
@@ -243,7 +243,7 @@ def hull_geometry(volume, fineness_ratio, nose_fraction=0.432) -> HullGeometry:
 
 
 def shape_integrals(g: HullGeometry, cutoff_station, moment_station):
-    """Jones & DeLaurier hull integrals (methods.md §1.4, source S1).
+    """Jones & DeLaurier hull integrals (docs/methods.md §1.4, source S1).
 
     I1 = int_0^{l_h} dA/dxi dxi = A(l_h) = pi r(l_h)^2
     I3 = int_0^{l_h} (xi_m - xi) dA/dxi dxi = (xi_m - l_h) A(l_h) + V(0..l_h)   (by parts)

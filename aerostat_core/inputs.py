@@ -318,7 +318,7 @@ class FinSpec:
 
 @dataclass(frozen=True)
 class AeroModel:
-    """Coefficients of the Jones & DeLaurier hull model and the fin model (methods.md §1.7).
+    """Coefficients of the Jones & DeLaurier hull model and the fin model (docs/methods.md §1.7).
 
     Parameters
     ----------
@@ -372,7 +372,7 @@ class ConfluenceSpec:
     ----------
     drop_ratio : float
         Distance of the confluence point below the hull bottom / hull diameter [-], valid
-        [0.05, 3]. Not found in the thesis; 0.6 is an engineering guess (methods.md G9).
+        [0.05, 3]. Not found in the thesis; 0.6 is an engineering guess (docs/methods.md G9).
     xi_offset : float
         Station shift from the point below the centre of net static lift / hull length [-], valid
         [-0.2, 0.2]; positive moves it aft and trims the nose up in calm air.

@@ -1,4 +1,4 @@
-"""Mass budget, centre of gravity and pitch inertia (methods.md §1.6, thesis §3.1.3(c))."""
+"""Mass budget, centre of gravity and pitch inertia (docs/methods.md §1.6, thesis §3.1.3(c))."""
 
 from __future__ import annotations
 
@@ -66,7 +66,7 @@ def mass_breakdown(
 
     Notes
     -----
-    Source: methods.md §1.6; Table 2.2 of the thesis for the ratios. The pitch inertia uses the
+    Source: docs/methods.md §1.6; Table 2.2 of the thesis for the ratios. The pitch inertia uses the
     hull profile: shell I = sigma int ((xi - xi_s)^2 + r^2/2) dS, gas I = rho int ((xi - xi_cb)^2
     + r^2/4) dV, point masses for the rest, then the parallel-axis theorem.
     """

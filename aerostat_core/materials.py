@@ -76,7 +76,7 @@ class TetherSpec:
 
 
 #: Fabric catalogue. Thesis value INFERRED from Table 2.2 (13.54 kg sphere hull / 104.19 m2);
-#: heavier laminates from the IIT-B/ADRDE range 280-385 g/m2 (methods.md S8).
+#: heavier laminates from the IIT-B/ADRDE range 280-385 g/m2 (docs/methods.md S8).
 FABRICS: dict[str, Fabric] = {
     f.name: f
     for f in (
@@ -89,9 +89,9 @@ FABRICS: dict[str, Fabric] = {
 }
 
 #: Tether catalogue. The thesis tether mass (20 g/m, 6 kg per 300 m) is INFERRED from Table 2.2;
-#: its diameter, strength and stiffness are assumed (methods.md G10): 20 kN is the order of a
+#: its diameter, strength and stiffness are assumed (docs/methods.md G10): 20 kN is the order of a
 #: 5 mm HMPE (Dyneema-type) braid, which weighs about 15-20 g/m. The 4 mm Dyneema data come
-#: from OpenSourceAWE KiteModels settings (dynamics.md D12); breaking loads are typical values.
+#: from OpenSourceAWE KiteModels settings (docs/dynamics.md D12); breaking loads are typical values.
 TETHERS: dict[str, TetherSpec] = {
     t.name: t
     for t in (

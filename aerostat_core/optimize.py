@@ -1,6 +1,6 @@
 """Design optimisation: one problem definition, three solvers that agree, and the trade-off curve.
 
-The problem (thesis §3.2, Tables 4.7-4.12; methods.md §1.12, G4-G6, G14)
+The problem (thesis §3.2, Tables 4.7-4.12; docs/methods.md §1.12, G4-G6, G14)
 ------------------------------------------------------------------------
 Design variables x = [f, Delta S_f, Delta l_f]: hull fineness ratio [-], fin-area change from
 the statistical size [%] and fin root leading-edge station / hull length [-].
@@ -11,7 +11,7 @@ the hull volume (= the helium bill) as an option.
 Volume is *not* a design variable: it enters as the smallest hull that meets the requirement for
 the given x, V*(x) = :func:`aerostat_core.sizing.size_volume` (blow-by at the design wind <= the
 limit and every other constraint of the table). This nested form is what makes "fins supply dynamic lift,
-so a smaller hull suffices" visible to an optimiser that only moves f, S_f and l_f (methods.md
+so a smaller hull suffices" visible to an optimiser that only moves f, S_f and l_f (docs/methods.md
 G4). The sizing brackets V* to about 1e-4 relative; :func:`evaluate_designs` finishes it with one
 secant step on the binding constraint so that V*(x) is smooth enough for finite-difference gradients.
 
@@ -77,7 +77,7 @@ VARIABLE_INFO: dict[str, tuple[str, str, tuple[float, float]]] = {
     "position": ("Fin position Δl_f (root LE / l)", "-", (0.4, 0.95)),
 }
 
-#: Default bounds (methods.md G6 with the fin area also allowed to shrink, to -50 %: the
+#: Default bounds (docs/methods.md G6 with the fin area also allowed to shrink, to -50 %: the
 #: statistical fin size is a starting point, not a floor; the lower limit is the engine's).
 DEFAULT_BOUNDS: dict[str, tuple[float, float]] = {
     "fineness_ratio": (2.5, 4.5),
@@ -101,7 +101,7 @@ FEASIBILITY_TOL = TOLERANCE
 #: A constraint counts as active (binding) at the optimum when g > -ACTIVE_TOL [-].
 ACTIVE_TOL = 2e-3
 
-#: Thesis headline numbers (abstract and Appendix H; methods.md §3.1, FOUND): baseline 170 m3 /
+#: Thesis headline numbers (abstract and Appendix H; docs/methods.md §3.1, FOUND): baseline 170 m3 /
 #: 90.65 kg, optimum 120 m3 / 71.6 kg, helium saved USD 1925 (at 38.5 USD/m3, INFERRED).
 THESIS_REPORTED = {
     "baseline_volume_m3": 170.0,

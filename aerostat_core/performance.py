@@ -56,7 +56,7 @@ class Evaluation:
 def evaluate(req: Requirement, cfg: Configuration, af: Airframe, speed) -> Evaluation:
     """Trim the aerostat and solve the tether at wind speed(s) ``speed`` [m/s] at the hull.
 
-    Force balance on the aerostat at the confluence point (methods.md §1.9):
+    Force balance on the aerostat at the confluence point (docs/methods.md §1.9):
     T_x = D, T_z = F_B + L_dyn - W_a; then the tether march down to the winch.
     """
     speed = np.asarray(speed, float)

@@ -13,7 +13,7 @@ Which numbers are calibrated and which are predicted (the tests say the same):
   13.54 kg), helium 0.169 kg/m3 (16.9 kg), tether 20 g/m (6 kg per 300 m), miscellaneous mass
   0.30 x hull (4.7/15.57), fin planform ratio 0.227 of hull area (fins 7.8 kg with 4 fins of
   fabric factor 2.2 at 130 g/m2);
-* chosen, not calibrated: fineness ratio 4.0 (the NPL standard shape, methods.md S7) and
+* chosen, not calibrated: fineness ratio 4.0 (the NPL standard shape, docs/methods.md S7) and
   volume 170 m3 (the tactical class, thesis §2.3.1);
 * predicted: the baseline total mass (thesis 90.65 kg) and the NPL hull mass of Table 2.2.
 """
@@ -32,7 +32,7 @@ from .rules import THESIS_BLOW_BY_FRACTION, get_rules
 #: the fin planform drives trim, weathervane stability and the optimum (see the Sensitivity page).
 THESIS_FIN_AREA_RATIO = 0.227
 #: Blow-by limit of the thesis preset at the 15 m/s design wind [m]. CALIBRATED, not found in
-#: the thesis (methods.md G5): chosen so that the optimiser (aerostat_core.optimize, default
+#: the thesis (docs/methods.md G5): chosen so that the optimiser (aerostat_core.optimize, default
 #: bounds, all seven constraints including weathervane stability) sizes the optimum at ~120 m3
 #: as the thesis abstract reports (53.4 m gives 119.9 m3); the optimum's mass is then a
 #: prediction (64.7 kg vs the thesis' 71.6 kg). 0.1 x altitude (30 m) would size ~250 m3.

@@ -1,4 +1,4 @@
-"""Reference numbers (thesis, methods.md, dynamics.md) next to what the engine gives now.
+"""Reference numbers (thesis, docs/methods.md, docs/dynamics.md) next to what the engine gives now.
 
 :func:`reference_checks` feeds the app's Method page and the validation tests, so the numbers a
 user sees are the numbers CI checks. ``kind`` says whether a number was used to calibrate the
@@ -34,7 +34,7 @@ LAMB_TABLE = (
     (9.97, 0.021, 0.960, 0.883),
 )
 
-#: dynamics.md §3.1 case P: point aerostat, 320 m elastic tether, rho 1.225, g 9.81.
+#: docs/dynamics.md §3.1 case P: point aerostat, 320 m elastic tether, rho 1.225, g 9.81.
 CASE_P = {
     "mass": 71.6, "volume": 120.0, "drag_area": 1.0, "length": 320.0, "rho": 1.225, "g": 9.81,
     "tether": TetherSpec("case P", 0.02, 0.004, 1.2, 0.01, 1.0e5, 1.0e6),
@@ -42,7 +42,7 @@ CASE_P = {
 
 
 def case_p_static(wind) -> tuple[float, float]:
-    """Aerostat (x, z) [m] of dynamics.md case P for a wind function ``wind(z)`` [m/s]."""
+    """Aerostat (x, z) [m] of docs/dynamics.md case P for a wind function ``wind(z)`` [m/s]."""
     p = CASE_P
     s = point_aerostat_tether(p["mass"], p["volume"], p["drag_area"], p["tether"], p["length"],
                               p["rho"], wind, p["g"], segments=200)
@@ -93,7 +93,7 @@ def reference_checks() -> list[dict]:
                      2.0, "predicted", "thesis abstract"))
     for h, rho in ((0.0, 1.2250), (100.0, 1.2133), (300.0, 1.1901), (500.0, 1.1673)):
         rows.append(_row(f"ISA air density at {h:g} m", rho, float(isa(h).density), "kg/m3",
-                         0.01, "check", "ISO 2533 (methods.md §1.2)"))
+                         0.01, "check", "ISO 2533 (docs/methods.md §1.2)"))
     for f, k1, k2, kr in LAMB_TABLE[1::3]:
         c1, c2, cr = (float(x) for x in lamb_factors(f))
         rows.append(_row(f"Lamb k1 at l/d {f:g}", k1, c1, "-", 1.5, "check", "Lamb (1932)"))
@@ -101,14 +101,14 @@ def reference_checks() -> list[dict]:
         rows.append(_row(f"Lamb k' at l/d {f:g}", kr, cr, "-", 1.0, "check", "Lamb (1932)"))
     x1, z1 = case_p_static(lambda z: 10.0 * np.ones_like(np.asarray(z, float)))
     rows.append(_row("R1 point aerostat blow-by (U 10 m/s)", 48.539, x1, "m", 0.1, "check",
-                     "dynamics.md §3.1 (MoorDyn + shooting solver)"))
+                     "docs/dynamics.md §3.1 (MoorDyn + shooting solver)"))
     rows.append(_row("R1 point aerostat height", 316.253, z1, "m", 0.02, "check",
-                     "dynamics.md §3.1"))
+                     "docs/dynamics.md §3.1"))
     x2, z2 = case_p_static(lambda z: 6.0 * (np.maximum(np.asarray(z, float), 1e-9) / 10) ** (1 / 7))
     rows.append(_row("R2 point aerostat blow-by (power law)", 44.443, x2, "m", 0.1, "check",
-                     "dynamics.md §3.1"))
+                     "docs/dynamics.md §3.1"))
     rows.append(_row("R2 point aerostat height", 316.958, z2, "m", 0.02, "check",
-                     "dynamics.md §3.1"))
+                     "docs/dynamics.md §3.1"))
     rows.append(_row("Helium cost of 50 m3", 1925.0, 50.0 * cfg.gas_price_value, "USD", 0.1,
                      "calibrated", "thesis abstract (USD 1925 for -50 m3)"))
     return rows

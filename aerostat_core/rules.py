@@ -83,7 +83,7 @@ class RuleSet:
 #: * blow-by 0.5 and permissible altitude loss 0.15 of the tether length, tether at most 60 deg
 #:   from the vertical at the winch: engineering choices (no published standard found), set so
 #:   that the payload keeps at least 85 % of its height and the winch sees a pull it can level-wind;
-#: * tether safety factor 3 at the design wind (the thesis' value, methods.md G10);
+#: * tether safety factor 3 at the design wind (the thesis' value, docs/methods.md G10);
 #: * weathervane margin 0.02 /rad: about 10 % of the C_m_alpha of a statistical fin set, so the
 #:   hull stays aerodynamically stable within the uncertainty of the Munk-moment estimate
 #:   (engineering choice).

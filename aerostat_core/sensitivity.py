@@ -9,7 +9,7 @@
   (the feasible region for that hull); re-sized shows the mass of the smallest feasible hull.
 
 Every sweep or map is one vectorised call of :func:`aerostat_core.optimize.evaluate_designs`.
-The thesis' sweep ranges were not found (methods.md §1.11); the defaults are the optimiser's
+The thesis' sweep ranges were not found (docs/methods.md §1.11); the defaults are the optimiser's
 bounds (:data:`aerostat_core.optimize.DEFAULT_BOUNDS`).
 """
 

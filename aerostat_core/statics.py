@@ -1,6 +1,6 @@
 """Aerodynamic loads, moment balance about the confluence point, equilibrium and stability.
 
-Sign conventions (methods.md §1): earth X downwind, Z up; the nose faces the wind; alpha is the
+Sign conventions (docs/methods.md §1): earth X downwind, Z up; the nose faces the wind; alpha is the
 nose-up pitch (= angle of attack in a horizontal wind); moments are nose-up positive.
 A body point (xi, z) sits at X = xi cos a + z sin a, Z = -xi sin a + z cos a from the nose.
 """
@@ -103,7 +103,7 @@ def moment_about_confluence(af: Airframe, aero: AeroModel, alpha, speed, cd0=Non
 
     Notes
     -----
-    Source: methods.md §1.8 (Rajani et al. 2010 method, S2/S4).
+    Source: docs/methods.md §1.8 (Rajani et al. 2010 method, S2/S4).
     """
     ld = aero_loads(af, aero, alpha, speed, cd0)
     ca, sa = np.cos(alpha), np.sin(alpha)
@@ -137,8 +137,8 @@ def aerodynamic_moment(af: Airframe, aero: AeroModel, alpha, speed, xi_ref, cd0=
 
     Notes
     -----
-    Source: methods.md §1.8 ("Cm_alpha can also be quoted about CB/CG"); the need for the fins to
-    beat the Munk moment: dynamics.md §1.3.
+    Source: docs/methods.md §1.8 ("Cm_alpha can also be quoted about CB/CG"); the need for the fins to
+    beat the Munk moment: docs/dynamics.md §1.3.
     """
     ld = aero_loads(af, aero, alpha, speed, cd0)
     ca, sa = np.cos(alpha), np.sin(alpha)

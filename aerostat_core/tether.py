@@ -1,6 +1,6 @@
 """Static tether: segment-by-segment march from the confluence point to the winch.
 
-The scheme of Rajani, Pant & Sudhakar (2010) (thesis Fig. 3.10; methods.md §1.9), written as an
+The scheme of Rajani, Pant & Sudhakar (2010) (thesis Fig. 3.10; docs/methods.md §1.9), written as an
 ODE in unstretched arc length and integrated with Heun's method (second order), vectorised over
 any batch of wind speeds or designs. Extensions over the thesis: elastic stretch (T/EA), air
 buoyancy of the line, tangential skin friction, and a height-varying wind.
@@ -225,7 +225,7 @@ def point_aerostat_tether(
     Top tension = (1/2 rho C_D A U(z_top)^2, rho V g - M g): drag along the wind at the aerostat's
     height and net static lift; the tether shape from :func:`solve_tether`, iterated until the
     top height (and so the wind there) converges. Used for the reference cases R1/R2 of
-    dynamics.md §3.1 and as the initial condition of the point-aerostat dynamic mode.
+    docs/dynamics.md §3.1 and as the initial condition of the point-aerostat dynamic mode.
 
     Parameters
     ----------

@@ -1,4 +1,4 @@
-"""Mean wind profiles for the static engine (methods.md §1.2; dynamics.md §2.1)."""
+"""Mean wind profiles for the static engine (docs/methods.md §1.2; docs/dynamics.md §2.1)."""
 
 from __future__ import annotations
 

@@ -6,7 +6,7 @@ to also time scipy's Radau/LSODA with the same compiled right-hand side, ``--rep
 Targets: 300 s of the full model (hull + 20-segment tether) in moderate Dryden turbulence in at
 most 3 s of wall time; the R3 step case (point aerostat, 32 segments, 300 s) at least 10x faster
 than MoorDyn on the same machine with answers within 1 cm. MoorDyn runs only if the optional
-``moordyn`` package is importable; otherwise the wall time quoted in dynamics.md §4.1 is printed,
+``moordyn`` package is importable; otherwise the wall time quoted in docs/dynamics.md §4.1 is printed,
 labelled as such.
 """
 
@@ -102,7 +102,7 @@ def main() -> None:
                   f"{dz * 1e3:.1f} mm, speed-up {md['wall_time'] / t:.0f}x")
     else:
         quoted = cases.MOORDYN_QUOTED_WALL_400S
-        print(f"R3 MoorDyn: not run here. QUOTED reference (dynamics.md §4.1, another 2-core "
+        print(f"R3 MoorDyn: not run here. QUOTED reference (docs/dynamics.md §4.1, another 2-core "
               f"machine): {quoted:.0f} s for 400 s simulated, i.e. about {quoted * 0.75:.0f} s "
               f"for R3's 300 s; speed-up vs rtol=1e-6: {quoted * 0.75 / r3[1e-6][0]:.0f}x")
 

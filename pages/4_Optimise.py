@@ -23,7 +23,7 @@ with st.expander("Problem definition", icon=":material/functions:"):
     st.dataframe(pd.DataFrame(view.problem_rows(req, cfg)), hide_index=True, key="opt_problem")
     st.caption(
         "Every constraint is g(x) ≤ 0 on the sized design at the design wind. Default "
-        "bounds: methods.md G6, with the fin area also allowed to shrink to −50 % (the "
+        "bounds: docs/methods.md G6, with the fin area also allowed to shrink to −50 % (the "
         "statistical fin size is a starting point, not a floor)."
     )
 

@@ -3,6 +3,8 @@ calibrated and which predicted, and the live validation table (aerostat_core.ref
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import pandas as pd
 import streamlit as st
 
@@ -15,6 +17,17 @@ st.caption(
     "text we hold (to §2.4.3), public code implementing the same textbook models, and the "
     "standard references listed at the end. SI units throughout."
 )
+
+# The design documents of the repository (docs/), shipped with the app and readable here.
+_ROOT = Path(__file__).resolve().parents[1]
+with st.expander("Design documents (docs/): method, dynamics, validation, architecture"):
+    _doc = st.radio("Document", [f"docs/{d}.md" for d in ("methods", "dynamics", "validation",
+                                                            "architecture")],
+                    horizontal=True, key="method_doc")
+    if (_ROOT / _doc).is_file():
+        st.markdown((_ROOT / _doc).read_text(encoding="utf-8"))
+    else:
+        st.info(f"{_doc} is not part of this installation.", icon=":material/info:")
 
 
 @st.cache_data(show_spinner="Running the reference checks...")

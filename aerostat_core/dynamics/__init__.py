@@ -1,4 +1,4 @@
-"""3-DOF dynamics of a tethered aerostat in varying, gust and turbulent wind (dynamics.md).
+"""3-DOF dynamics of a tethered aerostat in varying, gust and turbulent wind (docs/dynamics.md).
 
 Typical use::
 

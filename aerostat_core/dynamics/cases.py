@@ -1,7 +1,7 @@
-"""Reference cases of dynamics.md §3.1 (point aerostat "case P", R1-R4) and the thesis design.
+"""Reference cases of docs/dynamics.md §3.1 (point aerostat "case P", R1-R4) and the thesis design.
 
 The R numbers were computed twice, independently, with MoorDyn 2.7.2 and with a quasi-static
-shooting solver / own lumped-mass code (dynamics.md §3.1); they agree to millimetres. Tests,
+shooting solver / own lumped-mass code (docs/dynamics.md §3.1); they agree to millimetres. Tests,
 the benchmark and the app use these definitions so that all of them run the same cases.
 """
 
@@ -15,14 +15,14 @@ from .wind import MeanProfile, SpeedSchedule, WindScenario
 CASE_P_RHO = 1.225
 CASE_P_G = 9.81
 
-#: Reference values (dynamics.md §3.1) [m, N, s, m/s].
+#: Reference values (docs/dynamics.md §3.1) [m, N, s, m/s].
 R1 = {"x": 48.539, "z": 316.253, "tension_top": (61.25, 739.67), "tension_winch": (151.89, 663.14)}
 R2 = {"x": 44.443, "z": 316.958, "tension_winch": (127.91, 667.84)}
 R3 = {"x_before": 12.28, "z_before": 319.97, "x_peak": 55.38, "t_peak": 29.1, "z_min": 315.12,
       "x_final": 48.54, "crossings": (19.4, 48.9, 78.2, 106.7), "settle_5pct": 43.0,
       "settle_2pct": 66.0, "vx_max": 2.56, "vz_absmax": 0.29}
 R4 = {8: (48.535, 316.258), 16: (48.538, 316.254), 32: (48.539, 316.253), 64: (48.539, 316.253)}
-#: MoorDyn's wall time quoted in dynamics.md §4.1 [s] for 400 s simulated, N = 32, dtM = 2e-4 s,
+#: MoorDyn's wall time quoted in docs/dynamics.md §4.1 [s] for 400 s simulated, N = 32, dtM = 2e-4 s,
 #: on a shared 2-core machine (so about 32 s for the 300 s R3 case).
 MOORDYN_QUOTED_WALL_400S = 43.0
 

@@ -1,4 +1,4 @@
-"""Linearised dynamics about an equilibrium: eigenvalues, mode periods, damping (dynamics.md V7).
+"""Linearised dynamics about an equilibrium: eigenvalues, mode periods, damping (docs/dynamics.md V7).
 
 As Lambert & Nahon (2003) did: the full nonlinear right-hand side is differentiated by central
 finite differences at the static equilibrium, A = df/dy, and the eigenvalues lambda of A give the

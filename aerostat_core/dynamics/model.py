@@ -1,6 +1,6 @@
 """Equations of motion: point aerostat or 3-DOF rigid hull on the lumped-mass tether.
 
-Frames (dynamics.md §1.1). Earth E: x downwind, z up, origin at the winch. Body B (aircraft axes
+Frames (docs/dynamics.md §1.1). Earth E: x downwind, z up, origin at the winch. Body B (aircraft axes
 turned 180 deg): origin at the centre of volume O, x_B towards the nose, z_B towards the belly; pitch
 theta nose-up; x_B = (-cos th, sin th), z_B = (-sin th, -cos th) in E, so body components map to
 E with R_EB = [[-cos th, -sin th], [sin th, -cos th]]. A static-engine station xi (from the nose,
@@ -11,7 +11,7 @@ aerostat (x, z, v_x, v_z) or the hull (x_O, z_O, theta, u, w, q) with (u, w) the
 O and q = d theta/dt.
 
 Hull equations (Newton-Euler about O with a CG offset plus Kirchhoff added mass with a current;
-Fossen's relative-velocity form, dynamics.md §1.2):
+Fossen's relative-velocity form, docs/dynamics.md §1.2):
 
     (M_RB + M_A) nu_dot = f_RB + f_AM + f_wind + f_aero + f_gb + f_teth
 
@@ -25,7 +25,7 @@ Fossen's relative-velocity form, dynamics.md §1.2):
 with nu_w = R_EB^T U the wind in body axes at O, u_r = u - nu_w,x, w_r = w - nu_w,z, alpha =
 atan2(w_r, u_r), a_w = R_EB^T dU/dt and nu_w_dot = a_w - (q nu_w,z, -q nu_w,x).
 
-Aerodynamics (dynamics.md §1.3) uses the static engine's functions, tabulated once per design
+Aerodynamics (docs/dynamics.md §1.3) uses the static engine's functions, tabulated once per design
 against alpha (and airspeed for Hoerner's C_DV), fed with the instantaneous relative velocity:
 the J&D inviscid term and the axial drag at O; the viscous cross-flow term as strips with the local
 normal velocity w_r - q x(xi); the fins with the local velocity (u_r + q z_f, w_r - q x_f). The
@@ -33,7 +33,7 @@ pitch damping therefore follows from the geometry. The Munk moment is counted on
 inviscid term already contains it, so the Kirchhoff entry is only used with the aerodynamics off
 (energy check V4).
 
-Point aerostat (dynamics.md §3.1 "case P", MoorDyn point): mass M, buoyancy rho V g, drag
+Point aerostat (docs/dynamics.md §3.1 "case P", MoorDyn point): mass M, buoyancy rho V g, drag
 1/2 rho C_D A |v_r| v_r, isotropic added mass C_a rho V; optionally the Froude-Krylov and
 added-mass forces of an accelerating wind (1 + C_a) rho V dU/dt.
 """
@@ -217,7 +217,7 @@ class HullModel:
     fin_outline : ndarray (2, Q)
         Horizontal-fin planform (body x, z offsets) for drawing [m].
     unsteady_wind_inertia : bool
-        Switch of f_wind (default True, dynamics.md §5 decision 3).
+        Switch of f_wind (default True, docs/dynamics.md §5 decision 3).
     munk : {"jones-delaurier", "kirchhoff"}
         Where the Munk moment comes from. "kirchhoff" adds (m_z - m_x) u_r w_r and must only be
         used with ``aero_inviscid`` off (V4); the two together would count it twice.
@@ -327,7 +327,7 @@ def ellipsoid_hull(
     aero=None,
     **options,
 ) -> HullModel:
-    """A prolate-spheroid hull from a few numbers (dynamics.md §3.3 prototype values by default).
+    """A prolate-spheroid hull from a few numbers (docs/dynamics.md §3.3 prototype values by default).
 
     Parameters
     ----------
@@ -429,7 +429,7 @@ def hull_from_airframe(af, aero, *, unsteady_wind_inertia: bool = True, strips_p
 
     Notes
     -----
-    Mapping (methods.md -> body axes): x = xi_CV - xi, z_B = -z; N (up) -> Z = -N; A (aft) ->
+    Mapping (docs/methods.md -> body axes): x = xi_CV - xi, z_B = -z; N (up) -> Z = -N; A (aft) ->
     X = -A; moments nose-up in both. The CG and pitch inertia come from the engine's mass
     breakdown (lifting gas included, it moves with the hull); the added masses from Lamb's factors
     at the operating air density, with I_air = rho int ((xi - xi_CV)^2 + r^2/4) dV.

@@ -1,10 +1,10 @@
 """Optional live cross-check against MoorDyn (PyPI ``moordyn``, BSD-3) for point-aerostat cases.
 
 MoorDyn has no aerostat aerodynamics, so only the point-aerostat mode (the R cases of
-dynamics.md §3.1) can be compared. The air is MoorDyn's "water" (``rho 1.225``), the wind its
+docs/dynamics.md §3.1) can be compared. The air is MoorDyn's "water" (``rho 1.225``), the wind its
 current (``Currents 2``: a time table on a height grid), and the whole system sits below its free
 surface (winch at z = -1000 m, ``WtrDpth 1001``, no seabed stiffness) because MoorDyn switches off
-buoyancy and drag above z = 0 (dynamics.md §4.3). ``moordyn`` is not a dependency: call
+buoyancy and drag above z = 0 (docs/dynamics.md §4.3). ``moordyn`` is not a dependency: call
 :func:`moordyn_available` first (tests skip without it).
 """
 

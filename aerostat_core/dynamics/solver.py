@@ -1,6 +1,6 @@
 """Adaptive TR-BDF2 integrator for the stiff tethered-aerostat equations, compiled with numba.
 
-Why this formulation (dynamics.md §1.8). The tether's axial mode is 10^3-10^4 times faster than the
+Why this formulation (docs/dynamics.md §1.8). The tether's axial mode is 10^3-10^4 times faster than the
 motions of interest (omega_ax = (2N/L) sqrt(EA/w) ~ 1400 rad/s for N = 32, EA = 1 MN, w = 20 g/m;
 the surge mode has a period of ~60 s). Explicit schemes (MoorDyn's RK2 at dt = 2e-4 s) pay for
 that stiffness with millions of steps; scipy's Radau/BDF with a finite-difference Jacobian pay

@@ -1,6 +1,6 @@
 """Lumped-mass tether: elastic, damped segments with weight, air buoyancy and drag (2-D).
 
-Option A of dynamics.md §1.6 (Lambert & Nahon 2003, MoorDyn-C v2 conventions): N segments of
+Option A of docs/dynamics.md §1.6 (Lambert & Nahon 2003, MoorDyn-C v2 conventions): N segments of
 unstretched length l0 = L/N; node 0 is the winch (fixed), nodes 1..N-1 are free point masses
 w l0, node N is the top (the confluence point of the hull, or the point aerostat).
 
@@ -19,7 +19,7 @@ with l0_i the unstretched length belonging to the node (half of each adjacent se
 MoorDyn (``Line.cpp``: drag and weight on unstretched lengths) and the static engine's march.
 The line's transverse added mass (rho pi d^2/4 per metre, ~0.1 % of w) is neglected.
 
-Sources: dynamics.md §1.6 (D1, D7); MoorDyn-C ``Line.cpp`` v2.7.1.
+Sources: docs/dynamics.md §1.6 (D1, D7); MoorDyn-C ``Line.cpp`` v2.7.1.
 """
 
 from __future__ import annotations
@@ -74,7 +74,7 @@ class TetherModel:
         Unstretched length L [m], valid (1, 20000].
     segments : int
         Number of segments N, valid [2, 400] (10-20 is enough for the hull response and the
-        static shape; dynamics.md §3.1 R4).
+        static shape; docs/dynamics.md §3.1 R4).
     linear_density : float
         Mass per unstretched length w [kg/m], valid (0, 10].
     diameter : float

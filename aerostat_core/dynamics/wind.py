@@ -1,6 +1,6 @@
 """Wind inputs of the dynamic model: mean profile, speed schedules, 1-cosine gusts, Dryden turbulence.
 
-The wind seen by a point at height z at time t is (dynamics.md §2)
+The wind seen by a point at height z at time t is (docs/dynamics.md §2)
 
     U_x(z, t) = U_ref(t) P(z) + g_u(t) + u'(t),        U_z(t) = g_w(t) + w'(t)
 
@@ -10,11 +10,11 @@ The wind seen by a point at height z at time t is (dynamics.md §2)
   vertical, applied uniformly in space (the usual choice).
 * ``u', w'``: Dryden turbulence (MIL-F-8785C low-altitude model in the 8785C length convention,
   thesis Fig. 3.26), convected by the mean wind at the hull (Taylor's frozen turbulence) and fully
-  correlated along the tether (dynamics.md §2.4: the simple default).
+  correlated along the tether (docs/dynamics.md §2.4: the simple default).
 
 Every input is a smooth function of time with a consistent time derivative (the derivative feeds
 the unsteady-wind inertia terms), so implicit integrators meet no piecewise-constant data
-(dynamics.md §1.8). Turbulence is a sum of cosines (spectral synthesis) whose amplitudes are the
+(docs/dynamics.md §1.8). Turbulence is a sum of cosines (spectral synthesis) whose amplitudes are the
 integrals of the Dryden spectra over each frequency bin, with seeded random phases; the kernel
 reads it from an exact periodic table by C1 cubic-Hermite interpolation (:meth:`TurbulenceRecord.table`).
 
@@ -41,7 +41,7 @@ GUST_SHAPES = ("full", "ramp-hold")
 #: MIL-F-8785C low-altitude wind speed at 20 ft, W20, per intensity [m/s] (15, 30, 45 kt).
 DRYDEN_W20 = {"light": 15.0 * KNOT, "moderate": 30.0 * KNOT, "severe": 45.0 * KNOT}
 #: Height band of the low-altitude Dryden formulas [m] (10 ft to 1000 ft); heights outside are
-#: clamped to it (dynamics.md §2.4: "or clamp at 1000 ft and say so").
+#: clamped to it (docs/dynamics.md §2.4: "or clamp at 1000 ft and say so").
 DRYDEN_HEIGHT_RANGE = (10.0 * FOOT, 1000.0 * FOOT)
 #: Smallest mean wind at the hull that can convect gusts and turbulence [m/s].
 MIN_CONVECTION_SPEED = 0.5
@@ -95,7 +95,7 @@ class MeanProfile:
 
     Notes
     -----
-    Sources: Hellmann power law; neutral surface-layer log law (dynamics.md §2.1).
+    Sources: Hellmann power law; neutral surface-layer log law (docs/dynamics.md §2.1).
 
     Examples
     --------
@@ -300,7 +300,7 @@ class Gust:
 
     Notes
     -----
-    Source: MIL-F-8785C §3.7.4 (discrete gust); MathWorks "Discrete Wind Gust Model" (dynamics.md
+    Source: MIL-F-8785C §3.7.4 (discrete gust); MathWorks "Discrete Wind Gust Model" (docs/dynamics.md
     §2.3). The convection speed U_c is the mean wind at the hull at t = 0.
     """
 
@@ -380,7 +380,7 @@ def dryden_parameters(height: float, w20: float) -> DrydenParameters:
 
     Notes
     -----
-    Source: MIL-F-8785C §3.7.2 (low altitude), cross-checked in dynamics.md §2.4 (D9, D10). Do not
+    Source: MIL-F-8785C §3.7.2 (low altitude), cross-checked in docs/dynamics.md §2.4 (D9, D10). Do not
     mix with MIL-HDBK-1797's halved v/w lengths (2 L_w = h).
 
     Examples

@@ -37,7 +37,7 @@ def test_isa_rejects_altitudes_outside_the_model():
 
 
 def test_pure_helium_density_matches_methods_check_values():
-    # methods.md §1.2: pure He at ambient P, T = 0.1693 / 0.1645 kg/m3 at 0 / 300 m
+    # docs/methods.md §1.2: pure He at ambient P, T = 0.1693 / 0.1645 kg/m3 at 0 / 300 m
     for h, ref in ((0.0, 0.1693), (300.0, 0.1645)):
         a = isa(h)
         assert gas_density(LiftingGas(purity=1.0), a.pressure, a.temperature) == pytest.approx(

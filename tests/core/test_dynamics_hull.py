@@ -1,5 +1,5 @@
 """The 3-DOF hull model: consistency with the static engine (V1-V3), energy (V4), added mass
-(V8), linearisation (V7), frames and pitch damping (dynamics.md §3.1)."""
+(V8), linearisation (V7), frames and pitch damping (docs/dynamics.md §3.1)."""
 
 import math
 
@@ -199,7 +199,7 @@ def test_v4_energy_never_increases_with_damping_and_aero(design):
 
 def test_v4_jones_delaurier_mode_nearly_dissipative(design):
     """With the J&D inviscid term (a reduced, forebody-only Munk moment, not the exact potential
-    flow) in place of the Kirchhoff moment, E is not exactly monotone (dynamics.md V4: dropping a
+    flow) in place of the Kirchhoff moment, E is not exactly monotone (docs/dynamics.md V4: dropping a
     Kirchhoff entry leaks energy); the leak stays below 1 % of the perturbation energy."""
     e, e_pert = _zero_wind_decay(design)
     assert np.max(np.diff(e)) < 0.01 * e_pert
@@ -272,7 +272,7 @@ def test_pitch_rate_is_damped_by_fins_and_crossflow(design, system):
     y2[system.hull_index + 5] = 0.05
     m1 = system.rhs(0.0, y2, field)[1]["aero_moment"]
     assert m1 < m0
-    # small-q fin estimate: M_q,fin ~ -1/2 rho V S eta C_La x_f^2 (dynamics.md §1.3)
+    # small-q fin estimate: M_q,fin ~ -1/2 rho V S eta C_La x_f^2 (docs/dynamics.md §1.3)
     af = design.airframe
     xf = system.body.fin_ac[0]
     mq_fin = -0.5 * float(af.air_density) * 10.0 * float(af.fins.lifting_area) * float(
@@ -337,7 +337,7 @@ def test_diverging_run_stops_with_a_message():
 
 
 def _prototype_hull(unsteady: bool):
-    """dynamics.md §3.3 prototype: 120 m3 f = 3.5 ellipsoid, 90 kg, CG 0.3 m aft / 0.6 m below,
+    """docs/dynamics.md §3.3 prototype: 120 m3 f = 3.5 ellipsoid, 90 kg, CG 0.3 m aft / 0.6 m below,
     I = 1400 kg m2, C 0.3 m forward / 3.5 m below, J&D eta_k = 0.9 cut at 0.6 l (I1 = 12.2 m2,
     I3 = 60.5 m3), C_DV = 0.03, cross-flow 0.5 from 0.6 l to the tail, fins 10 m2, C_La = 2.1,
     eta_f = 0.9, AC 0.38 l aft, stall 20 deg."""
@@ -365,7 +365,7 @@ def _prototype_hull(unsteady: bool):
 
 @pytest.mark.parametrize("unsteady", [False, True])
 def test_independent_prototype_step_response(unsteady):
-    """Cross-check against the independent prototype of dynamics.md §3.3 (its own code, same
+    """Cross-check against the independent prototype of docs/dynamics.md §3.3 (its own code, same
     equations): trim 3.43 deg at 10 m/s; 5 -> 10 m/s over 1 s: without unsteady-wind inertia peak
     blow-by 55.8 m at +25 s, pitch 1.0-3.9 deg, peak speeds 2.7 and 0.35 m/s; with it, hull speed
     7.5 m/s and pitch 1.1-9.1 deg. Tolerances cover the details the prototype's summary omits."""

@@ -1,5 +1,5 @@
 """The integrator: Jacobian band structure, banded LU, grid and tolerance convergence (V5, V6),
-scipy cross-check, budgets (dynamics.md §1.8, §3.1)."""
+scipy cross-check, budgets (docs/dynamics.md §1.8, §3.1)."""
 
 import math
 

@@ -1,5 +1,5 @@
 """Point-aerostat mode and the lumped-mass tether against the reference cases R1-R4
-(dynamics.md §3.1; MoorDyn 2.7.2 and an independent shooting solver agree to millimetres).
+(docs/dynamics.md §3.1; MoorDyn 2.7.2 and an independent shooting solver agree to millimetres).
 Tolerance: 1 cm on positions (the issue's acceptance), 0.05 N on static tensions."""
 
 import math
@@ -100,7 +100,7 @@ def test_r3_settling_and_period(r3_run):
 
 
 def test_surge_period_formula_within_25pct():
-    """Small-oscillation surge period ~ 2 pi sqrt(m_eff L / L_net) (dynamics.md §3.1): 50 s vs the
+    """Small-oscillation surge period ~ 2 pi sqrt(m_eff L / L_net) (docs/dynamics.md §3.1): 50 s vs the
     simulated 59 s; the tether mass and drag add inertia (tolerance +-25 % for the formula)."""
     m_eff = 71.6 + 0.5 * cases.CASE_P_RHO * 120.0
     lift = (cases.CASE_P_RHO * 120.0 - 71.6) * cases.CASE_P_G
@@ -110,7 +110,7 @@ def test_surge_period_formula_within_25pct():
 
 def test_anchor_force_balance_r1():
     """Winch force = aerostat drag + total tether drag (x); net lift - tether weight - downward
-    normal drag (z) (dynamics.md §3.1 analytic cross-check)."""
+    normal drag (z) (docs/dynamics.md §3.1 analytic cross-check)."""
     system = cases.case_p_system(32)
     field = cases.r1_wind().realise(320.0, 10.0)
     y, _ = equilibrium(system, field, straight_guess(system, field))

@@ -1,4 +1,4 @@
-"""Wind inputs: profiles, schedules, gusts, and the Dryden generator (dynamics.md §2, check V9)."""
+"""Wind inputs: profiles, schedules, gusts, and the Dryden generator (docs/dynamics.md §2, check V9)."""
 
 import math
 
@@ -75,7 +75,7 @@ def test_gust_needs_mean_wind():
 
 
 def test_dryden_parameters_8785c_convention():
-    """dynamics.md §2.4 values: h = 100, 200, 300 m -> L_u 263/298/305 m, L_w = h, sigma ratios."""
+    """docs/dynamics.md §2.4 values: h = 100, 200, 300 m -> L_u 263/298/305 m, L_w = h, sigma ratios."""
     for h, lu, ratio in ((100.0, 263.0, 1.380), (200.0, 298.0, 1.142), (300.0, 305.0, 1.005)):
         p = dryden_parameters(h, DRYDEN_W20["moderate"])
         assert p.length_u == pytest.approx(lu, abs=1.0)

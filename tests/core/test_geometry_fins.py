@@ -48,7 +48,7 @@ def test_npl_closed_forms_match_numerical_integration(v, f, split):
 
 
 def test_table_2_2_hull_geometry():
-    # methods.md §1.4: l = 11.2 m, d = 4.1 m for 100 m3 at f ~ 2.7 (thesis Table 2.2)
+    # docs/methods.md §1.4: l = 11.2 m, d = 4.1 m for 100 m3 at f ~ 2.7 (thesis Table 2.2)
     g = hull_geometry(100.0, 2.7)
     assert float(g.length) == pytest.approx(11.2, abs=0.1)
     assert float(g.diameter) == pytest.approx(4.1, abs=0.05)

@@ -151,7 +151,20 @@ def test_three_solvers_agree_on_the_thesis_optimum_within_one_percent(thesis_res
     masses = [r.objective for r in thesis_results]
     rows = comparison_rows(thesis_results)
     assert [row["total_mass_kg"] for row in rows] == pytest.approx(masses)
-    assert all(row["evaluations"] > 0 and row["time_s"] > 0 for row in rows)
+    # The counts are the designs actually evaluated: the history's last cumulative count, one
+    # history entry per batch, and each run level's budget (SETTINGS["normal"]) respected.
+    for r, row in zip(thesis_results, rows):
+        assert row["evaluations"] == r.n_evaluations == r.history.evaluations[-1]
+        assert row["batches"] == r.n_batches == len(r.history.evaluations)
+        assert np.all(np.diff(r.history.evaluations) > 0) and r.history.evaluations[0] > 0
+        assert np.isfinite(row["time_s"]) and row["time_s"] > 0
+    slsqp, surrogate, pso = thesis_results
+    # SLSQP: a batch holds each live start's point and its 2 d finite-difference points
+    per_point = 1 + 2 * len(slsqp.x)
+    assert np.all(np.diff(slsqp.history.evaluations, prepend=0) % per_point == 0)
+    assert slsqp.n_batches <= slsqp.settings["max_rounds"]
+    assert surrogate.n_evaluations == surrogate.settings["max_evaluations"]
+    assert pso.n_evaluations == pso.settings["pop_size"] * pso.settings["max_generations"]
     assert len(history_rows(thesis_results)) == sum(r.n_batches for r in thesis_results)
 
 

@@ -87,7 +87,7 @@ def test_tension_at_confluence_point_equals_drag_and_net_lift():
 
 
 def test_reference_case_r1_point_aerostat_uniform_wind():
-    # predicted, dynamics.md §3.1 R1: MoorDyn and a shooting solver give (48.539, 316.253) m
+    # predicted, docs/dynamics.md §3.1 R1: MoorDyn and a shooting solver give (48.539, 316.253) m
     x, z = case_p_static(lambda z: 10.0 * np.ones_like(np.asarray(z, float)))
     assert x == pytest.approx(48.539, abs=0.05)
     assert z == pytest.approx(316.253, abs=0.05)
@@ -95,7 +95,7 @@ def test_reference_case_r1_point_aerostat_uniform_wind():
 
 
 def test_reference_case_r2_point_aerostat_power_law():
-    # predicted, dynamics.md §3.1 R2: U = 6 (z/10)^(1/7) -> (44.443, 316.958) m
+    # predicted, docs/dynamics.md §3.1 R2: U = 6 (z/10)^(1/7) -> (44.443, 316.958) m
     x, z = case_p_static(lambda z: 6.0 * (np.maximum(np.asarray(z, float), 1e-9) / 10) ** (1 / 7))
     assert x == pytest.approx(44.443, abs=0.05)
     assert z == pytest.approx(316.958, abs=0.05)
