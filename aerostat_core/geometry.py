@@ -273,6 +273,11 @@ def hull_geometry(volume, fineness_ratio, nose_fraction=0.432, shape: str = "npl
     >>> round(float(g.surface_area), 2)
     119.97
     """
+    if shape != "npl":
+        _shapes.shape_info(shape)
+        if shape == "sphere":
+            fineness_ratio = np.ones_like(np.asarray(fineness_ratio, dtype=float))
+        return _profile_geometry(volume, fineness_ratio, shape)
     length, d, a1, a2, b = hull_dimensions(volume, fineness_ratio, nose_fraction)
     v = np.asarray(volume, dtype=float) * np.ones_like(length)
     s = half_spheroid_area(a1, b) + half_spheroid_area(a2, b)
