@@ -28,8 +28,10 @@ from .atmosphere import isa
 from .fins import helmbold_lift_slope, oswald_efficiency
 
 
-def kite_coefficients(aspect_ratio: float = c.HELIKITE_KITE_ASPECT_RATIO,
-                      incidence_deg: float = c.HELIKITE_KITE_INCIDENCE_DEG):
+def kite_coefficients(
+    aspect_ratio: float = c.HELIKITE_KITE_ASPECT_RATIO,
+    incidence_deg: float = c.HELIKITE_KITE_INCIDENCE_DEG,
+):
     """Kite lift and induced-drag coefficients (C_L, C_D) on sail area [-].
 
     C_L = C_L_alpha alpha_k with Helmbold's slope for an unswept sail of aspect ratio AR and
@@ -76,8 +78,12 @@ def kite_geometry(volume) -> KiteGeometry:
     area = ratio * np.asarray(volume, dtype=float) ** (2.0 / 3.0)
     ref_area = ratio * c.HELIKITE_REF_VOLUME ** (2.0 / 3.0)
     cl, cd = kite_coefficients()
-    return KiteGeometry(area=area, lift_coefficient=cl, drag_coefficient=cd,
-                        mass=c.HELIKITE_REF_KITE_MASS * area / ref_area)
+    return KiteGeometry(
+        area=area,
+        lift_coefficient=cl,
+        drag_coefficient=cd,
+        mass=c.HELIKITE_REF_KITE_MASS * area / ref_area,
+    )
 
 
 def kite_lift_drag(q, kite: KiteGeometry):
@@ -92,12 +98,18 @@ def helikite_limits(payload_mass: float, altitude: float, wind: float) -> list[s
     (payload [kg], altitude [m], wind [m/s]); empty when within them."""
     out = []
     if payload_mass >= c.HELIKITE_MAX_PAYLOAD:
-        out.append(f"payload {payload_mass:g} kg is not below the Helikite limit "
-                   f"{c.HELIKITE_MAX_PAYLOAD:g} kg (thesis Table 2.1)")
+        out.append(
+            f"payload {payload_mass:g} kg is not below the Helikite limit "
+            f"{c.HELIKITE_MAX_PAYLOAD:g} kg (thesis Table 2.1)"
+        )
     if altitude > c.HELIKITE_MAX_ALTITUDE:
-        out.append(f"altitude {altitude:g} m is above the Helikite's ~"
-                   f"{c.HELIKITE_MAX_ALTITUDE:g} m (thesis Table 2.1)")
+        out.append(
+            f"altitude {altitude:g} m is above the Helikite's ~"
+            f"{c.HELIKITE_MAX_ALTITUDE:g} m (thesis Table 2.1)"
+        )
     if wind > c.HELIKITE_MAX_WIND:
-        out.append(f"wind {wind:g} m/s is above the Helikite limit {c.HELIKITE_MAX_WIND:g} m/s "
-                   "(thesis Table 2.1)")
+        out.append(
+            f"wind {wind:g} m/s is above the Helikite limit {c.HELIKITE_MAX_WIND:g} m/s "
+            "(thesis Table 2.1)"
+        )
     return out

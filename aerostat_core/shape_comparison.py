@@ -38,15 +38,48 @@ TABLE_SHAPES = {
 
 #: Thesis Table 2.2 as printed (kg unless stated; lengths m): the reference for the test and view.
 THESIS_TABLE_2_2 = {
-    "helikite": {"length": 6.2, "width": 5.0, "helium": 16.9, "hull": 13.72, "kite": 11.38,
-                 "fins": 0.0, "misc": 0.0, "tether": 6.0, "total": 48.0, "free_lift": 52.0,
-                 "dynamic_lift": 48.0, "cd": 0.2},
-    "sphere": {"length": 5.76, "width": 5.76, "helium": 16.9, "hull": 13.54, "kite": 0.0,
-               "fins": 0.0, "misc": 0.0, "tether": 6.0, "total": 36.45, "free_lift": 63.55,
-               "dynamic_lift": 0.0, "cd": 0.2},
-    "streamlined": {"length": 11.2, "width": 4.1, "helium": 16.9, "hull": 15.57, "kite": 0.0,
-                    "fins": 7.8, "misc": 4.7, "tether": 6.0, "total": 50.92, "free_lift": 47.0,
-                    "dynamic_lift": 0.0, "cd": 0.03},
+    "helikite": {
+        "length": 6.2,
+        "width": 5.0,
+        "helium": 16.9,
+        "hull": 13.72,
+        "kite": 11.38,
+        "fins": 0.0,
+        "misc": 0.0,
+        "tether": 6.0,
+        "total": 48.0,
+        "free_lift": 52.0,
+        "dynamic_lift": 48.0,
+        "cd": 0.2,
+    },
+    "sphere": {
+        "length": 5.76,
+        "width": 5.76,
+        "helium": 16.9,
+        "hull": 13.54,
+        "kite": 0.0,
+        "fins": 0.0,
+        "misc": 0.0,
+        "tether": 6.0,
+        "total": 36.45,
+        "free_lift": 63.55,
+        "dynamic_lift": 0.0,
+        "cd": 0.2,
+    },
+    "streamlined": {
+        "length": 11.2,
+        "width": 4.1,
+        "helium": 16.9,
+        "hull": 15.57,
+        "kite": 0.0,
+        "fins": 7.8,
+        "misc": 4.7,
+        "tether": 6.0,
+        "total": 50.92,
+        "free_lift": 47.0,
+        "dynamic_lift": 0.0,
+        "cd": 0.03,
+    },
 }
 
 
@@ -140,16 +173,35 @@ def thesis_shape_comparison(preset: ShapePreset = THESIS_SHAPE_PRESET) -> ShapeC
         dyn = p.kite_lift_kg * (wind / p.kite_lift_wind) ** 2 if shape == "helikite" else 0 * q
         bb = _straight_tether_blow_by(p.altitude, drag, (free + dyn) * c.G0)
         curves[key] = bb
-        dyn_d = p.kite_lift_kg * (p.max_wind / p.kite_lift_wind) ** 2 if shape == "helikite" else 0.0
-        rows.append({
-            "key": key, "label": label, "shape": shape, "length_m": length, "width_m": d,
-            "buoyancy_kg": buoy, "helium_kg": helium, "hull_kg": hull, "kite_kg": kite,
-            "fins_kg": fins, "misc_kg": misc, "tether_kg": tether, "total_kg": total,
-            "free_lift_kg": free, "dynamic_lift_kg": dyn_d, "drag_coefficient": cds[key],
-            "reference_area_m2": area,
-            "blow_by_at_design_wind_m": float(_straight_tether_blow_by(
-                p.altitude, q_design * cds[key] * area, (free + dyn_d) * c.G0)),
-        })
+        dyn_d = (
+            p.kite_lift_kg * (p.max_wind / p.kite_lift_wind) ** 2 if shape == "helikite" else 0.0
+        )
+        rows.append(
+            {
+                "key": key,
+                "label": label,
+                "shape": shape,
+                "length_m": length,
+                "width_m": d,
+                "buoyancy_kg": buoy,
+                "helium_kg": helium,
+                "hull_kg": hull,
+                "kite_kg": kite,
+                "fins_kg": fins,
+                "misc_kg": misc,
+                "tether_kg": tether,
+                "total_kg": total,
+                "free_lift_kg": free,
+                "dynamic_lift_kg": dyn_d,
+                "drag_coefficient": cds[key],
+                "reference_area_m2": area,
+                "blow_by_at_design_wind_m": float(
+                    _straight_tether_blow_by(
+                        p.altitude, q_design * cds[key] * area, (free + dyn_d) * c.G0
+                    )
+                ),
+            }
+        )
     return ShapeComparison(rows=rows, wind=wind, blow_by=curves)
 
 
@@ -157,9 +209,14 @@ def full_model_designs(preset: ShapePreset = THESIS_SHAPE_PRESET) -> dict[str, D
     """The three Table 2.2 hulls designed with the whole engine at the preset's volume and
     altitude: thesis constants (fixed helium 0.169, 130 g/m2, 20 g/m tether, misc 0.30 x hull,
     fin area ratio 0.227), ISA buoyancy, shape drag, trim with hull and fin lift, tether sag."""
-    req = replace(thesis_requirement(), altitude=preset.altitude, wind_max=preset.max_wind,
-                  wind_step=preset.wind_step, design_wind=preset.max_wind,
-                  blow_by_limit=preset.altitude)
+    req = replace(
+        thesis_requirement(),
+        altitude=preset.altitude,
+        wind_max=preset.max_wind,
+        wind_step=preset.wind_step,
+        design_wind=preset.max_wind,
+        blow_by_limit=preset.altitude,
+    )
     base = thesis_configuration(preset.volume)
     out = {}
     for key, (_, shape, f) in TABLE_SHAPES.items():
@@ -185,21 +242,34 @@ def full_model_shape_comparison(preset: ShapePreset = THESIS_SHAPE_PRESET) -> Sh
         curves[key] = np.asarray(perf.blow_by, float)
         dp = d.design_point
         q = 0.5 * float(af.air_density) * d.requirement.design_wind**2
-        area = (float(h.reference_area) if SHAPE_INFO[shape].streamlined
-                else np.pi * float(h.diameter) ** 2 / 4)
+        area = (
+            float(h.reference_area)
+            if SHAPE_INFO[shape].streamlined
+            else np.pi * float(h.diameter) ** 2 / 4
+        )
         kite = float(m["fins"]) if shape == "helikite" else 0.0
-        rows.append({
-            "key": key, "label": label, "shape": shape, "length_m": float(h.length),
-            "width_m": float(h.diameter), "buoyancy_kg": d.buoyancy / g0,
-            "helium_kg": float(m["lifting gas"]), "hull_kg": float(m["hull"]), "kite_kg": kite,
-            "fins_kg": float(m["fins"]) - kite, "misc_kg": float(m["miscellaneous"]),
-            "tether_kg": float(m["tether"]),
-            "total_kg": d.total_mass - float(m["payload"]),
-            "free_lift_kg": d.free_lift_kg + float(m["payload"]),
-            "dynamic_lift_kg": dp["dynamic_lift_N"] / g0,
-            "drag_coefficient": dp["drag_N"] / (q * area), "reference_area_m2": area,
-            "blow_by_at_design_wind_m": dp["blow_by_m"],
-        })
+        rows.append(
+            {
+                "key": key,
+                "label": label,
+                "shape": shape,
+                "length_m": float(h.length),
+                "width_m": float(h.diameter),
+                "buoyancy_kg": d.buoyancy / g0,
+                "helium_kg": float(m["lifting gas"]),
+                "hull_kg": float(m["hull"]),
+                "kite_kg": kite,
+                "fins_kg": float(m["fins"]) - kite,
+                "misc_kg": float(m["miscellaneous"]),
+                "tether_kg": float(m["tether"]),
+                "total_kg": d.total_mass - float(m["payload"]),
+                "free_lift_kg": d.free_lift_kg + float(m["payload"]),
+                "dynamic_lift_kg": dp["dynamic_lift_N"] / g0,
+                "drag_coefficient": dp["drag_N"] / (q * area),
+                "reference_area_m2": area,
+                "blow_by_at_design_wind_m": dp["blow_by_m"],
+            }
+        )
     return ShapeComparison(rows=rows, wind=np.asarray(wind, float), blow_by=curves)
 
 
@@ -240,10 +310,16 @@ def table_2_2_rows(cmp: ShapeComparison) -> list[dict]:
     """Table 2.2 layout: one row per parameter, one column per shape (display values)."""
     r = {x["key"]: x for x in cmp.rows}
     items = [
-        ("Hull length [m]", "length_m"), ("Hull width [m]", "width_m"),
-        ("Buoyancy [kg]", "buoyancy_kg"), ("Helium [kg]", "helium_kg"), ("Hull [kg]", "hull_kg"),
-        ("Kite [kg]", "kite_kg"), ("Fins [kg]", "fins_kg"), ("Miscellaneous [kg]", "misc_kg"),
-        ("Tether [kg]", "tether_kg"), ("Total (no payload) [kg]", "total_kg"),
+        ("Hull length [m]", "length_m"),
+        ("Hull width [m]", "width_m"),
+        ("Buoyancy [kg]", "buoyancy_kg"),
+        ("Helium [kg]", "helium_kg"),
+        ("Hull [kg]", "hull_kg"),
+        ("Kite [kg]", "kite_kg"),
+        ("Fins [kg]", "fins_kg"),
+        ("Miscellaneous [kg]", "misc_kg"),
+        ("Tether [kg]", "tether_kg"),
+        ("Total (no payload) [kg]", "total_kg"),
         ("Free lift (no payload) [kg]", "free_lift_kg"),
         ("Dynamic lift at 15 m/s [kg]", "dynamic_lift_kg"),
         ("Drag coefficient [-]", "drag_coefficient"),
@@ -259,11 +335,20 @@ def table_2_2_rows(cmp: ShapeComparison) -> list[dict]:
 
 def thesis_reference_rows() -> list[dict]:
     """Thesis Table 2.2 as printed, in the :func:`table_2_2_rows` layout (no blow-by row)."""
-    keys = [("Hull length [m]", "length"), ("Hull width [m]", "width"), ("Helium [kg]", "helium"),
-            ("Hull [kg]", "hull"), ("Kite [kg]", "kite"), ("Fins [kg]", "fins"),
-            ("Miscellaneous [kg]", "misc"), ("Tether [kg]", "tether"),
-            ("Total (no payload) [kg]", "total"), ("Free lift (no payload) [kg]", "free_lift"),
-            ("Dynamic lift at 15 m/s [kg]", "dynamic_lift"), ("Drag coefficient [-]", "cd")]
+    keys = [
+        ("Hull length [m]", "length"),
+        ("Hull width [m]", "width"),
+        ("Helium [kg]", "helium"),
+        ("Hull [kg]", "hull"),
+        ("Kite [kg]", "kite"),
+        ("Fins [kg]", "fins"),
+        ("Miscellaneous [kg]", "misc"),
+        ("Tether [kg]", "tether"),
+        ("Total (no payload) [kg]", "total"),
+        ("Free lift (no payload) [kg]", "free_lift"),
+        ("Dynamic lift at 15 m/s [kg]", "dynamic_lift"),
+        ("Drag coefficient [-]", "cd"),
+    ]
     out = []
     for label, k in keys:
         row = {"parameter": label}
@@ -281,17 +366,24 @@ def shape_dimensions_rows(volume: float = 100.0) -> list[dict]:
     for name, info in SHAPE_INFO.items():
         g = hull_geometry(volume, info.default_fineness, 0.432, name)
         length, d = dimensions(name, volume, info.default_fineness)
-        out.append({
-            "shape": name, "label": info.label, "fineness_ratio": info.default_fineness,
-            "valid_fineness": f"{info.fineness_range[0]:g}-{info.fineness_range[1]:g}",
-            "length_m": float(length), "diameter_m": float(d),
-            "prismatic_coefficient": g.prismatic_coefficient,
-            "surface_area_m2": float(g.surface_area),
-            "area_coefficient": float(g.surface_area) / volume ** (2.0 / 3.0),
-            "centre_of_volume_over_l": float(g.xi_cb / g.length),
-            "k1": float(g.k1), "k2": float(g.k2), "k_rot": float(g.k_rot),
-            "source": info.source,
-        })
+        out.append(
+            {
+                "shape": name,
+                "label": info.label,
+                "fineness_ratio": info.default_fineness,
+                "valid_fineness": f"{info.fineness_range[0]:g}-{info.fineness_range[1]:g}",
+                "length_m": float(length),
+                "diameter_m": float(d),
+                "prismatic_coefficient": g.prismatic_coefficient,
+                "surface_area_m2": float(g.surface_area),
+                "area_coefficient": float(g.surface_area) / volume ** (2.0 / 3.0),
+                "centre_of_volume_over_l": float(g.xi_cb / g.length),
+                "k1": float(g.k1),
+                "k2": float(g.k2),
+                "k_rot": float(g.k_rot),
+                "source": info.source,
+            }
+        )
     return out
 
 

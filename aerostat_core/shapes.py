@@ -90,23 +90,86 @@ class ShapeInfo:
 SHAPE_INFO: dict[str, ShapeInfo] = {
     s.name: s
     for s in (
-        ShapeInfo("npl", "NPL double ellipsoid", "double-ellipsoid", (1.5, 8.0), 4.0, True, False,
-                  "Khoury & Gillett (1999); thesis §2.4.3(a), §3.1.3(a)"),
-        ShapeInfo("gnvr", "GNVR", "gertler", (2.0, 6.0), 3.044, True, False,
-                  "Ram & Pant (2010); Gertler parameters from Alam & Pant (2017)"),
-        ShapeInfo("wang", "Wang", "gertler", (2.0, 6.0), 3.859, True, False,
-                  "Wang et al. (2009); Gertler parameters from Alam & Pant (2017)"),
-        ShapeInfo("zhiyuan-1", "Zhiyuan-1", "gertler", (2.0, 6.0), 3.266, True, False,
-                  "Wang & Shan (2006), Wang et al. (2010); Gertler parameters from Alam & Pant "
-                  "(2017)"),
-        ShapeInfo("lotte", "Lotte", "gertler", (2.0, 6.0), 3.9019, True, False,
-                  "Lutz et al. (Univ. Stuttgart); Gertler parameters from Alam & Pant (2017)"),
-        ShapeInfo("sphere", "Sphere", "spheroid", (1.0, 1.0), 1.0, False, False,
-                  "thesis §2.2.1(a), Table 2.2"),
-        ShapeInfo("oblate", "Oblate spheroid", "spheroid", (0.5, 0.95), 0.75, False, False,
-                  "Lamb (1932) §373 (spheroid family below f = 1)"),
-        ShapeInfo("helikite", "Helikite (kite balloon)", "spheroid", (1.0, 1.6), 6.2 / 5.0, False,
-                  True, "Allsopp Helikites Ltd; thesis Table 2.2 (6.2 m x 5 m at 100 m3)"),
+        ShapeInfo(
+            "npl",
+            "NPL double ellipsoid",
+            "double-ellipsoid",
+            (1.5, 8.0),
+            4.0,
+            True,
+            False,
+            "Khoury & Gillett (1999); thesis §2.4.3(a), §3.1.3(a)",
+        ),
+        ShapeInfo(
+            "gnvr",
+            "GNVR",
+            "gertler",
+            (2.0, 6.0),
+            3.044,
+            True,
+            False,
+            "Ram & Pant (2010); Gertler parameters from Alam & Pant (2017)",
+        ),
+        ShapeInfo(
+            "wang",
+            "Wang",
+            "gertler",
+            (2.0, 6.0),
+            3.859,
+            True,
+            False,
+            "Wang et al. (2009); Gertler parameters from Alam & Pant (2017)",
+        ),
+        ShapeInfo(
+            "zhiyuan-1",
+            "Zhiyuan-1",
+            "gertler",
+            (2.0, 6.0),
+            3.266,
+            True,
+            False,
+            "Wang & Shan (2006), Wang et al. (2010); Gertler parameters from Alam & Pant (2017)",
+        ),
+        ShapeInfo(
+            "lotte",
+            "Lotte",
+            "gertler",
+            (2.0, 6.0),
+            3.9019,
+            True,
+            False,
+            "Lutz et al. (Univ. Stuttgart); Gertler parameters from Alam & Pant (2017)",
+        ),
+        ShapeInfo(
+            "sphere",
+            "Sphere",
+            "spheroid",
+            (1.0, 1.0),
+            1.0,
+            False,
+            False,
+            "thesis §2.2.1(a), Table 2.2",
+        ),
+        ShapeInfo(
+            "oblate",
+            "Oblate spheroid",
+            "spheroid",
+            (0.5, 0.95),
+            0.75,
+            False,
+            False,
+            "Lamb (1932) §373 (spheroid family below f = 1)",
+        ),
+        ShapeInfo(
+            "helikite",
+            "Helikite (kite balloon)",
+            "spheroid",
+            (1.0, 1.6),
+            6.2 / 5.0,
+            False,
+            True,
+            "Allsopp Helikites Ltd; thesis Table 2.2 (6.2 m x 5 m at 100 m3)",
+        ),
     )
 }
 #: Valid values of ``HullSpec.shape``.
@@ -169,14 +232,16 @@ def gertler_coefficients(m: float, r0: float, r1: float, cp: float) -> np.ndarra
     [0.0, 1.0, -1.0]
     """
     i = np.arange(1, 7, dtype=float)
-    a = np.array([
-        np.where(i == 1, 1.0, 0.0),  # P'(0) = a1
-        np.ones(6),  # P(1)
-        i,  # P'(1)
-        m**i,  # P(m)
-        i * m ** (i - 1),  # P'(m)
-        4.0 / (i + 1),  # C_p = 4 int P
-    ])
+    a = np.array(
+        [
+            np.where(i == 1, 1.0, 0.0),  # P'(0) = a1
+            np.ones(6),  # P(1)
+            i,  # P'(1)
+            m**i,  # P(m)
+            i * m ** (i - 1),  # P'(m)
+            4.0 / (i + 1),  # C_p = 4 int P
+        ]
+    )
     rhs = np.array([2.0 * r0, 0.0, -2.0 * r1, 0.25, 0.0, cp])
     coef = np.linalg.solve(a, rhs)
     return np.concatenate([[0.0], coef])
@@ -270,9 +335,16 @@ def profile_data(shape: str, order: int = QUAD_ORDER) -> ProfileData:
     x_pl = 2.0 * np.sum(wx * sq * x) / planform
     fine = np.linspace(0.0, 1.0, 20001)
     return ProfileData(
-        x=x, wx=wx, p=p, dp=dp, cp=4.0 * float(integ(1.0)),
-        x_cv=float(xinteg(1.0) / integ(1.0)), planform=float(planform), x_planform=float(x_pl),
-        coef=coef, x_max=float(fine[np.argmax(pp(fine))]),
+        x=x,
+        wx=wx,
+        p=p,
+        dp=dp,
+        cp=4.0 * float(integ(1.0)),
+        x_cv=float(xinteg(1.0) / integ(1.0)),
+        planform=float(planform),
+        x_planform=float(x_pl),
+        coef=coef,
+        x_max=float(fine[np.argmax(pp(fine))]),
     )
 
 
@@ -374,8 +446,9 @@ def _body_points(shape: str, f: float, n: int, nose_fraction: float = 0.432):
     return x, rho, nx, nr, norm * wt
 
 
-def added_mass_numerical(shape: str, fineness_ratio: float, segments: int = 48,
-                         nose_fraction: float = 0.432):
+def added_mass_numerical(
+    shape: str, fineness_ratio: float, segments: int = 48, nose_fraction: float = 0.432
+):
     """Inertia factors k1, k2, k' of a body of revolution by potential flow, numerically.
 
     Axial motion: a line of constant-strength source segments on the axis; transverse and
@@ -422,8 +495,9 @@ def added_mass_numerical(shape: str, fineness_ratio: float, segments: int = 48,
     a_ax = nx[:, None] * ux + nr[:, None] * ur
     scale = np.sqrt(ds)[:, None]
     closure = 10.0 * (edges[1:] - edges[:-1])[None, :] * np.sqrt(np.sum(a_ax**2) / n_col)
-    q = np.linalg.lstsq(np.vstack([a_ax * scale, closure]),
-                        np.concatenate([nx * scale[:, 0], [0.0]]), rcond=None)[0]
+    q = np.linalg.lstsq(
+        np.vstack([a_ax * scale, closure]), np.concatenate([nx * scale[:, 0], [0.0]]), rcond=None
+    )[0]
     phi = phi_s @ q
     xv, wv, r2v = _vol_nodes(shape, f, nose_fraction)
     vol = np.sum(wv)
@@ -486,8 +560,17 @@ def added_mass_factors(shape: str, fineness_ratio):
 #: numbers", J. Fluid Mech. 54(3) (smooth sphere; subcritical value 0.47 from Hoerner 1965 ch. 3).
 #: Approximate readings (+-0.02), interpolated in log Re; held constant outside 1e4-1e7.
 SPHERE_DRAG_TABLE = (
-    (1.0e4, 0.47), (1.0e5, 0.47), (2.0e5, 0.45), (3.0e5, 0.30), (4.0e5, 0.09), (6.0e5, 0.10),
-    (1.0e6, 0.13), (2.0e6, 0.16), (3.0e6, 0.18), (5.0e6, 0.20), (1.0e7, 0.20),
+    (1.0e4, 0.47),
+    (1.0e5, 0.47),
+    (2.0e5, 0.45),
+    (3.0e5, 0.30),
+    (4.0e5, 0.09),
+    (6.0e5, 0.10),
+    (1.0e6, 0.13),
+    (2.0e6, 0.16),
+    (3.0e6, 0.18),
+    (5.0e6, 0.20),
+    (1.0e7, 0.20),
 )
 
 
