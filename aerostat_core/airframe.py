@@ -18,7 +18,7 @@ from .geometry import HullGeometry, hull_geometry, shape_integrals
 from .helikite import KiteGeometry, kite_geometry
 from .inputs import Configuration, Requirement
 from .mass import MassBreakdown, mass_breakdown
-from .shapes import shape_info
+from .shapes import check_fineness, shape_info
 
 
 @dataclass(frozen=True)
@@ -107,11 +107,13 @@ def build_airframe(
     Bluff hulls (sphere, oblate, Helikite; ``ShapeInfo.streamlined`` False) carry no fins, and
     their tether force is taken at the centre of buoyancy (z_C = 0): a bluff hull's drag passes
     through its centre and its pitch attitude has no aerodynamic meaning, so it trims level. The
-    Helikite adds its kite (:mod:`aerostat_core.helikite`).
+    Helikite adds its kite (:mod:`aerostat_core.helikite`). A fineness ratio outside the
+    shape's valid range raises ``ValueError`` naming the value, the shape and the range.
     """
     shape = getattr(cfg.hull, "shape", "npl")
     info = shape_info(shape)
     f = cfg.hull.fineness_ratio if fineness_ratio is None else np.asarray(fineness_ratio, float)
+    check_fineness(shape, f)  # batch overrides too: a shape is only valid over its l/d range
     hull = hull_geometry(volume, f, cfg.hull.nose_fraction, shape)
     atm = isa(req.site_elevation + req.altitude, req.isa_offset)
     rho_gas = gas_density(cfg.gas, atm.pressure, atm.temperature)

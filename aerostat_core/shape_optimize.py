@@ -91,9 +91,10 @@ class ShapeStudy:
         return sorted(out, key=lambda x: (not x["feasible"], x[self.objective]))
 
 
-def _shape_bounds(shape: str, bounds: Mapping[str, Sequence[float]] | None) -> dict | None:
-    """Bounds for a streamlined shape: the user's, with f cut to the shape's range; None when
-    the cut leaves no interval (then f is held at the shape's standard value)."""
+def shape_bounds(shape: str, bounds: Mapping[str, Sequence[float]] | None) -> dict:
+    """Bounds (or sweep ranges) for a shape: the given ones (default
+    :data:`~aerostat_core.optimize.DEFAULT_BOUNDS`) with f cut to the shape's valid range; f is
+    left out when the cut leaves no interval (it is then held at the configuration's value)."""
     b = dict(DEFAULT_BOUNDS if bounds is None else bounds)
     lo, hi = SHAPE_INFO[shape].fineness_range
     if "fineness_ratio" in b:
@@ -175,7 +176,7 @@ def optimise_shapes(
         if not info.streamlined:
             out[s] = _grid_optimum(req, c, s, objective, int(grid_points))
             continue
-        problem = OptimisationProblem(req, c, _shape_bounds(s, bounds), objective)
+        problem = OptimisationProblem(req, c, shape_bounds(s, bounds), objective)
         r = solve(problem, solver, setting, seed=seed)
         out[s] = ShapeOptimum(
             s,
@@ -190,3 +191,46 @@ def optimise_shapes(
     feasible = [s for s in names if out[s].feasible]
     best = min(feasible, key=lambda s: out[s].objective) if feasible else None
     return ShapeStudy(per_shape=out, best=best, objective=objective)
+
+
+@dataclass(frozen=True)
+class FinenessSweep:
+    """Sized designs of one shape over its valid l/d range (1-D arrays): fineness_ratio [-],
+    volume [m3], total_mass [kg], blow_by [m], feasible (bool), plus the shape's standard l/d."""
+
+    shape: str
+    fineness_ratio: np.ndarray
+    volume: np.ndarray
+    total_mass: np.ndarray
+    blow_by: np.ndarray
+    feasible: np.ndarray
+    standard: float
+
+
+def fineness_sweeps(
+    req: Requirement, cfg: Configuration, shapes: Sequence[str] | None = None, n_points: int = 15
+) -> dict[str, FinenessSweep]:
+    """Sensitivity per shape: the hull re-sized (V*(f)) over each shape's valid l/d range, fins
+    and everything else from ``cfg`` (one vectorised :func:`evaluate_designs` call per shape).
+
+    Parameters
+    ----------
+    req, cfg : Requirement, Configuration
+    shapes : sequence of str or None
+        Default all of ``SHAPES``; the sphere has the single point l/d = 1.
+    n_points : int
+        Points per sweep, valid [2, 101].
+    """
+    if not 2 <= int(n_points) <= 101:
+        raise ValueError(f"n_points = {n_points!r} is outside the valid range [2, 101]")
+    out = {}
+    for s in SHAPES if shapes is None else shapes:
+        info = SHAPE_INFO[s]
+        lo, hi = info.fineness_range
+        fs = np.linspace(lo, hi, int(n_points)) if hi > lo else np.array([lo])
+        c = replace(cfg, hull=replace(cfg.hull, shape=s, fineness_ratio=None, volume=None))
+        b = evaluate_designs(req, c, fineness_ratio=fs)
+        out[s] = FinenessSweep(
+            s, fs, b.volume, b.total_mass, b.blow_by, b.feasible, info.default_fineness
+        )
+    return out

@@ -6,7 +6,7 @@ import pytest
 
 from aerostat_core.optimize import OptimisationProblem, solve
 from aerostat_core.presets import thesis_configuration, thesis_requirement
-from aerostat_core.shape_optimize import _shape_bounds, optimise_shapes
+from aerostat_core.shape_optimize import optimise_shapes, shape_bounds
 
 
 @pytest.fixture(scope="module")
@@ -40,8 +40,8 @@ def test_npl_optimum_is_the_plain_optimiser(study):
 
 
 def test_bounds_are_cut_to_the_shape_range_and_inputs_checked():
-    assert _shape_bounds("gnvr", {"fineness_ratio": (1.5, 2.5)})["fineness_ratio"] == (2.0, 2.5)
-    assert "fineness_ratio" not in _shape_bounds(
+    assert shape_bounds("gnvr", {"fineness_ratio": (1.5, 2.5)})["fineness_ratio"] == (2.0, 2.5)
+    assert "fineness_ratio" not in shape_bounds(
         "gnvr", {"fineness_ratio": (1.5, 1.9), "position": (0.6, 0.7)}
     )
     req, cfg = thesis_requirement(), thesis_configuration(None)
@@ -49,3 +49,25 @@ def test_bounds_are_cut_to_the_shape_range_and_inputs_checked():
         optimise_shapes(req, cfg, shapes=("cigar",))
     with pytest.raises(ValueError, match="objective"):
         optimise_shapes(req, cfg, objective="cost")
+
+
+def test_fineness_sweeps_per_shape():
+    from aerostat_core.shape_optimize import fineness_sweeps
+
+    sw = fineness_sweeps(thesis_requirement(), thesis_configuration(None), ("npl", "sphere"), 5)
+    assert sw["sphere"].fineness_ratio.tolist() == [1.0]
+    assert sw["npl"].fineness_ratio[0] == 1.5 and sw["npl"].fineness_ratio[-1] == 8.0
+    assert sw["npl"].volume.shape == (5,) and sw["npl"].feasible.any()
+
+
+def test_fineness_outside_the_shape_range_is_refused_in_batches():
+    from aerostat_core.optimize import evaluate_designs
+
+    cfg = thesis_configuration(None)
+    from dataclasses import replace
+
+    from aerostat_core import HullSpec
+
+    cfg = replace(cfg, hull=HullSpec(shape="helikite"))
+    with pytest.raises(ValueError, match=r"2.5 is outside .*\[1, 1.6\] for shape 'helikite'"):
+        evaluate_designs(thesis_requirement(), cfg, fineness_ratio=[1.2, 2.5])
