@@ -171,4 +171,8 @@ st.caption(
     f"as on the Design page (current shape: {cfg.hull.shape}). The sweeps above use the current "
     "shape; their l/d range must lie inside its valid range."
 )
-shapes_view.sensitivity_per_shape(inputs_json)
+if st.button("Sweep every shape", key="sens_shapes_run", icon=":material/category:") or (
+    st.session_state.get("sens_shapes_done")
+):
+    st.session_state["sens_shapes_done"] = True
+    shapes_view.sensitivity_per_shape(inputs_json)

@@ -70,6 +70,9 @@ def test_design_page_rejects_fineness_outside_the_shape_range(at):
 def test_sensitivity_page_has_a_per_shape_sweep(at):
     goto(at, "pages/3_Sensitivity.py")
     assert not at.exception, [e.value for e in at.exception]
+    at.button(key="sens_shapes_run").click()
+    at.run()
+    assert not at.exception, [e.value for e in at.exception]
     fig = chart(at, "sens_shapes")
     assert len(fig["data"]) == 8
     goto(at, DESIGN_PAGE)
