@@ -95,3 +95,16 @@ def test_version_1_files_load_as_npl():
     assert cases["old"]["configuration"]["hull"]["shape"] == "npl"
     with pytest.raises(ValueError, match="reads versions 1, 2"):
         design_from_json(json.dumps({"format": "aerostat-design", "version": 3}))
+
+
+def test_compare_rows_show_the_shape():
+    from aerostat_core import design
+    from aerostat_core.report import comparison_rows
+
+    a = design(Requirement(), Configuration(hull=HullSpec(volume=150.0)))
+    b = design(Requirement(), Configuration(hull=HullSpec(shape="wang", volume=150.0)))
+    rows = comparison_rows({"A": a, "B": b})
+    row = [r for r in rows if r["quantity"] == "Hull shape"][0]
+    assert (row["A"], row["B"], row["differs"]) == ("npl", "wang", True)
+    mass = [r for r in rows if r["quantity"] == "Hull fabric mass [kg]"][0]
+    assert mass["A"] == pytest.approx(float(a.airframe.mass.items["hull"]))
