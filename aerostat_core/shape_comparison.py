@@ -24,7 +24,6 @@ import numpy as np
 from . import constants as c
 from .atmosphere import isa
 from .design import Design, design
-from .helikite import kite_geometry
 from .inputs import HullSpec
 from .presets import thesis_configuration, thesis_requirement
 from .shapes import SHAPE_INFO, dimensions
@@ -385,11 +384,3 @@ def shape_dimensions_rows(volume: float = 100.0) -> list[dict]:
             }
         )
     return out
-
-
-def _kite_check() -> float:
-    """Dynamic lift of the reference Helikite kite at 15 m/s, 300 m ISA [kg] (= 48 by
-    construction of :func:`aerostat_core.helikite.reference_sail_ratio`)."""
-    k = kite_geometry(100.0)
-    q = 0.5 * float(isa(300.0).density) * 15.0**2
-    return float(q * k.area * k.lift_coefficient / c.G0)

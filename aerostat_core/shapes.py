@@ -174,8 +174,6 @@ SHAPE_INFO: dict[str, ShapeInfo] = {
 }
 #: Valid values of ``HullSpec.shape``.
 SHAPES = tuple(SHAPE_INFO)
-#: Shapes with a polynomial (Gertler or spheroid) profile P(x).
-_POLY_SHAPES = ("gnvr", "wang", "zhiyuan-1", "lotte", "sphere", "oblate", "helikite")
 
 
 def shape_info(shape: str) -> ShapeInfo:
@@ -467,8 +465,9 @@ def added_mass_numerical(
     fineness_ratio : float
         l/d [-].
     segments : int
-        Singularity segments (48 reproduces Lamb's prolate-spheroid factors to < 0.5 % for
-        f in [1.5, 10]; tests/core/test_shapes.py).
+        Singularity segments. With 48, Lamb's prolate-spheroid factors are reproduced within
+        0.5 % (k2, k') and 2 % (k1) for f in [1.5, 6] (tests/core/test_shapes.py); k1 drifts to
+        +3 % at f = 8, where the thin body needs more segments.
 
     Returns
     -------

@@ -281,6 +281,12 @@ def geometry_note(shape: str) -> str:
             f"The hull is a bluff {info.label.lower()} without fins; its tether force is "
             "taken at the centre of buoyancy, so it trims level."
         )
+    if info.kite:
+        text += (
+            " Kite lift and drag from the Table 2.2 reference (48 kg at 15 m/s for 100 m³); "
+            "Helikite limits (thesis Table 2.1): wind ≤ 25 m/s, payload < 30 kg, altitude "
+            "about 2 km."
+        )
     if not info.streamlined:
         return text
     return text + (
