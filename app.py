@@ -20,6 +20,7 @@ PAGES = (
     ("pages/4_Optimise.py", "Optimise", ":material/auto_graph:"),
     ("pages/5_Dynamics.py", "Dynamics", ":material/airwave:"),
     ("pages/6_Method.py", "Method", ":material/menu_book:"),
+    ("pages/7_Shapes.py", "Shapes", ":material/category:"),
 )
 
 st.set_page_config(

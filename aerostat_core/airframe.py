@@ -6,7 +6,7 @@ single design, a wind sweep and a batch of thousands of designs (optimisation, M
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -15,8 +15,10 @@ from .atmosphere import isa
 from .fins import FinGeometry, fin_geometry
 from .gas import gas_density, gross_buoyancy
 from .geometry import HullGeometry, hull_geometry, shape_integrals
+from .helikite import KiteGeometry, kite_geometry
 from .inputs import Configuration, Requirement
 from .mass import MassBreakdown, mass_breakdown
+from .shapes import check_fineness, shape_info
 
 
 @dataclass(frozen=True)
@@ -28,7 +30,8 @@ class Airframe:
     aerostat_weight (all but tether) [N]; total_weight [N]; free_lift = buoyancy - total_weight
     [N]; xi_c, z_c (confluence point, body frame) [m]; J&D integrals i1 [m2], i3 [m3], j1 [m2],
     j2 [m3] about xi_m [m] (= centre of buoyancy); cutoff_station [m]; tether_length [m];
-    tether_weight_per_length (in air, net of air buoyancy) [N/m]; g [m/s2].
+    tether_weight_per_length (in air, net of air buoyancy) [N/m]; g [m/s2]; kite (the
+    Helikite's :class:`~aerostat_core.helikite.KiteGeometry`, else None).
     """
 
     hull: HullGeometry
@@ -54,6 +57,21 @@ class Airframe:
     tether_length: float
     tether_weight_per_length: float
     g: float
+    kite: KiteGeometry | None = None
+
+
+def _without_fins(fins: FinGeometry, hull: HullGeometry, kite: KiteGeometry | None) -> FinGeometry:
+    """Fins of a bluff hull (sphere, oblate, Helikite): none. Zero areas and mass, so no fin
+    force or mass; for the Helikite the kite (sail, spars, keel) is booked here, at the centre
+    of buoyancy (the sail is centred on the balloon)."""
+    zero = np.zeros_like(hull.length)
+    mass = zero if kite is None else kite.mass * np.ones_like(zero)
+    return replace(
+        fins, root_chord=zero, tip_chord=zero, span=zero, area_one=zero, area_total=zero,
+        lifting_area=zero, xi_root_le=hull.xi_cb, xi_root_te=hull.xi_cb, xi_ac=hull.xi_cb,
+        xi_centroid=hull.xi_cb, y_mac=zero, z_fins=tuple(zero for _ in fins.z_fins),
+        lift_slope=zero, fabric_area=zero, mass=mass,
+    )
 
 
 def build_airframe(
@@ -85,15 +103,27 @@ def build_airframe(
     placed below the centre of net static lift (docs/methods.md §1.8, G9), so the hull flies level in
     calm air: xi_C = (F_B xi_CB - W_a xi_CG)/(F_B - W_a) + offset * l, z_C = -(b + drop * d).
     Where F_B <= W_a there is no net lift at the confluence point and xi_C falls back to xi_CB.
+
+    Bluff hulls (sphere, oblate, Helikite; ``ShapeInfo.streamlined`` False) carry no fins, and
+    their tether force is taken at the centre of buoyancy (z_C = 0): a bluff hull's drag passes
+    through its centre and its pitch attitude has no aerodynamic meaning, so it trims level. The
+    Helikite adds its kite (:mod:`aerostat_core.helikite`). A fineness ratio outside the
+    shape's valid range raises ``ValueError`` naming the value, the shape and the range.
     """
+    shape = getattr(cfg.hull, "shape", "npl")
+    info = shape_info(shape)
     f = cfg.hull.fineness_ratio if fineness_ratio is None else np.asarray(fineness_ratio, float)
-    hull = hull_geometry(volume, f, cfg.hull.nose_fraction)
+    check_fineness(shape, f)  # batch overrides too: a shape is only valid over its l/d range
+    hull = hull_geometry(volume, f, cfg.hull.nose_fraction, shape)
     atm = isa(req.site_elevation + req.altitude, req.isa_offset)
     rho_gas = gas_density(cfg.gas, atm.pressure, atm.temperature)
     fins = fin_geometry(
         hull, cfg.fins, cfg.fin_fabric.areal_density, area_change, position,
         cfg.aero.section_lift_slope,
     )
+    kite = kite_geometry(hull.volume) if info.kite else None
+    if not info.streamlined:
+        fins = _without_fins(fins, hull, kite)
     t = cfg.tether
     tether_length = float(req.altitude)
     mass = mass_breakdown(
@@ -111,6 +141,9 @@ def build_airframe(
     xi_m = hull.xi_cb
     lh = fins.xi_root_le if cfg.aero.cutoff == "fin" else hull.length
     i1, i3, j1, j2 = shape_integrals(hull, lh, xi_m)
+    if not info.streamlined:  # drag-only hull (statics.aero_loads), tether at the centre
+        z_c = np.zeros_like(hull.length)
+        i1, i3, j1, j2 = (np.zeros_like(hull.length) for _ in range(4))
     area_t = np.pi * t.diameter**2 / 4.0
     w_line = (t.linear_density - float(atm.density) * area_t) * g
     return Airframe(
@@ -120,5 +153,5 @@ def build_airframe(
         buoyancy=fb, aerostat_weight=w_a, total_weight=w_t, free_lift=fb - w_t,
         xi_c=xi_c, z_c=z_c, xi_m=xi_m, cutoff_station=lh * np.ones_like(hull.length),
         i1=i1, i3=i3, j1=j1, j2=j2,
-        tether_length=tether_length, tether_weight_per_length=w_line, g=g,
+        tether_length=tether_length, tether_weight_per_length=w_line, g=g, kite=kite,
     )

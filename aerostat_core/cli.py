@@ -1,5 +1,6 @@
 """Command line: ``python -m aerostat_core design --payload 10 --altitude 300 [--rules practice]
-[--config f.json] [--csv out.csv] [--json]``. Prints a readable summary (or ``Design.summary()``
+[--shape gnvr] [--config f.json] [--csv out.csv] [--json] [--stl hull.stl]
+[--gores 12 --gores-dxf g.dxf]``. Prints a readable summary (or ``Design.summary()``
 as JSON); a bad value exits with code 2 and one line naming the field. The CLI and the library
 give the same design for the same inputs: limits left open come from the rule set, and without
 ``--config`` the configuration is the rule set's (presets.rules_configuration)."""
@@ -19,6 +20,7 @@ from .inputs import Requirement
 from .io import design_from_json, rows_to_csv
 from .presets import rules_configuration
 from .rules import RULE_NAMES
+from .shapes import SHAPES
 
 #: Largest --config file read [bytes] (a design file is a few kB).
 CONFIG_SIZE_CAP = 1_000_000
@@ -114,8 +116,47 @@ def _parser() -> argparse.ArgumentParser:
     d.add_argument("--config", type=Path, help="JSON design file with every input")
     d.add_argument("--csv", type=Path, help="write geometry, mass and performance CSV here")
     d.add_argument("--json", action="store_true",
-                   help="print Design.summary() as JSON instead of the readable summary")
+                   help="print Design.summary() as JSON instead of the readable summary "
+                        "(adds hull_shape)")
+    d.add_argument("--shape", choices=SHAPES, help="hull shape (default: npl, or the config's)")
+    d.add_argument("--fineness-ratio", type=float,
+                   help="hull l/d (default: the shape's standard value)")
+    d.add_argument("--stl", type=Path, help="write an STL of the hull and fins here")
+    d.add_argument("--gores", type=int, default=12, help="number of gores (default 12)")
+    d.add_argument("--seam-allowance", type=float, default=0.02,
+                   help="seam allowance of the patterns [m] (default 0.02)")
+    d.add_argument("--gores-dxf", type=Path, help="write gore and fin patterns as DXF here")
+    d.add_argument("--gores-svg", type=Path, help="write gore and fin patterns as SVG here")
+    d.add_argument("--gores-csv", type=Path, help="write the gore half-widths CSV here")
     return p
+
+
+def summary_json(d: Design) -> str:
+    """JSON text of :meth:`Design.summary` plus ``hull_shape``."""
+    s = dict(d.summary())
+    s.setdefault("hull_mass_kg", float(d.airframe.mass.items["hull"]))
+    s.setdefault("hull_shape", d.airframe.hull.shape)
+    return json.dumps(s, indent=2)
+
+
+def _write_exports(args, d: Design) -> list[str]:
+    """Write the requested geometry files; returns the lines to print (raises OSError)."""
+    from .export import design_stl, gore_csv, gore_dxf, gore_pattern, gore_svg
+
+    done = []
+    if args.stl is not None:
+        args.stl.write_bytes(design_stl(d))
+        done.append(f"  STL written to {args.stl}")
+    if any(x is not None for x in (args.gores_dxf, args.gores_svg, args.gores_csv)):
+        pat = gore_pattern(d, args.gores, args.seam_allowance)
+        for path, data in ((args.gores_dxf, gore_dxf), (args.gores_svg, gore_svg)):
+            if path is not None:
+                path.write_bytes(data(pat))
+                done.append(f"  patterns written to {path}")
+        if args.gores_csv is not None:
+            args.gores_csv.write_text(gore_csv(pat))
+            done.append(f"  gore half-widths written to {args.gores_csv}")
+    return done
 
 
 def _read_config(path: Path) -> bytes:
@@ -158,14 +199,27 @@ def _main(argv: list[str] | None) -> int:
             cfg = rules_configuration(req.rules)
         if args.volume is not None:
             cfg = cfg.with_design_variables(volume=args.volume)
+        if args.shape is not None or args.fineness_ratio is not None:
+            shape = args.shape or cfg.hull.shape
+            f = args.fineness_ratio if args.fineness_ratio is not None else (
+                cfg.hull.fineness_ratio if shape == cfg.hull.shape else None)
+            cfg = replace(cfg, hull=replace(cfg.hull, shape=shape, fineness_ratio=f))
+        if not 3 <= args.gores <= 64:
+            raise ValueError(f"--gores = {args.gores} is outside the valid range [3, 64]")
+        if not 0 <= args.seam_allowance <= 0.2:
+            raise ValueError(f"--seam-allowance = {args.seam_allowance:g} is outside the valid "
+                             "range [0, 0.2] m")
     except ValueError as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2
     d = design(req, cfg)
-    if args.json:
-        print(json.dumps(d.summary(), indent=2))
-    else:
-        print(format_summary(d))
+    print(summary_json(d) if args.json else format_summary(d))
+    try:
+        for line in _write_exports(args, d):
+            print(line, file=sys.stderr if args.json else sys.stdout)
+    except OSError as exc:
+        print(f"error: {exc.filename}: {exc.strerror}", file=sys.stderr)
+        return 2
     if args.csv is not None:
         try:
             args.csv.write_text(design_csv(d))

@@ -74,3 +74,26 @@ FIN_ZERO_LIFT_DRAG = 0.008
 FIN_STALL_ANGLE_DEG = 20.0
 #: Smallest Reynolds number used in Hoerner's drag law [-]; guards the V -> 0 limit where q -> 0.
 MIN_REYNOLDS = 1.0e4
+
+# --- Helikite-style kite balloon (issue 12; aerostat_core.helikite) ----------------------------
+#: Thesis Table 2.2 Helikite reference (Allsopp Helikites "Aerostar", via the thesis): 100 m3 hull,
+#: 6.2 m x 5 m, kite (sail, spars, keel) 11.38 kg, dynamic lift 48 kg at 15 m/s at 300 m, C_D 0.2.
+HELIKITE_REF_VOLUME = 100.0
+#: [kg] kite mass of the reference (Table 2.2).
+HELIKITE_REF_KITE_MASS = 11.38
+#: [kg] dynamic lift of the reference at HELIKITE_REF_WIND (Table 2.2).
+HELIKITE_REF_DYNAMIC_LIFT_KG = 48.0
+#: [m/s] wind of the reference dynamic lift (Table 2.2, "at 15 m/s").
+HELIKITE_REF_WIND = 15.0
+#: [m] altitude of the reference (Table 2.2; ISA density there sets q).
+HELIKITE_REF_ALTITUDE = 300.0
+#: Kite sail aspect ratio [-]. ASSUMED (low-aspect-ratio sail on a Helikite; not in the thesis).
+HELIKITE_KITE_ASPECT_RATIO = 1.5
+#: Kite incidence to the wind held by the bridle [deg]. ASSUMED (typical kite bridle angle).
+HELIKITE_KITE_INCIDENCE_DEG = 15.0
+#: [m/s] Helikite wind limit (thesis Table 2.1, "wind conditions 25 m/s").
+HELIKITE_MAX_WIND = 25.0
+#: [kg] Helikite payload limit (thesis Table 2.1, "< 30 kg").
+HELIKITE_MAX_PAYLOAD = 30.0
+#: [m] Helikite operating altitude (thesis Table 2.1, "~2 km").
+HELIKITE_MAX_ALTITUDE = 2000.0

@@ -10,7 +10,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .geometry import HullGeometry, radius
+from .geometry import HullGeometry
 from .inputs import FinSpec
 
 #: Fin angles from the horizontal [deg] for each arrangement (thesis fin count not found: G2).
@@ -164,7 +164,7 @@ def fin_geometry(
     lifting = s1 * float(np.sum(np.cos(angles) ** 2))
     tan_c2 = tan_le - (2.0 / ar) * (1.0 - lam) / (1.0 + lam)
     cla = helmbold_lift_slope(ar, np.arctan(tan_c2), section_lift_slope)
-    r_root = radius(xi_le + 0.5 * rc, hull.a1, hull.a2, hull.b)
+    r_root = hull.radius_at(xi_le + 0.5 * rc)
     z_fins = tuple((r_root + y_mac) * np.sin(a) for a in angles)
     fabric = spec.fabric_factor * s1 * n
     return FinGeometry(

@@ -1,7 +1,10 @@
-"""NPL double-ellipsoid hull: profile, volume, area, centroids, Lamb inertia factors, J&D integrals.
+"""Hull geometry: profile, volume, area, centroids, inertia factors, J&D integrals.
 
-All functions broadcast over numpy arrays, so one call can size a whole batch of hulls.
-Body frame (docs/methods.md §1): station xi from the nose, aft positive; z up.
+The NPL double ellipsoid has closed forms (below); every other shape of
+:mod:`aerostat_core.shapes` (Gertler profiles, spheroids) is integrated by Gauss-Legendre
+quadrature of its dimensionless profile. All functions broadcast over numpy arrays, so one call
+can size a whole batch of hulls. Body frame (docs/methods.md §1): station xi from the nose, aft
+positive; z up.
 """
 
 from __future__ import annotations
@@ -9,6 +12,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+
+from . import shapes as _shapes
 
 # Gauss-Legendre nodes for the smooth surface integrals (exact enough to 1e-12 for these profiles).
 _GL_X, _GL_W = np.polynomial.legendre.leggauss(48)
@@ -174,12 +179,13 @@ def lamb_factors(fineness_ratio):
 
 @dataclass(frozen=True)
 class HullGeometry:
-    """Geometry of an NPL hull (arrays broadcast over a batch of designs).
+    """Geometry of a hull (arrays broadcast over a batch of designs).
 
-    Attributes (all SI): volume [m3], fineness_ratio [-], length, diameter, a1, a2, b [m],
+    Attributes (all SI): volume [m3], fineness_ratio [-], length, diameter, a1, a2, b [m]
+    (for shapes other than NPL: a1 = station of maximum diameter, a2 = l - a1, b = d/2),
     surface_area [m2], xi_cb (centre of buoyancy) [m], xi_surface (fabric centroid) [m],
     planform_area J1 [m2], planform_centroid [m], reference_area V^(2/3) [m2],
-    k1, k2, k_rot (Lamb factors) [-].
+    k1, k2, k_rot (inertia factors) [-], shape (a name of ``aerostat_core.shapes.SHAPES``).
     """
 
     volume: np.ndarray
@@ -198,10 +204,63 @@ class HullGeometry:
     k1: np.ndarray
     k2: np.ndarray
     k_rot: np.ndarray
+    shape: str = "npl"
+
+    @property
+    def prismatic_coefficient(self) -> float:
+        """C_p = V / (pi d^2 l / 4) [-]."""
+        return _shapes.prismatic_coefficient(self.shape)
+
+    def radius_at(self, xi):
+        """Local radius r(xi) [m] at stations ``xi`` [m] from the nose (0 outside the hull)."""
+        if self.shape == "npl":
+            return radius(xi, self.a1, self.a2, self.b)
+        x = np.asarray(xi, dtype=float) / self.length
+        return self.diameter * _shapes.profile_radius_ratio(self.shape, x)
+
+    def volume_to(self, xi):
+        """Hull volume between the nose and station ``xi`` [m3]."""
+        if self.shape == "npl":
+            return volume_to_station(xi, self.a1, self.a2, self.b)
+        x = np.clip(np.asarray(xi, dtype=float) / self.length, 0.0, 1.0)
+        q = np.polynomial.Polynomial(_shapes.profile_coefficients(self.shape)).integ()
+        return np.pi * self.diameter**2 * self.length * q(x)
 
 
-def hull_geometry(volume, fineness_ratio, nose_fraction=0.432) -> HullGeometry:
-    """Build :class:`HullGeometry` from volume [m3], fineness ratio [-] and a1/l [-].
+def _profile_geometry(volume, fineness_ratio, shape: str) -> HullGeometry:
+    """:class:`HullGeometry` of a polynomial-profile shape by quadrature (shapes.profile_data).
+
+    d = (4V/(pi f C_p))^(1/3), l = f d; S = 2 pi d l int sqrt(P + P'^2/(4 f^2)) dx;
+    xi_CB = l x_cv; J1 = d l int 2 sqrt(P) dx with its centroid; inertia factors from
+    :func:`aerostat_core.shapes.added_mass_factors`.
+    """
+    pd = _shapes.profile_data(shape)
+    f = np.asarray(fineness_ratio, dtype=float)
+    v = np.asarray(volume, dtype=float)
+    length, d = _shapes.dimensions(shape, v, f)
+    v = v * np.ones_like(length)
+    f = f * np.ones_like(length)
+    fb = f[..., None]
+    ds = np.sqrt(pd.p + pd.dp**2 / (4.0 * fb**2)) * pd.wx
+    s = 2.0 * np.pi * d * length * np.sum(ds, axis=-1)
+    xi_s = length * np.sum(ds * pd.x, axis=-1) / np.sum(ds, axis=-1)
+    k1, k2, kr = _shapes.added_mass_factors(shape, f)
+    a1 = pd.x_max * length
+    return HullGeometry(
+        volume=v, fineness_ratio=f, length=length, diameter=d, a1=a1, a2=length - a1,
+        b=0.5 * d, surface_area=s, xi_cb=pd.x_cv * length, xi_surface=xi_s,
+        planform_area=pd.planform * d * length, planform_centroid=pd.x_planform * length,
+        reference_area=v ** (2.0 / 3.0), k1=k1 * np.ones_like(length),
+        k2=k2 * np.ones_like(length), k_rot=kr * np.ones_like(length), shape=shape,
+    )
+
+
+def hull_geometry(volume, fineness_ratio, nose_fraction=0.432, shape: str = "npl"
+                  ) -> HullGeometry:
+    """Build :class:`HullGeometry` from volume [m3], fineness ratio [-], a1/l [-] and shape.
+
+    ``shape`` other than ``"npl"`` is integrated from its profile (:func:`_profile_geometry`;
+    ``nose_fraction`` applies to NPL only); the sphere always has l/d = 1.
 
     Closed forms (docs/methods.md §1.4): S = S_half(a1, b) + S_half(a2, b);
     xi_CB = [a1 (5 a1/8) + a2 (a1 + 3 a2/8)] / (a1 + a2) (half-ellipsoid centroids 3a/8 from the
@@ -214,6 +273,11 @@ def hull_geometry(volume, fineness_ratio, nose_fraction=0.432) -> HullGeometry:
     >>> round(float(g.surface_area), 2)
     119.97
     """
+    if shape != "npl":
+        _shapes.shape_info(shape)
+        if shape == "sphere":
+            fineness_ratio = np.ones_like(np.asarray(fineness_ratio, dtype=float))
+        return _profile_geometry(volume, fineness_ratio, shape)
     length, d, a1, a2, b = hull_dimensions(volume, fineness_ratio, nose_fraction)
     v = np.asarray(volume, dtype=float) * np.ones_like(length)
     s = half_spheroid_area(a1, b) + half_spheroid_area(a2, b)
@@ -267,9 +331,9 @@ def shape_integrals(g: HullGeometry, cutoff_station, moment_station):
     Check: l_h = l gives I1 = 0 and I3 = V (Munk's moment).
     """
     lh = np.clip(np.asarray(cutoff_station, dtype=float), 0.0, g.length)
-    area = np.pi * radius(lh, g.a1, g.a2, g.b) ** 2
+    area = np.pi * g.radius_at(lh) ** 2
     i1 = area
-    i3 = (moment_station - lh) * area + volume_to_station(lh, g.a1, g.a2, g.b)
+    i3 = (moment_station - lh) * area + g.volume_to(lh)
     j1 = g.planform_area
     j2 = j1 * (moment_station - g.planform_centroid)
     return i1, i3, j1, j2
@@ -280,8 +344,16 @@ def profile_quadrature(g: HullGeometry):
 
     Returns stations xi [m], radii r [m], surface weights w_s (so that sum(w_s F(xi)) =
     int F dS) [m2] and volume weights w_v (sum(w_v F) = int F dV) [m3]; arrays of shape
-    (..., 96) over a batch.
+    (..., 96) over a batch (NPL) or (..., QUAD_ORDER) (other shapes).
     """
+    if g.shape != "npl":
+        pd = _shapes.profile_data(g.shape)
+        ln = np.asarray(g.length, dtype=float)[..., None]
+        d = np.asarray(g.diameter, dtype=float)[..., None]
+        f = ln / d
+        ds = 2.0 * np.pi * d * ln * np.sqrt(pd.p + pd.dp**2 / (4.0 * f**2)) * pd.wx
+        dv = np.pi * d**2 * pd.p * ln * pd.wx
+        return ln * pd.x, d * np.sqrt(pd.p), ds, dv
     a1 = np.asarray(g.a1, dtype=float)[..., None]
     a2 = np.asarray(g.a2, dtype=float)[..., None]
     b = np.asarray(g.b, dtype=float)[..., None]

@@ -12,6 +12,7 @@ from dataclasses import dataclass, field, fields, replace
 from . import constants as c
 from .materials import Fabric, TetherSpec
 from .rules import DEFAULT_RULES, RULE_NAMES, RuleSet, get_rules
+from .shapes import SHAPE_INFO, SHAPES
 from .validation import check_choice, check_int, check_number
 
 GAS_KINDS = ("helium", "hydrogen")
@@ -237,26 +238,41 @@ class LiftingGas:
 
 @dataclass(frozen=True)
 class HullSpec:
-    """NPL double-ellipsoid hull.
+    """The hull: its shape, fineness ratio and (optionally) volume.
 
     Parameters
     ----------
-    fineness_ratio : float
-        Length / maximum diameter f [-], valid [1.5, 8] (design variable 1).
+    fineness_ratio : float or None
+        Length / maximum diameter f [-] (design variable 1), valid in the shape's range
+        (``aerostat_core.shapes.SHAPE_INFO``: NPL [1.5, 8], Gertler shapes [2, 6], sphere 1,
+        oblate [0.5, 0.95], Helikite [1, 1.6]); ``None`` takes the shape's standard value
+        (4.0 for NPL).
     nose_fraction : float
-        Station of maximum diameter / length, a1/l [-], valid [0.2, 0.8]; NPL standard 0.432.
+        Station of maximum diameter / length, a1/l [-], valid [0.2, 0.8]; NPL standard 0.432
+        (NPL only; the other profiles fix their own).
     volume : float or None
         Hull volume [m3], valid [1, 1e5]; ``None`` sizes the smallest hull that meets the blow-by
         limit at the design wind with positive free lift.
+    shape : str
+        Hull shape, one of ``aerostat_core.shapes.SHAPES``: "npl" (default), "gnvr", "wang",
+        "zhiyuan-1", "lotte", "sphere", "oblate", "helikite".
     """
 
-    fineness_ratio: float = 4.0
+    fineness_ratio: float | None = None
     nose_fraction: float = 0.432
     volume: float | None = None
+    shape: str = "npl"
 
     def __post_init__(self) -> None:
         o = "HullSpec"
-        check_number(o, "fineness_ratio", self.fineness_ratio, 1.5, 8.0)
+        check_choice(o, "shape", self.shape, SHAPES)
+        if self.fineness_ratio is None:
+            object.__setattr__(self, "fineness_ratio", SHAPE_INFO[self.shape].default_fineness)
+        lo, hi = SHAPE_INFO[self.shape].fineness_range
+        try:
+            check_number(o, "fineness_ratio", self.fineness_ratio, lo, hi)
+        except ValueError as exc:
+            raise ValueError(f"{exc} for shape {self.shape!r}") from None
         check_number(o, "nose_fraction", self.nose_fraction, 0.2, 0.8)
         if self.volume is not None:
             check_number(o, "volume", self.volume, 1.0, 1e5, "m3")

@@ -2,11 +2,13 @@
 
 The JSON format holds every input::
 
-    {"format": "aerostat-design", "version": 1,
+    {"format": "aerostat-design", "version": 2,
      "requirement": {...Requirement fields...},
      "configuration": {"gas": {...}, "hull": {...}, ..., "misc_mass_ratio": 0.3, ...}}
 
-A file of saved cases is ``{"format": "aerostat-cases", "version": 1, "cases": {name: design}}``.
+A file of saved cases is ``{"format": "aerostat-cases", "version": 2, "cases": {name: design}}``.
+Version 2 added ``configuration.hull.shape`` (issue 12); version-1 files still load, and their
+hulls are NPL (the only shape version 1 knew).
 Readers are strict: unknown keys, wrong types, out-of-range values, or oversized input raise
 ``ValueError`` with a message naming the field; nothing is half-applied.
 """
@@ -35,7 +37,9 @@ from .validation import check_name
 
 FORMAT_DESIGN = "aerostat-design"
 FORMAT_CASES = "aerostat-cases"
-VERSION = 1
+VERSION = 2
+#: Versions this program reads (1: before hull shapes; read as NPL).
+READABLE_VERSIONS = (1, 2)
 #: Largest JSON document accepted [bytes]; a design is about 2 kB.
 MAX_JSON_BYTES = 1_000_000
 #: Largest number of cases in one file.
@@ -121,14 +125,21 @@ def inputs_from_dict(data: Any) -> tuple[Requirement, Configuration]:
     if fmt != FORMAT_DESIGN:
         raise ValueError(f"format = {fmt!r}: expected {FORMAT_DESIGN!r}")
     version = data.get("version", VERSION)
-    if type(version) is not int or version != VERSION:
-        raise ValueError(f"version = {version!r}: this program reads version {VERSION}")
+    _check_version(version)
     unknown = sorted(set(data) - {"format", "version", "requirement", "configuration", "name"})
     if unknown:
         raise ValueError(f"design has unknown field(s): {', '.join(map(str, unknown))}")
     req = _build(Requirement, data.get("requirement", {}), "requirement")
     cfg = _build(Configuration, data.get("configuration", {}), "configuration")
     return req, cfg
+
+
+def _check_version(version: Any) -> None:
+    """Accept the file versions of ``READABLE_VERSIONS``; anything else is a named error."""
+    if type(version) is not int or version not in READABLE_VERSIONS:
+        raise ValueError(f"version = {version!r}: this program reads versions "
+                         f"{', '.join(map(str, READABLE_VERSIONS))}")
+    return None
 
 
 def _loads_limited(text: str | bytes) -> Any:
@@ -181,8 +192,7 @@ def cases_from_json(text: str | bytes) -> dict[str, dict[str, Any]]:
         return {check_name("design", "name", data.get("name", "imported")): inputs_to_dict(req, cfg)}
     if not isinstance(data, dict) or data.get("format") != FORMAT_CASES:
         raise ValueError(f"file is neither {FORMAT_CASES!r} nor {FORMAT_DESIGN!r} JSON")
-    if type(data.get("version")) is not int or data.get("version") != VERSION:
-        raise ValueError(f"version = {data.get('version')!r}: this program reads version {VERSION}")
+    _check_version(data.get("version"))
     cases = data.get("cases")
     if not isinstance(cases, dict):
         raise ValueError("'cases' must be an object of name -> design")

@@ -23,6 +23,7 @@ from .geometry import radius
 from .inputs import Requirement
 from .io import inputs_from_dict, inputs_to_dict, rows_to_csv
 from .presets import practice_configuration
+from .shapes import profile_radius_ratio
 
 # --------------------------------------------------------------------------------------------
 # Input fields: labels and units (display and CSV)
@@ -82,6 +83,7 @@ INPUT_FIELDS: dict[str, tuple[str, str, float, str]] = {
     ),
     "configuration.tether.breaking_strength": ("Tether breaking strength", "kN", 1e-3, "N"),
     "configuration.tether.axial_stiffness": ("Tether axial stiffness EA", "kN", 1e-3, "N"),
+    "configuration.hull.shape": ("Hull shape", "", 1.0, ""),
     "configuration.hull.fineness_ratio": ("Fineness ratio l/d", "-", 1.0, ""),
     "configuration.hull.nose_fraction": ("Max-diameter station a1/l", "-", 1.0, ""),
     "configuration.hull.volume": ("Hull volume (given; empty = sized)", "m³", 1.0, "m3"),
@@ -196,8 +198,10 @@ def _f(x: Any) -> float:
     return float(np.asarray(x, dtype=float).reshape(-1)[0])
 
 
-def hull_outline(a1: float, a2: float, b: float, n: int = 121) -> tuple[np.ndarray, np.ndarray]:
-    """Stations xi [m] (nose to tail, denser at both ends) and radii r(xi) [m] of the NPL profile.
+def hull_outline(a1: float, a2: float, b: float, n: int = 121, shape: str = "npl"
+                 ) -> tuple[np.ndarray, np.ndarray]:
+    """Stations xi [m] (nose to tail, denser at both ends) and radii r(xi) [m] of the profile
+    (NPL from a1, a2, b; any other ``shape`` from its dimensionless profile, l = a1 + a2, d = 2b).
 
     >>> xi, r = hull_outline(2.0, 3.0, 1.0, n=5)
     >>> float(r[0]), float(r[-1]), float(r.max())
@@ -207,17 +211,19 @@ def hull_outline(a1: float, a2: float, b: float, n: int = 121) -> tuple[np.ndarr
     t = np.linspace(0.0, np.pi, n)
     xi = 0.5 * length * (1.0 - np.cos(t))  # cosine spacing: resolves the blunt nose and tail
     xi = np.unique(np.append(xi, a1))  # include the station of maximum radius exactly
+    if shape != "npl":
+        return xi, 2.0 * b * profile_radius_ratio(shape, xi / length)
     return xi, np.asarray(radius(xi, a1, a2, b), dtype=float)
 
 
 def hull_surface(
-    a1: float, a2: float, b: float, n_xi: int = 61, n_theta: int = 37
+    a1: float, a2: float, b: float, n_xi: int = 61, n_theta: int = 37, shape: str = "npl"
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Surface of revolution of the NPL profile: X (axis, aft), Y (starboard), Z (up) grids [m].
+    """Surface of revolution of the profile: X (axis, aft), Y (starboard), Z (up) grids [m].
 
     Shapes (n_theta, n_xi'): one row per azimuth. Body frame: origin at the nose, z up.
     """
-    xi, r = hull_outline(a1, a2, b, n_xi)
+    xi, r = hull_outline(a1, a2, b, n_xi, shape)
     theta = np.linspace(0.0, 2.0 * np.pi, n_theta)[:, None]
     x = np.broadcast_to(xi, (n_theta, xi.size))
     return np.array(x), r * np.cos(theta), r * np.sin(theta)
@@ -232,11 +238,10 @@ def fin_outlines(d: Design) -> list[np.ndarray]:
     ``fins.ARRANGEMENT_ANGLES_DEG`` (0 = starboard, 90 = up).
     """
     h, f = d.airframe.hull, d.airframe.fins
-    a1, a2, b = _f(h.a1), _f(h.a2), _f(h.b)
     le, rc, tc, span = _f(f.xi_root_le), _f(f.root_chord), _f(f.tip_chord), _f(f.span)
     tan_le = math.tan(_f(f.sweep_le))
-    r_le, r_te = (float(radius(x, a1, a2, b)) for x in (le, le + rc))
-    r_tip = float(radius(le + 0.5 * rc, a1, a2, b)) + span
+    r_le, r_te = (_f(h.radius_at(x)) for x in (le, le + rc))
+    r_tip = _f(h.radius_at(le + 0.5 * rc)) + span
     tip_le = le + span * tan_le
     corners = [(le, r_le), (le + rc, r_te), (tip_le + tc, r_tip), (tip_le, r_tip), (le, r_le)]
     arrangement = d.configuration.fins.arrangement
@@ -254,10 +259,10 @@ def confluence_lines(d: Design, n_lines: int = 3) -> list[np.ndarray]:
     array (2, 2) of (xi, z) [m].
     """
     h, af = d.airframe.hull, d.airframe
-    a1, a2, b, length = _f(h.a1), _f(h.a2), _f(h.b), _f(h.length)
+    length = _f(h.length)
     xc, zc = _f(af.xi_c), _f(af.z_c)
     stations = np.clip(xc + np.linspace(-0.2, 0.2, n_lines) * length, 0.08 * length, 0.92 * length)
-    return [np.array([[xc, zc], [x, -float(radius(x, a1, a2, b))]]) for x in stations]
+    return [np.array([[xc, zc], [x, -_f(h.radius_at(x))]]) for x in stations]
 
 
 # --------------------------------------------------------------------------------------------
@@ -360,6 +365,7 @@ def design_report(d: Design) -> dict[str, Any]:
             "wind_speed": np.asarray(p.wind_speed, float),
             "design": _design_wind_profile(d),
         },
+        "shape": h.shape,
         "hull": {
             "a1": _f(h.a1),
             "a2": _f(h.a2),
@@ -437,6 +443,9 @@ def comparison_rows(designs: Mapping[str, Design]) -> list[dict[str, Any]]:
         row["differs"] = _differs(values)
         rows.append(row)
 
+    add("result", "Hull shape", "", [d.airframe.hull.shape for d in designs.values()])
+    add("result", "Hull fabric mass", "kg",
+        [_f(d.airframe.mass.items["hull"]) for d in designs.values()])
     summaries = {n: d.summary() for n, d in designs.items()}
     for key, label, unit in SUMMARY_FIELDS:
         add("result", label, unit, [summaries[n].get(key) for n in names])

@@ -14,14 +14,15 @@ import numpy as np
 from .aerodynamics import (
     body_to_wind,
     fin_lift_drag,
-    hoerner_volumetric_drag,
     hull_axial,
     hull_crossflow,
     hull_inviscid,
     reynolds_number,
 )
 from .airframe import Airframe
+from .helikite import kite_lift_drag
 from .inputs import AeroModel
+from .shapes import SHAPE_INFO, volumetric_drag_coefficient
 
 
 @dataclass(frozen=True)
@@ -47,11 +48,13 @@ class AeroLoads:
 
 
 def axial_drag_coefficient(af: Airframe, aero: AeroModel, speed):
-    """Hull zero-lift drag coefficient on V^(2/3): Hoerner's C_DV(f, Re) or the given value."""
+    """Hull zero-lift drag coefficient on V^(2/3): the shape's C_DV(f, Re)
+    (:func:`aerostat_core.shapes.volumetric_drag_coefficient`; Hoerner for NPL) or the given
+    value."""
     if aero.hull_axial_drag is not None:
         return np.full(np.broadcast(af.hull.length, speed).shape, aero.hull_axial_drag)
     re = reynolds_number(af.air_density, speed, af.hull.length, af.viscosity)
-    return hoerner_volumetric_drag(af.hull.fineness_ratio, re)
+    return volumetric_drag_coefficient(af.hull.shape, af.hull.fineness_ratio, re)
 
 
 def aero_loads(af: Airframe, aero: AeroModel, alpha, speed, cd0=None) -> AeroLoads:
@@ -60,6 +63,8 @@ def aero_loads(af: Airframe, aero: AeroModel, alpha, speed, cd0=None) -> AeroLoa
     Hull (Jones & DeLaurier): N_h = inviscid + cross-flow, A_h = axial + inviscid,
     M_h about xi_m; fins: lift and drag from :func:`aerostat_core.aerodynamics.fin_lift_drag`.
     ``cd0`` (volumetric drag coefficient) may be passed to avoid recomputing it.
+    Bluff hulls (sphere, oblate, Helikite) are drag-only: D_h = q C_DV V^(2/3) along the wind,
+    no hull lift or moment; the Helikite's kite lift and drag act at the centre of buoyancy.
     """
     q = 0.5 * af.air_density * np.asarray(speed, float) ** 2
     if cd0 is None:
@@ -70,12 +75,19 @@ def aero_loads(af: Airframe, aero: AeroModel, alpha, speed, cd0=None) -> AeroLoa
     n_c, m_c = hull_crossflow(q, alpha, aero.hull_crossflow_drag, af.j1, af.j2)
     a_x = hull_axial(q, alpha, cd0, h.reference_area)
     lift_h, drag_h = body_to_wind(n_i + n_c, a_i + a_x, alpha)
+    m_h = m_i + m_c
+    if not SHAPE_INFO[h.shape].streamlined:
+        drag_h = q * cd0 * h.reference_area * np.ones_like(lift_h)
+        lift_h, m_h = np.zeros_like(drag_h), np.zeros_like(drag_h)
+        if af.kite is not None:
+            lk, dk = kite_lift_drag(q, af.kite)
+            lift_h, drag_h = lift_h + lk, drag_h + dk
     fn = af.fins
     lift_f, drag_f = fin_lift_drag(
         q, alpha, fn.lift_slope, aero.fin_efficiency, np.radians(aero.fin_stall_angle_deg),
         fn.lifting_area, fn.area_total, aero.fin_zero_lift_drag, fn.aspect_ratio, fn.oswald,
     )
-    return AeroLoads(lift_h, drag_h, m_i + m_c, lift_f, drag_f)
+    return AeroLoads(lift_h, drag_h, m_h, lift_f, drag_f)
 
 
 def _ccw(dxi, dz, ca, sa, fx, fz):

@@ -159,7 +159,7 @@ _POINTS = (
 def hull_3d_figure(rep: Mapping[str, Any]) -> go.Figure:
     """Interactive 3-D view: NPL hull (surface of revolution), fins, CB/CG/confluence point."""
     h = rep["hull"]
-    x, y, z = hull_surface(h["a1"], h["a2"], h["b"])
+    x, y, z = hull_surface(h["a1"], h["a2"], h["b"], shape=rep.get("shape", "npl"))
     traces: list[dict] = [
         dict(
             type="surface",
@@ -243,7 +243,7 @@ def side_view_figure(rep: Mapping[str, Any]) -> go.Figure:
     """Side view to scale: hull outline, fins, centre of buoyancy, centre of gravity,
     confluence point and (schematic) confluence lines; nose on the left, z up."""
     h = rep["hull"]
-    xi, r = hull_outline(h["a1"], h["a2"], h["b"])
+    xi, r = hull_outline(h["a1"], h["a2"], h["b"], shape=rep.get("shape", "npl"))
     traces: list[dict] = [
         dict(
             type="scatter",

@@ -25,6 +25,7 @@ import streamlit as st
 
 from aerostat_core import FABRICS, TETHERS, Configuration, Requirement
 from aerostat_core.io import inputs_from_dict, inputs_to_dict
+from aerostat_core.shapes import SHAPE_INFO
 
 from .state import DESIGN_KEY, init_state
 
@@ -278,7 +279,8 @@ FIELDS: tuple[Field, ...] = (
         step=0.1,
         fmt="%.2f",
         help="Design variable 1: hull length / maximum diameter (NPL standard 4.0, tactical "
-        "aerostats 2.9-3.1). Valid 1.5-8.",
+        "aerostats 2.9-3.1). Valid range per shape: NPL 1.5-8, GNVR/Wang/Zhiyuan-1/Lotte 2-6, "
+        "sphere 1, oblate 0.5-0.95, Helikite 1-1.6.",
     ),
     _F(
         "in_fin_area",
@@ -472,6 +474,14 @@ FIELD_BY_KEY = {f.key: f for f in FIELDS}
 
 #: Choice widgets: key -> (path, label, options {value: shown text}, group, help).
 CHOICES: dict[str, tuple[str, str, dict[str, str], str, str]] = {
+    "in_shape": (
+        "configuration.hull.shape",
+        "Hull shape",
+        {k: v.label for k, v in SHAPE_INFO.items()},
+        "configuration",
+        "Envelope profile (Shapes page). Changing it resets l/d to the shape's standard value; "
+        "sphere, oblate and Helikite hulls carry no fins.",
+    ),
     "in_gas_kind": (
         "configuration.gas.kind",
         "Lifting gas",
@@ -679,6 +689,9 @@ def build_inputs(
     for key, (path, _label, _options, _g, _h) in CHOICES.items():
         if key in values:
             _set(d, path, values[key])
+    if _get(d, "configuration.hull.shape") != (_get(base, "configuration.hull.shape") or "npl") \
+            and values.get("in_fineness") == shown.get("in_fineness"):
+        _set(d, "configuration.hull.fineness_ratio", None)  # the new shape's standard l/d
     arrangement = _get(d, "configuration.fins.arrangement")
     _set(d, "configuration.fins.count", 3 if arrangement == "inverted-y" else 4)
     # volume
@@ -812,6 +825,7 @@ LAYOUT: dict[str, tuple[str, ...]] = {
     "requirement": ("in_payload", "in_altitude", "in_site", "in_isa"),
     "wind": ("in_design_wind", "in_blow_by", "in_wind_max", "in_wind_step", "in_min_sf"),
     "configuration": (
+        "in_shape",
         VOLUME_MODE_KEY,
         "in_volume",
         "in_fineness",

@@ -8,7 +8,7 @@ import streamlit as st
 from aerostat_core import thesis_baseline
 from aerostat_core.io import design_to_json
 from aerostat_core.report import tether_profile_rows
-from app_ui import cache, plots, state, widgets
+from app_ui import cache, plots, shapes_view, state, widgets
 from app_ui.plots import geometry_frame, mass_frame, performance_frame, performance_styler
 
 st.title("Aerostat design")
@@ -67,9 +67,7 @@ def _geometry_tab(rep: dict) -> None:
     with g2:
         st.markdown(
             "**Reading the geometry.** ξ is measured from the nose, aft positive; z is up. "
-            "The hull is the NPL double ellipsoid (nose semi-axis a1, tail semi-axis a2, "
-            "maximum radius b). The confluence point C sits below the centre of net static "
-            "lift, so the hull flies level in calm air."
+            + shapes_view.geometry_note(rep.get("shape", "npl"))
         )
         st.download_button(
             "Geometry table (CSV)",
@@ -80,6 +78,8 @@ def _geometry_tab(rep: dict) -> None:
             icon=":material/download:",
             key="dl_geometry",
         )
+    st.markdown("**Build it:** STL for CAD and cutting patterns")
+    shapes_view.export_panel(state.current_inputs_key())
 
 
 def _mass_tab(rep: dict) -> None:

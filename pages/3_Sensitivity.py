@@ -9,6 +9,7 @@ import streamlit as st
 
 from aerostat_core.optimize import VARIABLE_INFO, VARIABLES
 from app_ui import optimise_view as view
+from app_ui import shapes_view
 
 st.title("Sensitivity")
 st.caption(
@@ -163,3 +164,15 @@ else:
             icon=":material/download:",
             key="dl_sens_map",
         )
+
+st.subheader("Per hull shape", anchor=False)
+st.caption(
+    "Every shape re-sized over its own valid fineness-ratio range, the fins and everything else "
+    f"as on the Design page (current shape: {cfg.hull.shape}). The sweeps above use the current "
+    "shape; their l/d range must lie inside its valid range."
+)
+if st.button("Sweep every shape", key="sens_shapes_run", icon=":material/category:") or (
+    st.session_state.get("sens_shapes_done")
+):
+    st.session_state["sens_shapes_done"] = True
+    shapes_view.sensitivity_per_shape(inputs_json)

@@ -147,7 +147,7 @@ def test_links_between_documents_resolve() -> None:
 # --- import rules (docs/architecture.md §4) --------------------------------------------------
 
 STDLIB = set(sys.stdlib_module_names)
-CORE_THIRD_PARTY = {"numpy", "scipy", "numba", "pymoo", "moordyn"}
+CORE_THIRD_PARTY = {"numpy", "scipy", "numba", "pymoo", "moordyn", "ezdxf", "stl"}
 UI_THIRD_PARTY = {"streamlit", "plotly", "pandas", "numpy"}
 PAGE_THIRD_PARTY = {"streamlit", "pandas"}
 #: The library modules a page may import (docs/architecture.md §2.3).

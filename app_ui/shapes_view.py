@@ -1,0 +1,371 @@
+"""Shapes page and shape widgets: cached engine calls, frames and figures (no physics here).
+
+Everything numeric comes from :mod:`aerostat_core.shapes`, :mod:`aerostat_core.shape_comparison`,
+:mod:`aerostat_core.shape_optimize` and :mod:`aerostat_core.export`; this module only caches,
+tabulates and plots.
+"""
+
+from __future__ import annotations
+
+import json
+from collections.abc import Mapping
+from typing import Any
+
+import numpy as np
+import pandas as pd
+import plotly.graph_objects as go
+import streamlit as st
+
+from aerostat_core.export import design_stl, gore_csv, gore_dxf, gore_pattern, gore_svg
+from aerostat_core.io import inputs_from_dict
+from aerostat_core.shape_comparison import (
+    TABLE_SHAPES,
+    comparison_notes,
+    full_model_shape_comparison,
+    shape_dimensions_rows,
+    table_2_2_rows,
+    thesis_reference_rows,
+    thesis_shape_comparison,
+)
+from aerostat_core.shape_optimize import fineness_sweeps, optimise_shapes
+from aerostat_core.shapes import SHAPE_INFO, profile_radius_ratio
+
+from .plots import PALETTE
+
+_FONT = dict(family="sans-serif", size=13)
+_COLOURS = {k: PALETTE[i] for i, k in enumerate(TABLE_SHAPES)}
+WIND_AXIS = "Wind speed at the aerostat [m/s]"
+
+
+def _inputs(inputs_json: str):
+    return inputs_from_dict(json.loads(inputs_json))
+
+
+# --- cached engine calls -----------------------------------------------------------------------
+@st.cache_data(max_entries=4, show_spinner=False)
+def cached_comparisons() -> dict[str, Any]:
+    """Thesis-preset and full-model comparisons, their rows and the notes (plain data)."""
+    t, f = thesis_shape_comparison(), full_model_shape_comparison()
+    return {
+        "thesis": {
+            "rows": table_2_2_rows(t),
+            "wind": t.wind.tolist(),
+            "blow_by": {k: v.tolist() for k, v in t.blow_by.items()},
+        },
+        "full": {
+            "rows": table_2_2_rows(f),
+            "wind": f.wind.tolist(),
+            "blow_by": {k: v.tolist() for k, v in f.blow_by.items()},
+        },
+        "reference": thesis_reference_rows(),
+        "notes": comparison_notes(t, f),
+    }
+
+
+@st.cache_data(max_entries=4, show_spinner=False)
+def cached_library(volume: float = 100.0) -> list[dict]:
+    """:func:`aerostat_core.shape_comparison.shape_dimensions_rows` at ``volume`` [m3]."""
+    return shape_dimensions_rows(volume)
+
+
+@st.cache_data(max_entries=32, show_spinner=False)
+def cached_shape_study(inputs_json: str, objective: str) -> list[dict]:
+    """Rows of :func:`aerostat_core.shape_optimize.optimise_shapes` (SLSQP, quick) for the
+    inputs."""
+    req, cfg = _inputs(inputs_json)
+    return optimise_shapes(req, cfg, objective=objective).rows()
+
+
+@st.cache_data(max_entries=32, show_spinner=False)
+def cached_sweeps(inputs_json: str, n_points: int = 15) -> dict[str, dict[str, list]]:
+    """:func:`aerostat_core.shape_optimize.fineness_sweeps` as plain lists."""
+    req, cfg = _inputs(inputs_json)
+    out = {}
+    for s, sw in fineness_sweeps(req, cfg, n_points=n_points).items():
+        out[s] = {
+            "f": sw.fineness_ratio.tolist(),
+            "mass": sw.total_mass.tolist(),
+            "volume": sw.volume.tolist(),
+            "feasible": sw.feasible.tolist(),
+        }
+    return out
+
+
+@st.cache_data(max_entries=16, show_spinner=False)
+def cached_exports(inputs_json: str, n_gores: int, seam_mm: float) -> dict[str, bytes]:
+    """STL, DXF, SVG and CSV bytes of the design of the inputs."""
+    from aerostat_core import design
+
+    d = design(*_inputs(inputs_json))
+    p = gore_pattern(d, int(n_gores), float(seam_mm) / 1000.0)
+    return {
+        "stl": design_stl(d),
+        "dxf": gore_dxf(p),
+        "svg": gore_svg(p),
+        "csv": gore_csv(p).encode("utf-8"),
+        "area": f"{p.pattern_area:.2f} m² of gores for {p.hull_area:.2f} m² of hull",
+    }
+
+
+# --- frames ----------------------------------------------------------------------------------
+def table_frame(rows: list[dict]) -> pd.DataFrame:
+    """Table 2.2 layout: parameter rows, one column per shape."""
+    return pd.DataFrame(rows).set_index("parameter")
+
+
+def versus_frame(ours: list[dict], ref: list[dict]) -> pd.DataFrame:
+    """Our preset values next to the thesis' printed values, per shape."""
+    o = table_frame(ours)
+    r = table_frame(ref)
+    cols = {}
+    for c in r.columns:
+        cols[(c, "thesis")] = r[c]
+        cols[(c, "this model")] = o[c].reindex(r.index)
+    return pd.DataFrame(cols)
+
+
+def library_frame(rows: list[dict]) -> pd.DataFrame:
+    """The shape library at one volume, display column names with units."""
+    names = {
+        "label": "Shape",
+        "fineness_ratio": "l/d [-]",
+        "valid_fineness": "valid l/d",
+        "length_m": "Length [m]",
+        "diameter_m": "Diameter [m]",
+        "prismatic_coefficient": "C_p [-]",
+        "surface_area_m2": "Area [m²]",
+        "area_coefficient": "Area / V^(2/3) [-]",
+        "centre_of_volume_over_l": "CV / l [-]",
+        "k1": "k1 [-]",
+        "k2": "k2 [-]",
+        "k_rot": "k' [-]",
+        "source": "Source",
+    }
+    return pd.DataFrame(rows)[list(names)].rename(columns=names)
+
+
+def study_frame(rows: list[dict], objective: str) -> pd.DataFrame:
+    """Per-shape optima table."""
+    names = {
+        "label": "Shape",
+        "best": "Best",
+        "feasible": "Feasible",
+        objective: objective,
+        "fineness_ratio": "l/d [-]",
+        "area_change_pct": "ΔS_f [%]",
+        "position": "Δl_f [-]",
+        "volume_m3": "Volume [m³]",
+        "total_mass_kg": "Total mass [kg]",
+        "blow_by_m": "Blow-by [m]",
+        "method": "Method",
+        "message": "Note",
+    }
+    df = pd.DataFrame(rows)
+    return df[[k for k in names if k in df.columns]].rename(columns=names)
+
+
+# --- figures ---------------------------------------------------------------------------------
+def blow_by_figure(cmp: Mapping[str, Any], title: str) -> go.Figure:
+    """Blow-by versus wind for the three Table 2.2 hulls (Figure 2.5)."""
+    traces = [
+        dict(
+            type="scatter",
+            mode="lines",
+            x=cmp["wind"],
+            y=cmp["blow_by"][k],
+            name=TABLE_SHAPES[k][0],
+            line=dict(color=_COLOURS[k], width=2.5),
+        )
+        for k in TABLE_SHAPES
+    ]
+    return go.Figure(
+        dict(
+            data=traces,
+            layout=dict(
+                title=dict(text=title),
+                font=_FONT,
+                height=420,
+                margin=dict(l=60, r=20, t=50, b=50),
+                xaxis=dict(title=dict(text=WIND_AXIS)),
+                yaxis=dict(title=dict(text="Blow-by [m]")),
+                legend=dict(orientation="h", y=-0.2),
+            ),
+        )
+    )
+
+
+def profiles_figure(shapes: list[str] | None = None) -> go.Figure:
+    """Dimensionless profiles r/l of every shape at its standard l/d, to scale (Fig. 2.16)."""
+    x = 0.5 * (1 - np.cos(np.linspace(0, np.pi, 201)))
+    traces = []
+    for i, s in enumerate(shapes or list(SHAPE_INFO)):
+        info = SHAPE_INFO[s]
+        r = profile_radius_ratio(s, x) / info.default_fineness
+        xs = np.concatenate([x, x[::-1]])
+        ys = np.concatenate([r, -r[::-1]])
+        traces.append(
+            dict(
+                type="scatter",
+                mode="lines",
+                x=xs.tolist(),
+                y=ys.tolist(),
+                name=f"{info.label} (l/d {info.default_fineness:g})",
+                line=dict(color=PALETTE[i % len(PALETTE)], width=2),
+            )
+        )
+    return go.Figure(
+        dict(
+            data=traces,
+            layout=dict(
+                title=dict(text="Hull profiles at their standard fineness ratio (length = 1)"),
+                font=_FONT,
+                height=460,
+                margin=dict(l=60, r=20, t=50, b=50),
+                xaxis=dict(title=dict(text="Station ξ / l [-]")),
+                yaxis=dict(title=dict(text="Radius r / l [-]"), scaleanchor="x", scaleratio=1),
+                legend=dict(orientation="h", y=-0.25),
+            ),
+        )
+    )
+
+
+def sweeps_figure(sweeps: Mapping[str, Mapping[str, list]]) -> go.Figure:
+    """Total mass of the re-sized design versus l/d, one line per shape; infeasible points
+    hollow."""
+    traces = []
+    for i, (s, sw) in enumerate(sweeps.items()):
+        colour = PALETTE[i % len(PALETTE)]
+        ok = np.asarray(sw["feasible"], bool)
+        traces.append(
+            dict(
+                type="scatter",
+                mode="lines+markers",
+                x=sw["f"],
+                y=sw["mass"],
+                name=SHAPE_INFO[s].label,
+                line=dict(color=colour),
+                marker=dict(symbol=np.where(ok, "circle", "circle-open").tolist(), size=7),
+            )
+        )
+    return go.Figure(
+        dict(
+            data=traces,
+            layout=dict(
+                title=dict(text="Sized total mass versus fineness ratio, per shape"),
+                font=_FONT,
+                height=440,
+                margin=dict(l=60, r=20, t=50, b=50),
+                xaxis=dict(title=dict(text="Fineness ratio l/d [-]")),
+                yaxis=dict(title=dict(text="Total mass [kg]"), type="log"),
+                legend=dict(orientation="h", y=-0.25),
+            ),
+        )
+    )
+
+
+def geometry_note(shape: str) -> str:
+    """One sentence on how to read the geometry of a hull of ``shape`` (Design page)."""
+    info = SHAPE_INFO.get(shape, SHAPE_INFO["npl"])
+    if shape == "npl":
+        text = (
+            "The hull is the NPL double ellipsoid (nose semi-axis a1, tail semi-axis a2, "
+            "maximum radius b)."
+        )
+    elif info.streamlined:
+        text = (
+            f"The hull is the {info.label} profile ({info.source}); a1 is the station of "
+            "maximum diameter, b the maximum radius."
+        )
+    else:
+        text = (
+            f"The hull is a bluff {info.label.lower()} without fins; its tether force is "
+            "taken at the centre of buoyancy, so it trims level."
+        )
+    if info.kite:
+        text += (
+            " Kite lift and drag from the Table 2.2 reference (48 kg at 15 m/s for 100 m³); "
+            "Helikite limits (thesis Table 2.1): wind ≤ 25 m/s, payload < 30 kg, altitude "
+            "about 2 km."
+        )
+    if not info.streamlined:
+        return text
+    return text + (
+        " The confluence point C sits below the centre of net static lift, so the "
+        "hull flies level in calm air."
+    )
+
+
+# --- Streamlit pieces used by other pages ------------------------------------------------------
+def export_panel(inputs_json: str) -> None:
+    """Design page: STL of hull and fins, gore and fin patterns (DXF, SVG, CSV) downloads."""
+    c = st.columns([1, 1, 2])
+    n = c[0].number_input(
+        "Gores",
+        3,
+        64,
+        12,
+        1,
+        key="exp_gores",
+        help="Number of identical gores the hull is cut from (3-64).",
+    )
+    seam = c[1].number_input(
+        "Seam allowance [mm]",
+        0.0,
+        200.0,
+        20.0,
+        5.0,
+        key="exp_seam",
+        help="Added outside the seam line of every pattern (0-200 mm).",
+    )
+    try:
+        files = cached_exports(inputs_json, int(n), float(seam))
+    except ValueError as exc:
+        st.error(f"Cannot export the geometry: {exc}", icon=":material/error:")
+        return
+    c[2].caption(
+        f"Patterns: {files['area']}. STL in metres, body axes (x aft from the nose, "
+        "z up); DXF in metres; SVG in millimetres."
+    )
+    d = st.columns(4)
+    for col, (key, label, name, mime) in zip(
+        d,
+        (
+            ("stl", "Hull and fins (STL)", "aerostat.stl", "model/stl"),
+            ("dxf", "Gore patterns (DXF)", "gores.dxf", "application/dxf"),
+            ("svg", "Gore patterns (SVG)", "gores.svg", "image/svg+xml"),
+            ("csv", "Gore half-widths (CSV)", "gores.csv", "text/csv"),
+        ),
+    ):
+        col.download_button(
+            label,
+            files[key],
+            file_name=name,
+            mime=mime,
+            on_click="ignore",
+            icon=":material/download:",
+            key=f"dl_{key}_export",
+        )
+
+
+def sensitivity_per_shape(inputs_json: str) -> None:
+    """Sensitivity page: the l/d sweep of every shape (re-sized), as a figure and a CSV."""
+    try:
+        sw = cached_sweeps(inputs_json)
+    except ValueError as exc:
+        st.error(f"Cannot compute the shape sweeps: {exc}", icon=":material/error:")
+        return
+    st.plotly_chart(sweeps_figure(sw), key="sens_shapes")
+    rows = [
+        {"shape": s, "fineness_ratio": f, "total_mass_kg": m, "volume_m3": v, "feasible": ok}
+        for s, x in sw.items()
+        for f, m, v, ok in zip(x["f"], x["mass"], x["volume"], x["feasible"])
+    ]
+    st.download_button(
+        "Shape sweeps (CSV)",
+        pd.DataFrame(rows).to_csv(index=False),
+        file_name="sensitivity-shapes.csv",
+        mime="text/csv",
+        on_click="ignore",
+        icon=":material/download:",
+        key="dl_sens_shapes",
+    )

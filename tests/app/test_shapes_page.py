@@ -1,0 +1,78 @@
+"""Shapes page and the shape choice on the Design / Sensitivity pages (AppTest, issue 12)."""
+
+from __future__ import annotations
+
+import pytest
+
+from aerostat_core.shape_comparison import thesis_shape_comparison
+from tests.app.helpers import DESIGN_PAGE, chart, goto, messages, submit, table, trace, values
+
+SHAPES_PAGE = "pages/7_Shapes.py"
+
+
+def test_shapes_page_shows_table_2_2_and_figure_2_5(at):
+    goto(at, SHAPES_PAGE)
+    assert not at.exception, [e.value for e in at.exception]
+    fig = chart(at, "shape_fig_thesis")
+    ref = {r["key"]: r for r in thesis_shape_comparison().rows}
+    bb = {
+        name: values(trace(fig, name), "y")[-1]
+        for name in ("Helikite", "Spherical", "Streamlined (NPL, f = 2.7)")
+    }
+    assert bb["Streamlined (NPL, f = 2.7)"] < bb["Helikite"] < bb["Spherical"]
+    assert bb["Spherical"] == pytest.approx(ref["sphere"]["blow_by_at_design_wind_m"])
+    assert "shape_fig_full" in [getattr(e, "key", None) for e in at.get("plotly_chart")]
+    assert len(at.dataframe) >= 3  # library, thesis vs this model, full model
+    lib = table(at, "Shape")
+    assert len(lib) == 8 and "GNVR" in set(lib["Shape"])
+    versus = [df.value for df in at.dataframe if "Hull [kg]" in df.value.index][0]
+    assert versus.loc["Hull [kg]", ("Spherical", "thesis")] == 13.54
+    assert versus.loc["Hull [kg]", ("Spherical", "this model")] == pytest.approx(13.54, rel=0.02)
+    assert any("same blow-by ranking" in str(m.value) for m in at.markdown)
+
+
+def test_shapes_page_optimises_every_shape(at):
+    goto(at, SHAPES_PAGE)
+    at.button(key="shape_opt_run").click()
+    at.run()
+    assert not at.exception, [e.value for e in at.exception]
+    assert any("Best shape" in m for m in messages(at, "success"))
+    t = [df.value for df in at.dataframe if "Best" in df.value.columns][0]
+    assert len(t) == 8 and t["Best"].sum() == 1
+
+
+def test_design_page_shape_selector_resets_fineness_and_redraws(at):
+    assert at.selectbox(key="in_shape").value == "npl"
+    submit(at, in_shape="sphere")
+    assert not at.exception, [e.value for e in at.exception]
+    hull = at.session_state["design_inputs"]["configuration"]["hull"]
+    assert hull["shape"] == "sphere" and hull["fineness_ratio"] == 1.0
+    assert not any("not applied" in m for m in messages(at, "warning"))
+    side = chart(at, "side_view")
+    hull_trace = side["data"][0]
+    x, y = values(hull_trace, "x"), values(hull_trace, "y")
+    assert (x.max() - x.min()) == pytest.approx(2 * y.max(), rel=1e-3)  # a circle, to scale
+    names = [b.label for b in at.get("download_button")]
+    assert {
+        "Hull and fins (STL)",
+        "Gore patterns (DXF)",
+        "Gore patterns (SVG)",
+        "Gore half-widths (CSV)",
+    } <= set(names)
+
+
+def test_design_page_rejects_fineness_outside_the_shape_range(at):
+    submit(at, in_shape="gnvr")
+    submit(at, in_fineness=7.0)
+    assert any("for shape 'gnvr'" in m for m in messages(at, "error"))
+
+
+def test_sensitivity_page_has_a_per_shape_sweep(at):
+    goto(at, "pages/3_Sensitivity.py")
+    assert not at.exception, [e.value for e in at.exception]
+    at.button(key="sens_shapes_run").click()
+    at.run()
+    assert not at.exception, [e.value for e in at.exception]
+    fig = chart(at, "sens_shapes")
+    assert len(fig["data"]) == 8
+    goto(at, DESIGN_PAGE)
