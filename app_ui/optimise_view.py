@@ -61,6 +61,7 @@ from aerostat_core.sensitivity import (
 from .cache import csv_bytes
 from .plots import ACCENT, LIMIT_COLOUR, PALETTE
 from .state import current_inputs, inputs_key, save_case
+from .widgets import feedback
 
 #: Session keys of the optimisation job and the case-save feedback.
 JOB_KEY = "opt_job"
@@ -959,7 +960,7 @@ def render_results(job: Mapping[str, Any], baseline_inputs_json: str) -> None:
     )
     fb = st.session_state.pop(SAVE_MSG_KEY, None)
     if fb:
-        (st.success if fb[0] == "success" else st.error)(fb[1])
+        feedback(fb[0], fb[1])
 
 
 def problem_rows(req: Requirement, cfg: Configuration) -> list[dict[str, str]]:

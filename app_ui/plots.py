@@ -13,6 +13,7 @@ every incremental update), which mattered for the 300 ms rerun budget of the Des
 
 from __future__ import annotations
 
+import html
 from collections.abc import Mapping, Sequence
 from typing import Any
 
@@ -566,11 +567,18 @@ def tether_figure(rep: Mapping[str, Any], speeds: Sequence[float] | None = None)
 # --- comparison of saved cases --------------------------------------------------------------
 
 
+def plain_label(text: str) -> str:
+    """A user's text as a plotly label: plotly reads a subset of HTML in names (``<a href>``,
+    ``<b>``), so ``& < >`` are escaped and the text shows as typed."""
+    return html.escape(str(text), quote=False)
+
+
 def compare_performance_figure(reps: Mapping[str, Mapping[str, Any]], key: str) -> go.Figure:
     """One performance quantity versus wind speed, one line per case (limit rows marked)."""
     title, ylabel = PERF_QUANTITIES[key]
     traces: list[dict] = []
-    for k, (name, rep) in enumerate(reps.items()):
+    for k, (case, rep) in enumerate(reps.items()):
+        name = plain_label(case)
         p = rep["perf"]
         colour = PALETTE[k % len(PALETTE)]
         traces.append(_line(p["wind_speed"], p[key], name, colour, legendgroup=name))
@@ -590,7 +598,8 @@ def compare_performance_figure(reps: Mapping[str, Mapping[str, Any]], key: str) 
 def compare_tether_figure(reps: Mapping[str, Mapping[str, Any]], wind: float) -> go.Figure:
     """Tether profiles of every case at the sweep speed nearest ``wind``, to scale."""
     traces: list[dict] = []
-    for k, (name, rep) in enumerate(reps.items()):
+    for k, (case, rep) in enumerate(reps.items()):
+        name = plain_label(case)
         x, z, w = _profile_at(rep["tether"], wind)
         colour = PALETTE[k % len(PALETTE)]
         top = int(np.argmax(z))

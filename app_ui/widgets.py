@@ -740,6 +740,24 @@ def build_inputs(
 
 # --- Streamlit side -----------------------------------------------------------------------------
 
+_MD_SPECIAL = re.compile(r"([!-/:-@\[-`{-~])")
+
+
+def plain(text: Any) -> str:
+    """User text (case and file names, messages quoting them) for Streamlit's Markdown
+    elements, shown exactly as typed: every ASCII punctuation character is backslash-escaped
+    (CommonMark), so ``![i](http://...)`` is text, not an image the browser would fetch, and
+    ``:red[x]`` or ``$x$`` are not directives.
+    """
+    return _MD_SPECIAL.sub(r"\\\1", str(text))
+
+
+def feedback(level: str, text: str) -> None:
+    """Show a message (level "success", "info", "warning" or anything else for an error) as
+    plain text (see :func:`plain`)."""
+    show = {"success": st.success, "info": st.info, "warning": st.warning}.get(level, st.error)
+    show(plain(text))
+
 
 def sync_widgets(state: MutableMapping[str, Any] | None = None, *, force: bool = False) -> None:
     """Fill the form's widgets from the current inputs when those changed elsewhere (baseline

@@ -196,10 +196,10 @@ with col_in:
             "A file with a problem changes nothing.",
         )
     import_box = st.container()  # always present: the form below keeps its place
-    fb = st.session_state.get(state.IMPORT_MSG_KEY)
-    if fb and fb.get("where") == "design":
+    fb = state.pop_import_feedback("design")  # shown once: never next to a later file
+    if fb:
         with import_box:
-            (st.success if fb["level"] == "success" else st.error)(fb["text"])
+            widgets.feedback(fb["level"], fb["text"])
     widgets.input_form()
 
 # --- results -----------------------------------------------------------------------------------
@@ -309,7 +309,7 @@ with col_out:
     fb = st.session_state.pop("case_feedback", None)
     if fb:
         with case_box:
-            (st.success if fb[0] == "success" else st.error)(fb[1])
+            widgets.feedback(fb[0], fb[1])
 
     # Lazy tabs: only the open tab runs and is sent to the browser (a rerun draws 1-5 charts
     # instead of 10, which keeps "click Update design -> result" well under a second).

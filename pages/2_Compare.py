@@ -7,7 +7,8 @@ import streamlit as st
 
 from aerostat_core.io import inputs_from_dict
 from aerostat_core.report import thesis_gui_cases
-from app_ui import cache, plots, state
+from aerostat_core.validation import short
+from app_ui import cache, plots, state, widgets
 
 st.title("Compare saved cases")
 st.caption(
@@ -86,7 +87,7 @@ feedback_box = st.container()
 fb = st.session_state.pop("compare_feedback", None)
 if fb:
     with feedback_box:
-        (st.success if fb[0] == "success" else st.error)(fb[1])
+        widgets.feedback(fb[0], fb[1])
 
 cases = state.get_cases()
 
@@ -129,10 +130,10 @@ with st.expander("Cases file: export / import", icon=":material/folder_open:"):
         )
 
 import_box = st.container()
-fb = st.session_state.get(state.IMPORT_MSG_KEY)
-if fb and fb.get("where") == "compare":
+fb = state.pop_import_feedback("compare")  # shown once: never next to a later file
+if fb:
     with import_box:
-        (st.success if fb["level"] == "success" else st.error)(fb["text"])
+        widgets.feedback(fb["level"], fb["text"])
 
 if not cases:
     st.info(
@@ -170,7 +171,10 @@ for name in selected:
     try:
         reports[name] = cache.report_for(cases[name])
     except Exception as exc:  # noqa: BLE001 - never show a traceback
-        st.error(f"Case “{name}” could not be evaluated: {exc}", icon=":material/error:")
+        st.error(
+            widgets.plain(short(f"Case “{name}” could not be evaluated: {exc}")),
+            icon=":material/error:",
+        )
 
 # Lazy tabs: only the open tab runs and is sent to the browser.
 tab_table, tab_perf, tab_tether, tab_manage = st.tabs(
@@ -189,7 +193,7 @@ with tab_table:
         try:
             rows = cache.cached_comparison(cache.cases_key(sub)) if sub else []
         except Exception as exc:  # noqa: BLE001
-            st.error(f"The comparison could not be built: {exc}")
+            st.error(widgets.plain(short(f"The comparison could not be built: {exc}")))
             rows = []
         if rows:
             df = plots.comparison_frame(rows, ok, only_differences=only_diff)

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import base64
 import json
+import re
 from typing import Any
 
 import numpy as np
@@ -68,8 +69,17 @@ def metric_float(at: AppTest, label: str) -> float:
     return float(metric(at, label).replace(",", ""))
 
 
+_MD_ESCAPE = re.compile(r"\\([!-/:-@\[-`{-~])")
+
+
 def messages(at: AppTest, kind: str) -> list[str]:
-    """Texts of st.error / st.warning / st.success / st.info elements."""
+    """Texts of st.error / st.warning / st.success / st.info elements, with the Markdown
+    escapes of :func:`app_ui.widgets.plain` removed (the text the user reads)."""
+    return [_MD_ESCAPE.sub(r"\1", str(e.value)) for e in getattr(at, kind)]
+
+
+def raw_messages(at: AppTest, kind: str) -> list[str]:
+    """The Markdown source of the message elements (escapes included)."""
     return [str(e.value) for e in getattr(at, kind)]
 
 

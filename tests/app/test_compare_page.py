@@ -203,7 +203,16 @@ def test_import_cases_file_adds_with_unique_names(with_gui_cases):
     at = with_gui_cases
     text = cases_to_json(thesis_gui_cases())
     level, msg = state.handle_upload(text.encode(), "compare", at.session_state)
-    assert level == "success" and "Added 4 case(s)" in msg
+    assert level == "info" and "nothing was added" in msg  # re-importing duplicates nothing
+    at.run()
+    assert any("nothing was added" in s for s in messages(at, "info"))
+    at.run()  # the message is shown once, not left next to the next file's
+    assert not any("nothing was added" in s for s in messages(at, "info"))
+    changed = json.loads(text)
+    for case in changed["cases"].values():
+        case["requirement"]["payload_mass"] = 12.5
+    up = state.handle_upload(json.dumps(changed).encode(), "compare", at.session_state)
+    assert up[0] == "success" and "Added 4 case(s)" in up[1]
     at.run()
     assert not at.exception
     names = list(at.session_state["cases"])
