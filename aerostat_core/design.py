@@ -7,6 +7,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from . import budget
 from .airframe import Airframe, build_airframe
 from .cost import gas_fill_cost
 from .inputs import Configuration, Requirement
@@ -188,6 +189,7 @@ def design(req: Requirement | None = None, cfg: Configuration | None = None) -> 
     """
     req = Requirement() if req is None else req
     cfg = Configuration() if cfg is None else cfg
+    budget.check_design(req, cfg)
     sizing = None
     if cfg.hull.volume is None:
         sizing = size_volume(req, cfg)

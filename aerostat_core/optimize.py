@@ -62,6 +62,7 @@ from typing import Any
 
 import numpy as np
 
+from . import budget
 from .airframe import build_airframe
 from .cost import gas_fill_cost
 from .inputs import Configuration, Requirement
@@ -1738,6 +1739,7 @@ def solve(
     if setting not in SETTINGS:
         raise ValueError(f"setting = {setting!r}: choose one of {', '.join(SETTINGS)}")
     kw = {**SETTINGS[setting][solver], **overrides}
+    budget.check_optimisation(problem, solver, kw)
     return SOLVERS[solver][1](problem, seed=seed, progress=progress, stop=stop, **kw)
 
 

@@ -24,8 +24,10 @@ MAX_MESSAGE_CHARS = 400
 #: Longest rendering of a rejected value inside a message [characters].
 MAX_VALUE_CHARS = 40
 #: A strictly positive quantity (range ``(0, hi]``) must be at least this fraction of ``hi``:
-#: smaller values are degenerate (a fin area of 1e-300 m2 underflows and gives NaN blow-by).
-POSITIVE_FLOOR = 1e-6
+#: smaller values are degenerate (their squares and cubes in the geometry underflow to 0, which
+#: gave NaN blow-by for a fin area ratio of 1e-300). 1e-100 leaves every physical limit case
+#: (a gas purity of 1e-12 is almost pure air) and refuses only numbers no input means.
+POSITIVE_FLOOR = 1e-100
 
 
 def short(text: str, limit: int = MAX_MESSAGE_CHARS) -> str:
