@@ -491,8 +491,15 @@ def default_tether_speeds(wind_speed: Sequence[float], n: int = 5) -> list[float
 
 def _line(x: Any, y: Any, name: str, colour: str, **kw: Any) -> dict:
     """A solid line trace of width 2.2 in ``colour``."""
-    return dict(type="scatter", x=_l(x), y=_l(y), mode="lines", name=name,
-                line=dict(color=colour, width=2.2), **kw)
+    return dict(
+        type="scatter",
+        x=_l(x),
+        y=_l(y),
+        mode="lines",
+        name=name,
+        line=dict(color=colour, width=2.2),
+        **kw,
+    )
 
 
 def _profile_at(tether: Mapping[str, Any], speed: float) -> tuple[np.ndarray, np.ndarray, float]:
@@ -504,17 +511,28 @@ def _profile_at(tether: Mapping[str, Any], speed: float) -> tuple[np.ndarray, np
 
 def _winch_trace(label: bool) -> dict:
     """The winch at the origin (black square), optionally labelled."""
-    return dict(type="scatter", x=[0.0], y=[0.0], mode="markers+text" if label else "markers",
-                name="winch", text=["winch"] if label else None, textposition="bottom center",
-                marker=dict(symbol="square", size=12, color="#000000"))
+    return dict(
+        type="scatter",
+        x=[0.0],
+        y=[0.0],
+        mode="markers+text" if label else "markers",
+        name="winch",
+        text=["winch"] if label else None,
+        textposition="bottom center",
+        marker=dict(symbol="square", size=12, color="#000000"),
+    )
 
 
 def _to_scale_figure(traces: list[dict], title: str, **kw: Any) -> go.Figure:
     """Tether plot with equal axis scales, winch at the origin."""
     return _figure(
-        traces, title, height=560, xaxis=_axis("Downwind distance from the winch [m]"),
-        yaxis=_axis("Height above the winch [m]", scaleanchor="x", scaleratio=1,
-                    rangemode="tozero"),
+        traces,
+        title,
+        height=560,
+        xaxis=_axis("Downwind distance from the winch [m]"),
+        yaxis=_axis(
+            "Height above the winch [m]", scaleanchor="x", scaleratio=1, rangemode="tozero"
+        ),
         **kw,
     )
 

@@ -212,8 +212,17 @@ with col_out:
         )
         st.stop()
     s, lim = rep["summary"], rep["limits"]
+    # After a rejected submit the form holds values that were not applied: say whose results
+    # these are, so "meets every requirement" is never read as a verdict on the rejected values.
+    stale = bool(st.session_state.get(widgets.ERROR_KEY))
 
     st.subheader("Result", anchor=False)
+    if stale:
+        st.warning(
+            "These results are for the last valid inputs: your latest change was not applied "
+            "(see the message in the form).",
+            icon=":material/history:",
+        )
     c = st.columns(5)
     c[0].metric(
         "Volume [m³]",
@@ -271,7 +280,11 @@ with col_out:
     c[4].metric("Gas cost [USD]", _fmt(s["gas_cost_USD"], 0), help="Hull volume × gas price.")
 
     if rep["feasible"]:
-        st.success("Meets every requirement at the design wind.", icon=":material/check_circle:")
+        st.success(
+            ("The last valid inputs meet" if stale else "Meets")
+            + " every requirement at the design wind.",
+            icon=":material/check_circle:",
+        )
     else:
         st.error(
             "**Requirements not met:**\n" + "\n".join(f"- {v}" for v in rep["violations"]),

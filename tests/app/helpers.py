@@ -87,10 +87,18 @@ def submit(at: AppTest, **widget_values: Any) -> AppTest:
     """Set form widgets by key (number inputs, radios, selectboxes) and press Update design."""
     for key, value in widget_values.items():
         widget = _widget(at, key)
+        if widget.type == "text_input" and isinstance(value, (int, float)):
+            value = f"{value:g}"  # the form's number boxes are text boxes
         widget.set_value(value)
     at.button(key="in_submit").click()
     at.run()
     return at
+
+
+def field_value(at: AppTest, key: str) -> float | None:
+    """The number shown in a design-form box (text boxes: "12,5" reads as 12.5)."""
+    text = _widget(at, key).value
+    return None if not str(text).strip() else float(str(text).replace(",", "."))
 
 
 def _widget(at: AppTest, key: str):

@@ -16,6 +16,7 @@ from tests.app.helpers import (
     COMPARE_PAGE,
     DESIGN_PAGE,
     chart,
+    field_value,
     goto,
     messages,
     show_tab,
@@ -195,7 +196,7 @@ def test_open_a_case_on_the_design_page(with_gui_cases):
     assert at.session_state["design_inputs"] == at.session_state["cases"][GUI[1]]
     goto(at, DESIGN_PAGE)
     assert not at.exception
-    assert at.number_input(key="in_payload").value == 30.0
+    assert field_value(at, "in_payload") == 30.0
     assert at.radio(key="in_volume_mode").value == "sized"
 
 
