@@ -62,8 +62,14 @@ def baseline_inputs() -> dict[str, Any]:
 
 
 def init_state(state: MutableMapping[str, Any] | None = None) -> None:
-    """Create ``design_inputs`` (thesis baseline) and ``cases`` (empty) when missing."""
+    """Create ``design_inputs`` (thesis baseline) and ``cases`` (empty) when missing.
+
+    In a live session not yet bound to a workspace, bind it first: on a freshly started server
+    Streamlit can run a page script directly (``/Compare?ws=...``) before ``app.py`` has run."""
     s = _s(state)
+    if s is st.session_state and WS_KEY not in s and st.runtime.exists():
+        attach_workspace()
+        return
     if DESIGN_KEY not in s:
         s[DESIGN_KEY] = baseline_inputs()
     if CASES_KEY not in s:
@@ -102,7 +108,7 @@ def attach_workspace(
         token = s.get(WS_KEY) if _store.valid_token(s.get(WS_KEY)) else _store.new_token()
         qp[WS_PARAM] = token
     s[WS_KEY] = token
-    init_state(s)
+    init_state(s)  # WS_KEY is set: this only fills in the defaults
     try:
         current, saved = _store.get_store().load(token)
     except _store.StoreUnavailable as exc:

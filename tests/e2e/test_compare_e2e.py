@@ -92,9 +92,7 @@ def test_save_two_cases_and_compare_them(app_page: Page, console_errors: list[st
 
     # back on the Design page the inputs are still those of the last change
     goto_page(page, "Design")
-    expect(page.get_by_role("textbox", name="Payload mass [kg]", exact=True)).to_have_value(
-        "30.0"
-    )
+    expect(page.get_by_role("textbox", name="Payload mass [kg]", exact=True)).to_have_value("30")
     assert console_errors == []
 
 
