@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import streamlit as st
 
+from aerostat_core import budget
 from aerostat_core.io import inputs_from_dict
 from aerostat_core.report import thesis_gui_cases
 from aerostat_core.validation import short
@@ -13,7 +14,8 @@ from app_ui import cache, plots, state, widgets
 st.title("Compare saved cases")
 st.caption(
     "Save designs on the Design page (or load the thesis' GUI test cases) and compare them here. "
-    "Saved cases last for this browser session: download them as JSON to keep them."
+    "Saved cases are kept in this workspace: bookmark or share the page's address to come back "
+    "to them."
 )
 
 
@@ -22,6 +24,12 @@ def _load_gui_cases() -> None:
         names = state.add_cases(thesis_gui_cases())
     except ValueError as exc:  # e.g. the case limit
         st.session_state["compare_feedback"] = ("error", str(exc))
+        return
+    if not names:
+        st.session_state["compare_feedback"] = (
+            "info",
+            "The thesis' GUI test cases are saved already.",
+        )
         return
     st.session_state["compare_feedback"] = (
         "success",
@@ -39,6 +47,13 @@ def _rename() -> None:
     else:
         st.session_state["compare_feedback"] = ("success", f"Renamed “{old}” to “{used}”.")
         st.session_state["rename_to"] = ""
+        # The pickers follow the case to its new name (a stale name made the next rename fail).
+        for key in ("rename_from", "load_name"):
+            if st.session_state.get(key) == old:
+                st.session_state[key] = used
+        sel = st.session_state.get("compare_selected")
+        if isinstance(sel, list):
+            st.session_state["compare_selected"] = [used if n == old else n for n in sel]
 
 
 def _delete() -> None:
@@ -69,7 +84,8 @@ def _load_into_design() -> None:
 def _on_upload() -> None:
     uploaded = st.session_state.get("cases_upload")
     if uploaded is not None:
-        state.handle_upload(uploaded, "compare")
+        mode = st.session_state.get("import_mode", "add")
+        state.handle_upload(uploaded, "compare", mode=mode if mode in state.IMPORT_MODES else "add")
 
 
 top = st.columns([1, 1, 2], vertical_alignment="center")
@@ -119,6 +135,15 @@ with st.expander("Cases file: export / import", icon=":material/folder_open:"):
             "results and the performance at that wind. Units are in the column names.",
         )
     with c2:
+        st.radio(
+            "Importing a cases file",
+            state.IMPORT_MODES,
+            format_func={"add": "adds its cases", "replace": "replaces every saved case"}.get,
+            key="import_mode",
+            horizontal=True,
+            help="Add: cases identical to saved ones are skipped, other names that are taken "
+            "get a number. Replace: the file's cases become the saved cases.",
+        )
         st.file_uploader(
             "Upload a cases or design file (JSON)",
             type=["json"],
@@ -166,6 +191,11 @@ if not selected:
     st.info("Choose at least one case to compare.")
     st.stop()
 
+try:  # the whole comparison against the compute budget, before any case is computed
+    budget.check_cases({n: cases[n] for n in selected})
+except budget.BudgetError as exc:
+    st.error(widgets.plain(str(exc)), icon=":material/speed:")
+    st.stop()
 reports: dict[str, dict] = {}
 for name in selected:
     try:

@@ -4,12 +4,13 @@ and tether profiles, thesis GUI test cases, rename/delete/load, cases-file impor
 from __future__ import annotations
 
 import json
+from dataclasses import replace
 
 import numpy as np
 import pytest
 
-from aerostat_core import design
-from aerostat_core.io import cases_to_json, inputs_from_dict
+from aerostat_core import design, thesis_baseline
+from aerostat_core.io import cases_to_json, inputs_from_dict, inputs_to_dict
 from aerostat_core.report import thesis_gui_cases
 from app_ui import state
 from tests.app.helpers import (
@@ -19,6 +20,7 @@ from tests.app.helpers import (
     field_value,
     goto,
     messages,
+    raw_messages,
     show_tab,
     submit,
     table,
@@ -170,6 +172,68 @@ def test_rename_and_refuse_duplicates(with_gui_cases):
     _button(at, "Rename").click().run()
     assert any("exists already" in e for e in messages(at, "error"))
     assert "thirty kilos" in at.session_state["cases"]
+
+
+def test_a_rename_updates_the_pickers_and_a_second_rename_works(with_gui_cases):
+    at = with_gui_cases
+    tab(at, "Manage cases")
+    at.selectbox(key="rename_from").set_value(GUI[1])
+    at.text_input(key="rename_to").set_value("first rename")
+    _button(at, "Rename").click().run()
+    assert at.selectbox(key="rename_from").value == "first rename"
+    assert "first rename" in at.multiselect(key="compare_selected").value
+    assert GUI[1] not in at.selectbox(key="rename_from").options
+    at.text_input(key="rename_to").set_value("second rename")  # the picker already shows it
+    _button(at, "Rename").click().run()
+    assert not at.exception
+    assert list(at.session_state["cases"])[1] == "second rename"
+    assert at.selectbox(key="rename_from").value == "second rename"
+    assert any("Renamed “first rename” to “second rename”" in m for m in messages(at, "success"))
+
+
+def test_loading_the_gui_cases_twice_adds_nothing(with_gui_cases):
+    at = with_gui_cases
+    _button(at, "Load the thesis' GUI test cases").click().run()
+    assert not at.exception
+    assert len(at.session_state["cases"]) == 4
+    assert any("saved already" in m for m in messages(at, "info"))
+
+
+def test_import_can_replace_the_saved_cases(with_gui_cases):
+    at = with_gui_cases
+    assert at.radio(key="import_mode").value == "add"
+    one = {GUI[0]: at.session_state["cases"][GUI[0]]}
+    level, msg = state.handle_upload(
+        cases_to_json(one).encode(), "compare", at.session_state, mode="replace"
+    )
+    assert level == "success" and "Replaced" in msg
+    at.run()
+    assert list(at.session_state["cases"]) == [GUI[0]]
+
+
+def test_a_comparison_over_the_compute_budget_is_a_message(compare):
+    at = compare
+    req, cfg = thesis_baseline()
+    big = inputs_to_dict(req, replace(cfg, tether_segments=2000))
+    state.add_cases({f"big {i}": big for i in range(12)}, at.session_state)
+    at.run()
+    assert not at.exception
+    assert any("units of work" in e and "fewer cases" in e for e in messages(at, "error"))
+
+
+def test_hostile_case_names_show_as_plain_text(compare):
+    at = compare
+    name = "![i](http://example.invalid/x.png) *bold* <b>b</b>"
+    state.save_case(name, *thesis_baseline(), at.session_state)
+    at.run()
+    assert not at.exception
+    tab(at, "Performance")
+    fig = chart(at, "cmp_blow_by")
+    assert (
+        fig["data"][0]["name"] == "![i](http://example.invalid/x.png) *bold* &lt;b&gt;b&lt;/b&gt;"
+    )
+    raw = [m for m in raw_messages(at, "success") + raw_messages(at, "error") if "example" in m]
+    assert all("\\!\\[i\\]" in m for m in raw)
 
 
 def test_delete_cases(with_gui_cases):
