@@ -223,7 +223,7 @@ with col_out:
             "(see the message in the form).",
             icon=":material/history:",
         )
-    c = st.columns(5)
+    c = widgets.metric_row(5)
     c[0].metric(
         "Volume [m³]",
         _fmt(s["volume_m3"]),
@@ -249,7 +249,7 @@ with col_out:
         f"({s['percent_static_lift']:.0f} % of the gross buoyancy).",
     )
     st.caption(f"At the design wind, {lim['design_wind']:g} m/s:")
-    c = st.columns(5)
+    c = widgets.metric_row(5)
     bb = s["blow_by_at_design_wind_m"]
     c[0].metric(
         "Blow-by [m]",
