@@ -548,7 +548,8 @@ def _layout(fig: go.Figure, title: str, **kw: Any) -> go.Figure:
         title=dict(text=title, font=dict(size=15)),
         font=_FONT,
         margin=dict(l=60, r=20, t=60, b=50),
-        legend=dict(orientation="h", y=-0.15),
+        # Legend right of the plot: below it, it sat on the x-axis title.
+        legend=dict(orientation="v", x=1.02, xanchor="left", y=1.0, yanchor="top"),
         **kw,
     )
     return fig
@@ -813,7 +814,11 @@ def pareto_figure(
     )
     fig.update_xaxes(title_text="Blow-by at the design wind [m]")
     fig.update_yaxes(title_text=f"{lab} [{unit(u)}]", secondary_y=False)
-    fig.update_yaxes(title_text="Gas fill cost [USD]", secondary_y=True, showgrid=False)
+    # tickmode "auto": plotly.js syncs an overlaying axis to the primary grid by default, which
+    # gave ticks such as 5.12 / 10.23 / 15.35.
+    fig.update_yaxes(
+        title_text="Gas fill cost [USD]", secondary_y=True, showgrid=False, tickmode="auto"
+    )
     return _layout(fig, f"Trade-off: least {lab.lower()} for each blow-by limit", height=500)
 
 

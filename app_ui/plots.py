@@ -434,8 +434,14 @@ def tension_figure(rep: Mapping[str, Any]) -> go.Figure:
         height=380,
         xaxis=_axis(WIND_AXIS),
         yaxis=_axis("Tether tension [N]", rangemode="tozero"),
+        # tickmode "auto": an overlaying axis otherwise syncs to the primary grid (5.12, 10.23)
         yaxis2=_axis(
-            "Safety factor [-]", overlaying="y", side="right", rangemode="tozero", showgrid=False
+            "Safety factor [-]",
+            overlaying="y",
+            side="right",
+            rangemode="tozero",
+            showgrid=False,
+            tickmode="auto",
         ),
     )
 
@@ -502,8 +508,31 @@ def _line(x: Any, y: Any, name: str, colour: str, **kw: Any) -> dict:
     )
 
 
+def tether_speeds(tether: Mapping[str, Any]) -> list[float]:
+    """Speeds with a tether profile [m/s]: the sweep's, and the design wind (its own profile,
+    also when the sweep steps over it)."""
+    speeds = {float(v) for v in tether["wind_speed"]}
+    design = tether.get("design")
+    if design is not None:
+        speeds.add(float(design["wind"]))
+    return sorted(speeds)
+
+
+def default_profile_speeds(tether: Mapping[str, Any], n: int = 5) -> list[float]:
+    """:func:`default_tether_speeds` of the sweep, plus the design wind."""
+    chosen = set(default_tether_speeds([float(v) for v in tether["wind_speed"]], n))
+    design = tether.get("design")
+    if design is not None and float(design["wind"]) > 0:
+        chosen.add(float(design["wind"]))
+    return sorted(chosen)
+
+
 def _profile_at(tether: Mapping[str, Any], speed: float) -> tuple[np.ndarray, np.ndarray, float]:
-    """Tether profile (x, z) [m] at the sweep speed nearest ``speed``, and that speed [m/s]."""
+    """Tether profile (x, z) [m] at the sweep speed nearest ``speed`` (or the design wind's own
+    profile when ``speed`` is the design wind), and that speed [m/s]."""
+    design = tether.get("design")
+    if design is not None and abs(float(speed) - float(design["wind"])) < 1e-9:
+        return np.asarray(design["x"]), np.asarray(design["z"]), float(design["wind"])
     ws = np.asarray(tether["wind_speed"], float)
     j = int(np.argmin(np.abs(ws - speed)))
     return np.asarray(tether["x"])[:, j], np.asarray(tether["z"])[:, j], float(ws[j])
@@ -680,6 +709,20 @@ def geometry_frame(rows: Sequence[Mapping[str, Any]]) -> pd.DataFrame:
             "Unit": [_UNIT_TEXT.get(r["unit"], r["unit"]) for r in rows],
         }
     )
+
+
+def geometry_styler(df: pd.DataFrame) -> Styler:
+    """The geometry table with each value in its own format: counts as integers ("4", not
+    "4.000"), the hull volume with the headline metric's 1 decimal, the rest with 3."""
+    styler = df.style
+    for i, q in zip(df.index, df["Quantity"]):
+        fmt = "{:.0f}" if str(q).startswith("Number") else VALUE_FORMATS.get(str(q), "{:.3f}")
+        styler = styler.format(fmt, subset=pd.IndexSlice[[i], ["Value"]])
+    return styler
+
+
+#: Display format of quantities shown in more than one place (the same precision everywhere).
+VALUE_FORMATS = {"Hull volume": "{:,.1f}", "Hull length l": "{:.2f}", "Hull diameter d": "{:.2f}"}
 
 
 def mass_frame(rows: Sequence[Mapping[str, Any]]) -> pd.DataFrame:

@@ -914,6 +914,43 @@ def plain(text: Any) -> str:
     return _MD_SPECIAL.sub(r"\\\1", str(text))
 
 
+def signed(x: float, digits: int = 1) -> str:
+    """``x`` with its sign, rounded, never "-0.0" (a delta that rounds to zero is "0.0").
+
+    >>> signed(-0.04), signed(2.345, 2), signed(-3.0), signed(0.0)
+    ('0.0', '+2.35', '-3.0', '0.0')
+    """
+    r = round(float(x), digits)
+    if r == 0:
+        return f"{0:.{digits}f}"
+    return f"{r:+.{digits}f}"
+
+
+def speed_ranges(speeds: Any, step: float | None = None) -> str:
+    """Wind speeds as ranges: consecutive sweep points (``step`` apart, or the smallest gap)
+    collapse into "a–b".
+
+    >>> speed_ranges([0, 1, 2, 3, 7, 8, 9, 12])
+    '0–3, 7–9, 12'
+    >>> speed_ranges([0.5, 1.0, 1.5, 4.0], 0.5)
+    '0.5–1.5, 4'
+    """
+    v = sorted({float(s) for s in speeds})
+    if not v:
+        return ""
+    if step is None:
+        gaps = [b - a for a, b in zip(v, v[1:])]
+        step = min(gaps) if gaps else 1.0
+    parts, start, prev = [], v[0], v[0]
+    for s in v[1:]:
+        if s - prev > 1.5 * step:
+            parts.append(f"{start:g}" if start == prev else f"{start:g}–{prev:g}")
+            start = s
+        prev = s
+    parts.append(f"{start:g}" if start == prev else f"{start:g}–{prev:g}")
+    return ", ".join(parts)
+
+
 class _MetricSlot:
     """One place in a :func:`metric_row`: ``.metric(...)`` sized to its content."""
 

@@ -57,11 +57,10 @@ def _geometry_tab(rep: dict) -> None:
     g1, g2 = st.columns([1.2, 1])
     with g1:
         st.dataframe(
-            geometry_frame(rep["geometry_rows"]),
+            plots.geometry_styler(geometry_frame(rep["geometry_rows"])),
             hide_index=True,
             width="stretch",
             height=460,
-            column_config={"Value": st.column_config.NumberColumn(format="%.3f")},
             key="geometry_table",
         )
     with g2:
@@ -138,8 +137,8 @@ def _performance_tab(rep: dict) -> None:
 def _tether_tab(rep: dict) -> None:
     @st.fragment
     def _tether_panel() -> None:
-        speeds = [float(v) for v in rep["tether"]["wind_speed"]]
-        default = plots.default_tether_speeds(speeds)
+        speeds = plots.tether_speeds(rep["tether"])  # the sweep and the design wind
+        default = plots.default_profile_speeds(rep["tether"])
         chosen = st.multiselect(
             "Wind speeds to show [m/s]",
             speeds,
@@ -254,7 +253,7 @@ with col_out:
     c[0].metric(
         "Blow-by [m]",
         _fmt(bb),
-        delta=f"{bb - lim['blow_by_limit']:+.1f} m",
+        delta=f"{widgets.signed(bb - lim['blow_by_limit'], 1)} m",
         delta_color="inverse",
         help=f"Downwind offset of the confluence point from the winch; limit "
         f"{lim['blow_by_limit']:g} m (the delta is blow-by minus limit).",
@@ -273,7 +272,7 @@ with col_out:
     c[3].metric(
         "Safety factor [-]",
         _fmt(sf, 2),
-        delta=f"{sf - lim['min_safety_factor']:+.2f}",
+        delta=widgets.signed(sf - lim["min_safety_factor"], 2),
         help="Tether breaking strength / largest tension along the tether; required "
         f"{lim['min_safety_factor']:g} (the delta is the margin).",
     )
@@ -291,10 +290,11 @@ with col_out:
             icon=":material/error:",
         )
     p = rep["perf"]
-    lim_speeds = [f"{v:g}" for v, flag in zip(p["wind_speed"], p["limited"]) if flag]
+    lim_speeds = [float(v) for v, flag in zip(p["wind_speed"], p["limited"]) if flag]
     if lim_speeds:
         st.warning(
-            f"Operating limits exceeded in the sweep at {', '.join(lim_speeds)} m/s "
+            f"Operating limits exceeded in the sweep at "
+            f"{widgets.speed_ranges(lim_speeds, rep['inputs']['requirement']['wind_step'])} m/s "
             "(marked in red in the table and plots).",
             icon=":material/warning:",
         )

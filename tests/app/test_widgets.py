@@ -332,3 +332,51 @@ def test_every_requirement_field_is_one_table_entry():
     paths = {f.path for f in FIELDS}
     for fld in fields(Requirement):
         assert f"requirement.{fld.name}" in paths, f"Requirement.{fld.name} has no form field"
+
+
+def test_signed_never_shows_minus_zero():
+    from app_ui.widgets import signed
+
+    assert [signed(v) for v in (-0.04, -0.0, 0.04, -3.0, 2.25)] == [
+        "0.0",
+        "0.0",
+        "0.0",
+        "-3.0",
+        "+2.2",
+    ]
+
+
+def test_wind_lists_collapse_into_ranges():
+    from app_ui.widgets import speed_ranges
+
+    assert speed_ranges([0, 1, 2, 3, 4, 5, 17, 18, 19, 20], 1.0) == "0–5, 17–20"
+    assert speed_ranges([0.0, 0.1, 0.2, 0.3, 5.0], 0.1) == "0–0.3, 5"
+    assert speed_ranges([7]) == "7"
+
+
+def test_tether_speeds_include_the_design_wind():
+    req, cfg = thesis_baseline()
+    rep = design_report(design(replace(req, wind_step=2.0, design_wind=15.0), cfg))
+    assert 15.0 not in [float(v) for v in rep["tether"]["wind_speed"]]  # the sweep skips it
+    assert 15.0 in plots.tether_speeds(rep["tether"])
+    assert 15.0 in plots.default_profile_speeds(rep["tether"])
+    fig = plots.tether_figure(rep, [14.0, 15.0])
+    names = [t.name for t in fig.data]
+    assert "15 m/s" in names and "14 m/s" in names
+    x15 = np.asarray(next(t for t in fig.data if t.name == "15 m/s").x)
+    assert np.allclose(x15, rep["tether"]["design"]["x"])
+    assert max(x15) == pytest.approx(rep["summary"]["blow_by_at_design_wind_m"], abs=0.05)
+
+
+def test_geometry_counts_are_integers_and_volume_matches_the_metric(rep):
+    html = plots.geometry_styler(plots.geometry_frame(rep["geometry_rows"])).to_html()
+    import re
+
+    assert re.search(r"Number of fins</td>\s*<td[^>]*>4</td>", html)
+    assert re.search(r"Hull volume</td>\s*<td[^>]*>170.0</td>", html)  # the metric's precision
+    assert re.search(r"Fineness ratio l/d</td>\s*<td[^>]*>4.000</td>", html)
+
+
+def test_secondary_axes_have_round_ticks(rep):
+    fig = plots.tension_figure(rep)
+    assert fig.layout.yaxis2.tickmode == "auto"  # not synced to the primary grid
