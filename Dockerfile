@@ -1,6 +1,8 @@
 # Aerostat design tool: the Streamlit app on port 8501.
 #   docker build -t aerostat-design .
-#   docker run --rm -p 8501:8501 aerostat-design
+#   docker run --rm -p 8501:8501 -v aerostat-data:/data aerostat-design
+# Saved workspaces live in /data (a volume: they survive a new container). A team deployment
+# with several replicas sets AEROSTAT_DATABASE_URL=postgresql+psycopg://user:password@host/db.
 FROM python:3.11-slim
 
 # One BLAS/OpenMP thread: small linear algebra ran up to 20x slower with threaded BLAS on 2 cores.
@@ -11,7 +13,8 @@ ENV OPENBLAS_NUM_THREADS=1 \
     PIP_NO_CACHE_DIR=1 \
     PIP_DISABLE_PIP_VERSION_CHECK=1 \
     STREAMLIT_BROWSER_GATHER_USAGE_STATS=false \
-    NUMBA_CACHE_DIR=/var/cache/numba
+    NUMBA_CACHE_DIR=/var/cache/numba \
+    AEROSTAT_DATA_DIR=/data
 
 RUN groupadd --system --gid 10001 app \
     && useradd --system --uid 10001 --gid app --create-home --home-dir /home/app \
@@ -31,6 +34,10 @@ COPY . .
 RUN mkdir -p /var/cache/numba \
     && python -c "from aerostat_core.dynamics import warm_up; warm_up()" \
     && chown -R 10001:10001 /var/cache/numba
+
+# The workspace database (SQLite, WAL) in a volume owned by the app user.
+RUN mkdir -p /data && chown 10001:10001 /data
+VOLUME ["/data"]
 
 # Numeric uid (the "app" user above): lets runtimes check runAsNonRoot without reading /etc/passwd.
 USER 10001:10001

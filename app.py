@@ -8,7 +8,8 @@ from pathlib import Path
 
 import streamlit as st
 
-from app_ui.state import init_state
+from app_ui.errors import report_unexpected
+from app_ui.state import STORE_ERR_KEY, attach_workspace
 
 HERE = Path(__file__).resolve().parent
 
@@ -29,7 +30,8 @@ st.set_page_config(
     layout="wide",
     initial_sidebar_state="expanded",
 )
-init_state()
+# Binds this session to the workspace in the URL (?ws=...) and loads its saved cases.
+attach_workspace()
 
 pages = [
     st.Page(str(HERE / path), title=title, icon=icon, default=(i == 0))
@@ -38,4 +40,14 @@ pages = [
 ]
 with st.sidebar:
     st.caption("Tethered aerostat design · Mahmood (2020) method, rebuilt from public sources")
-st.navigation(pages).run()
+    st.caption(
+        "Your inputs and saved cases are kept in this workspace: bookmark or share this page's "
+        "address to come back to them."
+    )
+store_error = st.session_state.get(STORE_ERR_KEY)
+if store_error:
+    st.warning(store_error, icon=":material/database:")
+try:
+    st.navigation(pages).run()
+except Exception as exc:  # noqa: BLE001 - the error boundary: never a traceback on screen
+    report_unexpected(exc)

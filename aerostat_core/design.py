@@ -7,6 +7,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from . import budget
 from .airframe import Airframe, build_airframe
 from .constraints import NAMES as CONSTRAINT_NAMES
 from .constraints import ConstraintState, constraint_state, wind_flags
@@ -203,6 +204,7 @@ def design(req: Requirement | None = None, cfg: Configuration | None = None) -> 
     """
     req = (Requirement() if req is None else req).resolved()
     cfg = rules_configuration(req.rules) if cfg is None else cfg
+    budget.check_design(req, cfg)
     sizing = None
     if cfg.hull.volume is None:
         sizing = size_volume(req, cfg)

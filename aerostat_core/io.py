@@ -33,7 +33,7 @@ from .inputs import (
     WindProfile,
 )
 from .materials import Fabric, TetherSpec
-from .validation import check_name
+from .validation import check_name, shown_value
 
 FORMAT_DESIGN = "aerostat-design"
 FORMAT_CASES = "aerostat-cases"
@@ -113,11 +113,11 @@ def inputs_from_dict(data: Any) -> tuple[Requirement, Configuration]:
 
     >>> r, c = inputs_from_dict({"requirement": {"payload_mass": 30}})
     >>> r.payload_mass, c.hull.fineness_ratio
-    (30, 4.0)
+    (30.0, 4.0)
     >>> inputs_from_dict({"requirement": {"payload_mass": "heavy"}})
     Traceback (most recent call last):
     ...
-    ValueError: Requirement.payload_mass = 'heavy' is not a number; valid range (0, 500] kg
+    aerostat_core.validation.InputError: Requirement.payload_mass = 'heavy' is not a number; valid range (0, 500] kg
     """
     if not isinstance(data, dict):
         raise ValueError("a design must be a JSON object with 'requirement' and 'configuration'")
@@ -201,22 +201,43 @@ def cases_from_json(text: str | bytes) -> dict[str, dict[str, Any]]:
     out: dict[str, dict[str, Any]] = {}
     for name, case in cases.items():
         if not isinstance(name, str) or not name.strip() or len(name) > 100:
-            raise ValueError(f"case name {name!r} must be 1-100 characters")
+            raise ValueError(f"case name {shown_value(name)} must be 1-100 characters")
+        name = check_name("case", "name", name)  # no control characters or lone surrogates
         try:
             req, cfg = inputs_from_dict(case)
         except ValueError as exc:
-            raise ValueError(f"case {name!r}: {exc}") from None
+            raise ValueError(f"case {shown_value(name)}: {exc}") from None
         out[name] = inputs_to_dict(req, cfg)
     return out
 
 
+#: First characters that make a spreadsheet read a cell as a formula (OWASP, "CSV Injection"),
+#: plus tab and carriage return, which some spreadsheets strip before looking.
+_FORMULA_START = ("=", "+", "-", "@", "\t", "\r")
+
+
+def csv_safe(value: Any) -> Any:
+    """A CSV cell that no spreadsheet runs as a formula: text beginning with ``= + - @`` (or tab
+    or carriage return) gets a leading apostrophe, as OWASP advises; numbers stay numbers, so a
+    negative value is written as ``-5`` and still reads as a number.
+
+    >>> csv_safe("=cmd|' /C calc'!A0"), csv_safe("-2+3"), csv_safe(-2.5), csv_safe("x")
+    ("'=cmd|' /C calc'!A0", "'-2+3", -2.5, 'x')
+    """
+    if isinstance(value, str) and value.startswith(_FORMULA_START):
+        return "'" + value
+    return value
+
+
 def rows_to_csv(rows: list[dict[str, Any]]) -> str:
-    """CSV text of a list of flat dicts (columns from the first row, in order)."""
+    """CSV text of a list of flat dicts (columns from the first row, in order). Text cells and
+    headers are passed through :func:`csv_safe` against formula injection."""
     buf = _io.StringIO()
     if not rows:
         return ""
-    writer = csv.DictWriter(buf, fieldnames=list(rows[0].keys()), lineterminator="\n")
-    writer.writeheader()
+    names = list(rows[0].keys())
+    writer = csv.writer(buf, lineterminator="\n")
+    writer.writerow([csv_safe(str(n)) for n in names])
     for row in rows:
-        writer.writerow(row)
+        writer.writerow([csv_safe(row.get(n, "")) for n in names])
     return buf.getvalue()

@@ -55,6 +55,7 @@ from typing import Any
 
 import numpy as np
 
+from . import budget
 from .airframe import build_airframe
 from .constraints import CONSTRAINTS as CONSTRAINT_TABLE
 from .constraints import NAMES as CONSTRAINT_NAMES
@@ -1700,6 +1701,7 @@ def solve(
     if setting not in SETTINGS:
         raise ValueError(f"setting = {setting!r}: choose one of {', '.join(SETTINGS)}")
     kw = {**SETTINGS[setting][solver], **overrides}
+    budget.check_optimisation(problem, solver, kw)
     return SOLVERS[solver][1](problem, seed=seed, progress=progress, stop=stop, **kw)
 
 

@@ -17,6 +17,7 @@ from typing import Any
 
 import numpy as np
 
+from . import budget
 from .design import Design, design
 from .fins import ARRANGEMENT_ANGLES_DEG
 from .geometry import radius
@@ -416,6 +417,7 @@ SUMMARY_FIELDS: tuple[tuple[str, str, str], ...] = (
 
 def case_designs(cases: Mapping[str, Mapping[str, Any]]) -> dict[str, Design]:
     """Design every saved case (inputs dicts), in order. Raises ``ValueError`` naming the case."""
+    budget.check_cases(cases)
     out = {}
     for name, inputs in cases.items():
         try:

@@ -21,6 +21,7 @@ from typing import Any
 
 import numpy as np
 
+from . import budget
 from .inputs import Configuration, Requirement
 from .optimize import DEFAULT_BOUNDS, VARIABLE_INFO, VARIABLES, DesignBatch, _check_bounds
 from .optimize import evaluate_designs as _evaluate
@@ -204,6 +205,7 @@ def one_at_a_time(
     req = req.resolved()
     rng = _ranges(ranges)
     n = _check_points(n_points)
+    budget.check(cfg.tether_segments, 1, 3 * n + 1, "These sweeps")
     x0 = baseline_variables(cfg)
     vol = None if resize else baseline_volume(req, cfg)
     values = {}
@@ -325,6 +327,7 @@ def two_variable_map(
         raise ValueError(f"the map needs two different variables (both are {x_variable!r})")
     rng = _ranges(ranges)
     k = _check_points(n, "n")
+    budget.check(cfg.tether_segments, 1, k * k, "This map")
     x0 = baseline_variables(cfg)
     xs = np.linspace(*rng[x_variable], k)
     ys = np.linspace(*rng[y_variable], k)

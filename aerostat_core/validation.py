@@ -1,9 +1,117 @@
-"""Input checks shared by every dataclass: one message format naming field, value and range."""
+"""Input checks shared by every dataclass: one message format naming field, value and range.
+
+A rejected value raises :class:`InputError`, a ``ValueError`` that also carries the details as
+attributes (owner, field, value, valid range, unit, label), so that a user interface can show its
+own label and unit instead of the internal names. The message text is unchanged from the plain
+``ValueError`` these helpers used to raise: ``Requirement.payload_mass = -1 kg is outside the
+valid range (0, 500] kg``.
+
+The number checks also store the value back as a ``float`` (``int`` for :func:`check_int`) on the
+frozen dataclass being validated, so a ``Fraction``, ``Decimal``-free ``numbers.Real`` or numpy
+scalar given to a constructor never survives into JSON export or the cache key.
+"""
 
 from __future__ import annotations
 
 import math
+import sys
+import unicodedata
+from dataclasses import is_dataclass
 from numbers import Real
+
+#: Longest message an :class:`InputError` (or :func:`short`) produces [characters].
+MAX_MESSAGE_CHARS = 400
+#: Longest rendering of a rejected value inside a message [characters].
+MAX_VALUE_CHARS = 40
+#: A strictly positive quantity (range ``(0, hi]``) must be at least this fraction of ``hi``:
+#: smaller values are degenerate (their squares and cubes in the geometry underflow to 0, which
+#: gave NaN blow-by for a fin area ratio of 1e-300). 1e-100 leaves every physical limit case
+#: (a gas purity of 1e-12 is almost pure air) and refuses only numbers no input means.
+POSITIVE_FLOOR = 1e-100
+
+
+def short(text: str, limit: int = MAX_MESSAGE_CHARS) -> str:
+    """``text`` cut to ``limit`` characters (with an ellipsis), for messages shown to a user.
+
+    >>> short("x" * 10, 5)
+    'xxxx…'
+    """
+    text = str(text)
+    return text if len(text) <= limit else text[: limit - 1] + "…"
+
+
+def shown_value(value: object) -> str:
+    """``repr(value)``, shortened to :data:`MAX_VALUE_CHARS` (a 900 kB string stays short)."""
+    try:
+        text = repr(value)
+    except Exception:  # noqa: BLE001 - a hostile __repr__ must not hide the real error
+        text = f"<{type(value).__name__}>"
+    return text if len(text) <= MAX_VALUE_CHARS else text[: MAX_VALUE_CHARS - 3] + "..."
+
+
+class InputError(ValueError):
+    """A rejected input, with the details a form needs to say what is wrong in its own words.
+
+    Attributes
+    ----------
+    owner, field : str
+        Internal names, e.g. ``"Requirement"``, ``"payload_mass"``.
+    value : object
+        The rejected value (as given).
+    lo, hi : float or None
+        Valid range, when the field has one.
+    lo_open, hi_open : bool
+        Whether the bounds are excluded.
+    unit : str
+        Unit of the value and the range, e.g. ``"kg"``.
+    label : str
+        Readable name of the field ("payload mass"); a form may show its own label instead.
+    reason : str
+        The message without the ``owner.field = value`` prefix, e.g. ``"is not a number"``.
+    """
+
+    def __init__(
+        self,
+        message: str,
+        *,
+        owner: str = "",
+        field: str = "",
+        value: object = None,
+        lo: float | None = None,
+        hi: float | None = None,
+        lo_open: bool = False,
+        hi_open: bool = False,
+        unit: str = "",
+        reason: str = "",
+    ) -> None:
+        super().__init__(short(message))
+        self.owner, self.field, self.value = owner, field, value
+        self.lo, self.hi, self.lo_open, self.hi_open = lo, hi, lo_open, hi_open
+        self.unit = unit
+        self.label = field.replace("_", " ")
+        self.reason = short(reason or message)
+
+    @property
+    def valid_range(self) -> str:
+        """The valid range as text, e.g. ``"(0, 500] kg"``; empty when there is none."""
+        if self.lo is None or self.hi is None:
+            return ""
+        return _range_text(self.lo, self.hi, self.unit, self.lo_open, self.hi_open)
+
+
+def _range_text(lo: float, hi: float, unit: str, lo_open: bool, hi_open: bool) -> str:
+    u = f" {unit}" if unit else ""
+    return f"{'(' if lo_open else '['}{lo:g}, {hi:g}{')' if hi_open else ']'}{u}"
+
+
+def _store_back(field: str, given: object, converted: object) -> None:
+    """Replace ``self.<field>`` by its converted value in the ``__post_init__`` that called the
+    check (two frames up), so every dataclass gets the conversion without repeating it."""
+    if type(given) is type(converted):
+        return
+    obj = sys._getframe(2).f_locals.get("self")
+    if obj is not None and is_dataclass(obj) and getattr(obj, field, None) is given:
+        object.__setattr__(obj, field, converted)
 
 
 def check_number(
@@ -17,7 +125,10 @@ def check_number(
     lo_open: bool = False,
     hi_open: bool = False,
 ) -> float:
-    """Return ``value`` as float or raise ``ValueError`` naming the field, value and valid range.
+    """Return ``value`` as float or raise :class:`InputError` naming the field, value and range.
+
+    A value given as another ``numbers.Real`` (``int``, ``Fraction``, numpy scalar) is also
+    stored back on the dataclass being validated as a ``float``.
 
     Parameters
     ----------
@@ -26,7 +137,8 @@ def check_number(
     value : object
         The value to check; must be a real, finite number (``bool`` is rejected).
     lo, hi : float
-        Bounds of the valid range.
+        Bounds of the valid range. For ``(0, hi]`` the value must also be at least
+        ``POSITIVE_FLOOR * hi`` (smaller is degenerate: it underflows in the geometry).
     unit : str
         Unit shown in the message, e.g. ``"kg"``.
     lo_open, hi_open : bool
@@ -39,72 +151,120 @@ def check_number(
     >>> check_number("Requirement", "payload_mass", -1, 0, 500, "kg", lo_open=True)
     Traceback (most recent call last):
     ...
-    ValueError: Requirement.payload_mass = -1 kg is outside the valid range (0, 500] kg
+    aerostat_core.validation.InputError: Requirement.payload_mass = -1 kg is outside the valid range (0, 500] kg
     """
     u = f" {unit}" if unit else ""
-    rng = f"{'(' if lo_open else '['}{lo:g}, {hi:g}{')' if hi_open else ']'}{u}"
+    rng = _range_text(lo, hi, unit, lo_open, hi_open)
+    info = dict(owner=owner, field=field, value=value, lo=lo, hi=hi, unit=unit)
+    info.update(lo_open=lo_open, hi_open=hi_open)
+
+    def fail(shown: str, reason: str) -> InputError:
+        return InputError(f"{owner}.{field} = {shown} {reason}", reason=reason, **info)
+
     if isinstance(value, bool) or not isinstance(value, Real):
-        raise ValueError(f"{owner}.{field} = {value!r} is not a number; valid range {rng}")
+        raise fail(shown_value(value), f"is not a number; valid range {rng}")
     try:
         v = float(value)
     except OverflowError:  # an integer too large for a float
         v = math.inf
     if not math.isfinite(v):
-        shown = repr(value) if len(repr(value)) <= 30 else repr(value)[:27] + "..."
-        raise ValueError(f"{owner}.{field} = {shown} is not finite; valid range {rng}")
+        raise fail(shown_value(value), f"is not finite; valid range {rng}")
     below = v <= lo if lo_open else v < lo
     above = v >= hi if hi_open else v > hi
     if below or above:
-        raise ValueError(f"{owner}.{field} = {value:g}{u} is outside the valid range {rng}")
+        raise fail(f"{v:g}{u}", f"is outside the valid range {rng}")
+    if lo_open and lo == 0 and hi > 0 and v < POSITIVE_FLOOR * hi:
+        raise fail(
+            f"{v:g}{u}",
+            f"is too small to compute with (at least {POSITIVE_FLOOR * hi:g}{u}); "
+            f"valid range {rng}",
+        )
+    _store_back(field, value, v)
     return v
 
 
 def check_choice(owner: str, field: str, value: object, choices: tuple[str, ...]) -> str:
-    """Return ``value`` if it is one of ``choices``, else raise ``ValueError`` listing them.
+    """Return ``value`` if it is one of ``choices``, else raise :class:`InputError` listing them.
 
     >>> check_choice("LiftingGas", "kind", "argon", ("helium", "hydrogen"))
     Traceback (most recent call last):
     ...
-    ValueError: LiftingGas.kind = 'argon' is not one of: helium, hydrogen
+    aerostat_core.validation.InputError: LiftingGas.kind = 'argon' is not one of: helium, hydrogen
     """
     if not isinstance(value, str) or value not in choices:
-        raise ValueError(f"{owner}.{field} = {value!r} is not one of: {', '.join(choices)}")
+        reason = f"is not one of: {', '.join(choices)}"
+        raise InputError(
+            f"{owner}.{field} = {shown_value(value)} {reason}",
+            owner=owner,
+            field=field,
+            value=value,
+            reason=reason,
+        )
     return value
 
 
 def check_int(owner: str, field: str, value: object, lo: int, hi: int) -> int:
-    """Return ``value`` as int if it is a whole number in [lo, hi], else raise ``ValueError``."""
+    """Return ``value`` as int if it is a whole number in [lo, hi], else raise
+    :class:`InputError`. A whole float or numpy integer is stored back as ``int``."""
+    info = dict(owner=owner, field=field, value=value, lo=lo, hi=hi)
     try:
-        bad = (isinstance(value, bool) or not isinstance(value, Real)
-               or not math.isfinite(float(value)) or float(value) != int(value))
+        bad = (
+            isinstance(value, bool)
+            or not isinstance(value, Real)
+            or not math.isfinite(float(value))
+            or float(value) != int(value)
+        )
     except OverflowError:
         bad = True
     if bad:
-        raise ValueError(f"{owner}.{field} = {value!r} is not a whole number in [{lo}, {hi}]")
+        reason = f"is not a whole number in [{lo}, {hi}]"
+        raise InputError(f"{owner}.{field} = {shown_value(value)} {reason}", reason=reason, **info)
     v = int(value)
     if not lo <= v <= hi:
-        raise ValueError(f"{owner}.{field} = {v} is outside the valid range [{lo}, {hi}]")
+        reason = f"is outside the valid range [{lo}, {hi}]"
+        raise InputError(f"{owner}.{field} = {v} {reason}", reason=reason, **info)
+    _store_back(field, value, v)
     return v
 
 
 #: Longest name accepted for catalogue items and cases [characters].
 MAX_NAME_LENGTH = 100
+#: Format characters refused in names: bidirectional overrides and isolates, which make a name
+#: display as something else (Trojan-source style); zero-width joiners stay (emoji sequences).
+_BIDI_CONTROLS = frozenset("\u202a\u202b\u202c\u202d\u202e\u2066\u2067\u2068\u2069\u200e\u200f")
 
 
 def check_name(owner: str, field: str, value: object) -> str:
-    """Return ``value`` as a stripped string of 1-100 characters, else raise ``ValueError``.
+    """Return ``value`` as a stripped string of 1-100 characters, else raise
+    :class:`InputError`. Control characters (Unicode category Cc), lone surrogates (which
+    cannot be encoded as UTF-8) and bidirectional overrides are refused.
 
     >>> check_name("Fabric", "name", "x" * 101)
     Traceback (most recent call last):
     ...
-    ValueError: Fabric.name is 101 characters long; the limit is 100
+    aerostat_core.validation.InputError: Fabric.name is 101 characters long; the limit is 100
+    >>> check_name("case", "name", "\\ud83d")
+    Traceback (most recent call last):
+    ...
+    aerostat_core.validation.InputError: case.name contains a lone surrogate (U+D83D)
     """
     text = str(value).strip()
+
+    def fail(reason: str) -> InputError:
+        return InputError(
+            f"{owner}.{field} {reason}", owner=owner, field=field, value=value, reason=reason
+        )
+
     if not text:
-        raise ValueError(f"{owner}.{field} must not be empty")
-    if any(ord(ch) < 32 for ch in text):
-        raise ValueError(f"{owner}.{field} contains control characters")
+        raise fail("must not be empty")
+    for ch in text:
+        cat = unicodedata.category(ch)
+        if cat == "Cs":
+            raise fail(f"contains a lone surrogate (U+{ord(ch):04X})")
+        if cat == "Cc":
+            raise fail("contains control characters")
+        if ch in _BIDI_CONTROLS:
+            raise fail(f"contains a text-direction control character (U+{ord(ch):04X})")
     if len(text) > MAX_NAME_LENGTH:
-        raise ValueError(f"{owner}.{field} is {len(text)} characters long; the limit is "
-                         f"{MAX_NAME_LENGTH}")
+        raise fail(f"is {len(text)} characters long; the limit is {MAX_NAME_LENGTH}")
     return text

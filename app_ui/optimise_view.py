@@ -15,6 +15,8 @@ and shown, the rest are skipped.
 from __future__ import annotations
 
 import json
+import threading
+from collections import OrderedDict
 from collections.abc import Mapping, MutableMapping, Sequence
 from dataclasses import replace
 from typing import Any
@@ -61,9 +63,12 @@ from aerostat_core.sensitivity import (
 from .cache import csv_bytes
 from .plots import ACCENT, LIMIT_COLOUR, PALETTE
 from .state import current_inputs, inputs_key, save_case
+from .widgets import feedback
 
 #: Session keys of the optimisation job and the case-save feedback.
 JOB_KEY = "opt_job"
+#: The last run that produced results, shown again when a newer run is cancelled before any.
+PREVIOUS_JOB_KEY = "opt_previous_job"
 SAVE_MSG_KEY = "opt_save_feedback"
 #: Run levels shown in the UI -> engine setting.
 RUN_LEVELS = {"Quick": "quick", "Normal": "normal"}
@@ -212,6 +217,46 @@ def cached_solve(
     return solve(p, solver, level, seed)
 
 
+#: Largest number of solver results kept for every session (the cache of :func:`solve_shared`).
+SHARED_RESULTS = 64
+_shared_lock = threading.Lock()
+
+
+@st.cache_resource(show_spinner=False)
+def _shared_results() -> OrderedDict:
+    """Solver results shared by every session, keyed by the request (an LRU of
+    :data:`SHARED_RESULTS`). A resource cache rather than ``st.cache_data``: the run draws its
+    progress bar while it runs, which a replayed ``st.cache_data`` call must never do."""
+    return OrderedDict()
+
+
+def solve_shared(
+    inputs_json: str,
+    bounds_json: str,
+    objective: str,
+    solver: str,
+    level: str,
+    seed: int,
+    progress: Any = None,
+) -> OptimisationResult:
+    """:func:`cached_solve` that reports ``progress(fraction, text)`` after every batch (the
+    solver's own callback, which names the solver) when it has to compute; a request any
+    session has run before returns at once."""
+    key = (inputs_json, bounds_json, objective, solver, level, int(seed))
+    cache = _shared_results()
+    with _shared_lock:
+        if key in cache:
+            cache.move_to_end(key)
+            return cache[key]
+    p = OptimisationProblem(*_load(inputs_json), json.loads(bounds_json), objective)
+    result = solve(p, solver, level, seed, progress=progress)
+    with _shared_lock:
+        cache[key] = result
+        while len(cache) > SHARED_RESULTS:
+            cache.popitem(last=False)
+    return result
+
+
 @st.cache_data(max_entries=64, show_spinner=False)
 def cached_pareto(
     inputs_json: str, bounds_json: str, objective: str, limits: tuple, starts_json: str
@@ -251,8 +296,13 @@ def cached_comparison(inputs_json: str, baseline_json: str, x_json: str) -> dict
 
 
 def start_job(request: dict[str, Any], state: MutableMapping[str, Any] | None = None) -> None:
-    """Queue a run: one task per solver, then the Pareto front when limits were given."""
+    """Queue a run: one task per solver, then the Pareto front when limits were given. The
+    previous run with results is kept (:data:`PREVIOUS_JOB_KEY`), so cancelling the new one
+    before it has any leaves those results on screen."""
     s = st.session_state if state is None else state
+    old = s.get(JOB_KEY)
+    if old and solver_results(old):
+        s[PREVIOUS_JOB_KEY] = old
     tasks = list(request["solvers"]) + (["pareto"] if request["limits"] else [])
     s[JOB_KEY] = {
         "request": request,
@@ -286,7 +336,9 @@ def best_result(results: Sequence[OptimisationResult]) -> OptimisationResult | N
     return min(feas, key=lambda r: r.objective) if feas else None
 
 
-def _run_task(request: Mapping[str, Any], task: str, done: Mapping[str, Any]) -> Any:
+def _run_task(
+    request: Mapping[str, Any], task: str, done: Mapping[str, Any], progress: Any = None
+) -> Any:
     """Run one task of a job (a solver, or the Pareto front started from the best optimum); cached."""
     if task == "pareto":
         best = best_result([v for k, v in done.items() if k != "pareto"])
@@ -298,13 +350,14 @@ def _run_task(request: Mapping[str, Any], task: str, done: Mapping[str, Any]) ->
             tuple(request["limits"]),
             json.dumps(starts, sort_keys=True),
         )
-    return cached_solve(
+    return solve_shared(
         request["inputs"],
         request["bounds"],
         request["objective"],
         task,
         request["level"],
         request["seed"],
+        progress=progress,
     )
 
 
@@ -327,9 +380,16 @@ def run_job() -> None:
     for k, task in enumerate(tasks):
         if task in job["done"]:
             continue
-        bar.progress(k / len(tasks), text=f"Running {TASK_LABELS[task]} ({k + 1}/{len(tasks)})…")
+        head = f"{TASK_LABELS[task]} ({k + 1}/{len(tasks)})"
+        bar.progress(k / len(tasks), text=f"Running {head}…")
+
+        def progress(frac: float, text: str, k: int = k) -> None:
+            # Every batch (at most ~0.3 s apart): the bar moves and names the running solver.
+            share = min(max(float(frac), 0.0), 1.0)
+            bar.progress((k + share) / len(tasks), text=f"{text} (task {k + 1}/{len(tasks)})")
+
         try:
-            job["done"][task] = _run_task(job["request"], task, job["done"])
+            job["done"][task] = _run_task(job["request"], task, job["done"], progress)
         except ValueError as exc:  # e.g. a Pareto range the engine rejects
             job["done"][task] = exc
     bar.progress(1.0, text="Done")
@@ -488,7 +548,8 @@ def _layout(fig: go.Figure, title: str, **kw: Any) -> go.Figure:
         title=dict(text=title, font=dict(size=15)),
         font=_FONT,
         margin=dict(l=60, r=20, t=60, b=50),
-        legend=dict(orientation="h", y=-0.15),
+        # Legend right of the plot: below it, it sat on the x-axis title.
+        legend=dict(orientation="v", x=1.02, xanchor="left", y=1.0, yanchor="top"),
         **kw,
     )
     return fig
@@ -753,7 +814,11 @@ def pareto_figure(
     )
     fig.update_xaxes(title_text="Blow-by at the design wind [m]")
     fig.update_yaxes(title_text=f"{lab} [{unit(u)}]", secondary_y=False)
-    fig.update_yaxes(title_text="Gas fill cost [USD]", secondary_y=True, showgrid=False)
+    # tickmode "auto": plotly.js syncs an overlaying axis to the primary grid by default, which
+    # gave ticks such as 5.12 / 10.23 / 15.35.
+    fig.update_yaxes(
+        title_text="Gas fill cost [USD]", secondary_y=True, showgrid=False, tickmode="auto"
+    )
     return _layout(fig, f"Trade-off: least {lab.lower()} for each blow-by limit", height=500)
 
 
@@ -818,6 +883,14 @@ def render_results(job: Mapping[str, Any], baseline_inputs_json: str) -> None:
     req, cfg = _load(req_d["inputs"])
     results = solver_results(job)
     n_done, n_all = len(job["done"]), len(job["tasks"])
+    previous = st.session_state.get(PREVIOUS_JOB_KEY)
+    if job["cancelled"] and not results and previous and previous is not job:
+        st.warning(
+            "Run cancelled before any solver finished; the previous run's results are shown.",
+            icon=":material/cancel:",
+        )
+        render_results(previous, baseline_inputs_json)
+        return
     if job["cancelled"]:
         st.warning(
             f"Run cancelled: {n_done} of {n_all} tasks finished; their results are shown.",
@@ -959,7 +1032,7 @@ def render_results(job: Mapping[str, Any], baseline_inputs_json: str) -> None:
     )
     fb = st.session_state.pop(SAVE_MSG_KEY, None)
     if fb:
-        (st.success if fb[0] == "success" else st.error)(fb[1])
+        feedback(fb[0], fb[1])
 
 
 def problem_rows(req: Requirement, cfg: Configuration) -> list[dict[str, str]]:

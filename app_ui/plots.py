@@ -13,6 +13,7 @@ every incremental update), which mattered for the 300 ms rerun budget of the Des
 
 from __future__ import annotations
 
+import html
 from collections.abc import Mapping, Sequence
 from typing import Any
 
@@ -433,8 +434,14 @@ def tension_figure(rep: Mapping[str, Any]) -> go.Figure:
         height=380,
         xaxis=_axis(WIND_AXIS),
         yaxis=_axis("Tether tension [N]", rangemode="tozero"),
+        # tickmode "auto": an overlaying axis otherwise syncs to the primary grid (5.12, 10.23)
         yaxis2=_axis(
-            "Safety factor [-]", overlaying="y", side="right", rangemode="tozero", showgrid=False
+            "Safety factor [-]",
+            overlaying="y",
+            side="right",
+            rangemode="tozero",
+            showgrid=False,
+            tickmode="auto",
         ),
     )
 
@@ -490,12 +497,42 @@ def default_tether_speeds(wind_speed: Sequence[float], n: int = 5) -> list[float
 
 def _line(x: Any, y: Any, name: str, colour: str, **kw: Any) -> dict:
     """A solid line trace of width 2.2 in ``colour``."""
-    return dict(type="scatter", x=_l(x), y=_l(y), mode="lines", name=name,
-                line=dict(color=colour, width=2.2), **kw)
+    return dict(
+        type="scatter",
+        x=_l(x),
+        y=_l(y),
+        mode="lines",
+        name=name,
+        line=dict(color=colour, width=2.2),
+        **kw,
+    )
+
+
+def tether_speeds(tether: Mapping[str, Any]) -> list[float]:
+    """Speeds with a tether profile [m/s]: the sweep's, and the design wind (its own profile,
+    also when the sweep steps over it)."""
+    speeds = {float(v) for v in tether["wind_speed"]}
+    design = tether.get("design")
+    if design is not None:
+        speeds.add(float(design["wind"]))
+    return sorted(speeds)
+
+
+def default_profile_speeds(tether: Mapping[str, Any], n: int = 5) -> list[float]:
+    """:func:`default_tether_speeds` of the sweep, plus the design wind."""
+    chosen = set(default_tether_speeds([float(v) for v in tether["wind_speed"]], n))
+    design = tether.get("design")
+    if design is not None and float(design["wind"]) > 0:
+        chosen.add(float(design["wind"]))
+    return sorted(chosen)
 
 
 def _profile_at(tether: Mapping[str, Any], speed: float) -> tuple[np.ndarray, np.ndarray, float]:
-    """Tether profile (x, z) [m] at the sweep speed nearest ``speed``, and that speed [m/s]."""
+    """Tether profile (x, z) [m] at the sweep speed nearest ``speed`` (or the design wind's own
+    profile when ``speed`` is the design wind), and that speed [m/s]."""
+    design = tether.get("design")
+    if design is not None and abs(float(speed) - float(design["wind"])) < 1e-9:
+        return np.asarray(design["x"]), np.asarray(design["z"]), float(design["wind"])
     ws = np.asarray(tether["wind_speed"], float)
     j = int(np.argmin(np.abs(ws - speed)))
     return np.asarray(tether["x"])[:, j], np.asarray(tether["z"])[:, j], float(ws[j])
@@ -503,17 +540,28 @@ def _profile_at(tether: Mapping[str, Any], speed: float) -> tuple[np.ndarray, np
 
 def _winch_trace(label: bool) -> dict:
     """The winch at the origin (black square), optionally labelled."""
-    return dict(type="scatter", x=[0.0], y=[0.0], mode="markers+text" if label else "markers",
-                name="winch", text=["winch"] if label else None, textposition="bottom center",
-                marker=dict(symbol="square", size=12, color="#000000"))
+    return dict(
+        type="scatter",
+        x=[0.0],
+        y=[0.0],
+        mode="markers+text" if label else "markers",
+        name="winch",
+        text=["winch"] if label else None,
+        textposition="bottom center",
+        marker=dict(symbol="square", size=12, color="#000000"),
+    )
 
 
 def _to_scale_figure(traces: list[dict], title: str, **kw: Any) -> go.Figure:
     """Tether plot with equal axis scales, winch at the origin."""
     return _figure(
-        traces, title, height=560, xaxis=_axis("Downwind distance from the winch [m]"),
-        yaxis=_axis("Height above the winch [m]", scaleanchor="x", scaleratio=1,
-                    rangemode="tozero"),
+        traces,
+        title,
+        height=560,
+        xaxis=_axis("Downwind distance from the winch [m]"),
+        yaxis=_axis(
+            "Height above the winch [m]", scaleanchor="x", scaleratio=1, rangemode="tozero"
+        ),
         **kw,
     )
 
@@ -566,11 +614,18 @@ def tether_figure(rep: Mapping[str, Any], speeds: Sequence[float] | None = None)
 # --- comparison of saved cases --------------------------------------------------------------
 
 
+def plain_label(text: str) -> str:
+    """A user's text as a plotly label: plotly reads a subset of HTML in names (``<a href>``,
+    ``<b>``), so ``& < >`` are escaped and the text shows as typed."""
+    return html.escape(str(text), quote=False)
+
+
 def compare_performance_figure(reps: Mapping[str, Mapping[str, Any]], key: str) -> go.Figure:
     """One performance quantity versus wind speed, one line per case (limit rows marked)."""
     title, ylabel = PERF_QUANTITIES[key]
     traces: list[dict] = []
-    for k, (name, rep) in enumerate(reps.items()):
+    for k, (case, rep) in enumerate(reps.items()):
+        name = plain_label(case)
         p = rep["perf"]
         colour = PALETTE[k % len(PALETTE)]
         traces.append(_line(p["wind_speed"], p[key], name, colour, legendgroup=name))
@@ -590,7 +645,8 @@ def compare_performance_figure(reps: Mapping[str, Mapping[str, Any]], key: str) 
 def compare_tether_figure(reps: Mapping[str, Mapping[str, Any]], wind: float) -> go.Figure:
     """Tether profiles of every case at the sweep speed nearest ``wind``, to scale."""
     traces: list[dict] = []
-    for k, (name, rep) in enumerate(reps.items()):
+    for k, (case, rep) in enumerate(reps.items()):
+        name = plain_label(case)
         x, z, w = _profile_at(rep["tether"], wind)
         colour = PALETTE[k % len(PALETTE)]
         top = int(np.argmax(z))
@@ -653,6 +709,20 @@ def geometry_frame(rows: Sequence[Mapping[str, Any]]) -> pd.DataFrame:
             "Unit": [_UNIT_TEXT.get(r["unit"], r["unit"]) for r in rows],
         }
     )
+
+
+def geometry_styler(df: pd.DataFrame) -> Styler:
+    """The geometry table with each value in its own format: counts as integers ("4", not
+    "4.000"), the hull volume with the headline metric's 1 decimal, the rest with 3."""
+    styler = df.style
+    for i, q in zip(df.index, df["Quantity"]):
+        fmt = "{:.0f}" if str(q).startswith("Number") else VALUE_FORMATS.get(str(q), "{:.3f}")
+        styler = styler.format(fmt, subset=pd.IndexSlice[[i], ["Value"]])
+    return styler
+
+
+#: Display format of quantities shown in more than one place (the same precision everywhere).
+VALUE_FORMATS = {"Hull volume": "{:,.1f}", "Hull length l": "{:.2f}", "Hull diameter d": "{:.2f}"}
 
 
 def mass_frame(rows: Sequence[Mapping[str, Any]]) -> pd.DataFrame:

@@ -16,6 +16,7 @@ the current inputs, so a JSON file's values are never lost by submitting the for
 from __future__ import annotations
 
 import copy
+import math
 import re
 from collections.abc import Mapping, MutableMapping
 from dataclasses import dataclass
@@ -23,11 +24,13 @@ from typing import Any
 
 import streamlit as st
 
-from aerostat_core import FABRICS, TETHERS, Configuration, Requirement
-from aerostat_core.io import inputs_from_dict, inputs_to_dict
+from aerostat_core import FABRICS, TETHERS, Configuration, Requirement, budget
+from aerostat_core import validation as _validation
+from aerostat_core.io import inputs_from_dict
 from aerostat_core.shapes import SHAPE_INFO
+from aerostat_core.validation import short
 
-from .state import DESIGN_KEY, init_state
+from .state import DESIGN_KEY, init_state, set_current_inputs
 
 CUSTOM = "Custom"
 #: Where the last rejected submit's message goes: {"group": str, "text": str}.
@@ -46,11 +49,13 @@ GROUPS = {
 
 
 class InputError(ValueError):
-    """An input the engine rejected; ``group`` is a key of :data:`GROUPS`."""
+    """A rejected form input; ``group`` is a key of :data:`GROUPS`, ``key`` the widget's key
+    when the problem is one box. The message uses the form's label and unit."""
 
-    def __init__(self, group: str, message: str) -> None:
-        super().__init__(message)
+    def __init__(self, group: str, message: str, key: str | None = None) -> None:
+        super().__init__(short(message))
         self.group = group
+        self.key = key
 
 
 @dataclass(frozen=True)
@@ -592,6 +597,61 @@ def _clean(x: float) -> float:
     return float(f"{x:.12g}")
 
 
+def format_value(x: Any, integer: bool = False) -> str:
+    """A number as the text of its box: integers without a decimal point, floats with up to 12
+    significant digits and no trailing zeros; ``None`` as an empty box.
+
+    >>> format_value(68.0), format_value(0.432), format_value(50, integer=True), format_value(None)
+    ('68', '0.432', '50', '')
+    """
+    if x is None:
+        return ""
+    if integer:
+        return str(int(x))
+    text = f"{_clean(float(x)):.12g}"
+    return "0" if text == "-0" else text
+
+
+_NUMBER_RE = re.compile(r"^[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?$")
+
+
+def parse_number(text: Any, f: Field) -> float | int | None:
+    """The number typed in the box of field ``f``, or ``None`` for an empty optional box.
+
+    A decimal comma is read as a decimal point ("12,5" is 12.5, never 125); text with both a
+    comma and a point, or several commas, is refused as ambiguous (no thousands separators).
+    Raises :class:`InputError` with the field's label; an empty required box says "required".
+    """
+    if isinstance(text, (int, float)) and not isinstance(text, bool):
+        value = float(text)  # a number set programmatically (tests, older session state)
+        raw = format_value(value)
+    else:
+        raw = "" if text is None else str(text).strip().replace("\u2212", "-")
+        if not raw:
+            if f.optional:
+                return None
+            raise InputError(f.group, f"{f.label}: required; enter a value.", f.key)
+        shown = short(raw, 30)
+        if raw.count(",") > 1 or ("," in raw and "." in raw):
+            raise InputError(
+                f.group,
+                f"{f.label}: “{shown}” is ambiguous. Use one decimal point or one decimal comma, "
+                "without thousands separators.",
+                f.key,
+            )
+        candidate = raw.replace(",", ".")
+        if not _NUMBER_RE.match(candidate):
+            raise InputError(f.group, f"{f.label}: “{shown}” is not a number.", f.key)
+        value = float(candidate)
+    if not math.isfinite(value):
+        raise InputError(f.group, f"{f.label}: “{short(raw, 30)}” is too large.", f.key)
+    if f.integer:
+        if value != int(value):
+            raise InputError(f.group, f"{f.label}: {raw} is not a whole number.", f.key)
+        return int(value)
+    return value
+
+
 def _get(d: Mapping[str, Any], path: str) -> Any:
     obj: Any = d
     for part in path.split("."):
@@ -634,22 +694,25 @@ def inputs_to_dict_part(obj: Any) -> dict[str, Any]:
 def widget_values(
     inputs: Mapping[str, Any], previous: Mapping[str, Any] | None = None
 ) -> dict[str, Any]:
-    """Widget values (display units) that show ``inputs``; ``previous`` widget values fill the
-    boxes the inputs leave open (the given-volume box while the volume is sized)."""
+    """Widget values (the text of each box, in display units) that show ``inputs``;
+    ``previous`` widget values fill the boxes the inputs leave open (the given-volume box while
+    the volume is sized)."""
     previous = previous or {}
     out: dict[str, Any] = {}
     for f in FIELDS:
         v = _get(inputs, f.path)
         if v is None or isinstance(v, str):
             if f.optional:
-                out[f.key] = None
+                out[f.key] = ""
                 continue
             prev = previous.get(f.key)
             out[f.key] = (
-                prev if isinstance(prev, (int, float)) else (170.0 if f.key == "in_volume" else 0.0)
+                prev
+                if isinstance(prev, str) and prev.strip()
+                else ("170" if f.key == "in_volume" else "")
             )
             continue
-        out[f.key] = int(v) if f.integer else _clean(float(v) * f.scale)
+        out[f.key] = format_value(int(v) if f.integer else float(v) * f.scale, f.integer)
     for key, (path, _label, options, _g, _h) in CHOICES.items():
         v = _get(inputs, path)
         out[key] = v if v in options else next(iter(options))
@@ -674,18 +737,17 @@ def build_inputs(
         if f.key not in values:
             continue
         v = values[f.key]
-        if v == shown.get(f.key) and _get(base, f.path) is not None:
+        if _same_text(v, shown.get(f.key)) and _get(base, f.path) is not None:
             continue  # untouched: keep the exact value (no rounding drift through the display)
         if f.key == "in_volume":
             continue  # handled with the volume mode below
         if f.key in ("in_hull_gsm", "in_fin_gsm") or f.key.startswith("in_tether_"):
             continue  # handled with the material choice below
-        if v is None:
-            if f.optional:
-                _set(d, f.path, None)
-                continue
-            raise InputError(f.group, f"{f.label}: enter a value.")
-        _set(d, f.path, int(v) if f.integer else _clean(float(v) / f.scale))
+        x = parse_number(v, f)
+        if x is None:
+            _set(d, f.path, None)
+            continue
+        _set(d, f.path, x if f.integer else _clean(x / f.scale))
     for key, (path, _label, _options, _g, _h) in CHOICES.items():
         if key in values:
             _set(d, path, values[key])
@@ -699,9 +761,17 @@ def build_inputs(
         _set(d, "configuration.hull.volume", None)
     elif "in_volume" in values:
         v = values["in_volume"]
-        if v is None:
-            raise InputError("configuration", "Hull volume [m³]: enter a value or choose 'Sized'.")
-        _set(d, "configuration.hull.volume", _clean(float(v)))
+        if v is None or (isinstance(v, str) and not v.strip()):
+            raise InputError(
+                "configuration",
+                "Hull volume [m³] (when given): required; enter a value or choose 'Sized'.",
+                "in_volume",
+            )
+        if (
+            not _same_text(v, shown.get("in_volume"))
+            or _get(base, "configuration.hull.volume") is None
+        ):
+            _set(d, "configuration.hull.volume", _clean(parse_number(v, FIELD_BY_KEY["in_volume"])))
     # materials
     for sel_key, gsm_key, part in (
         (HULL_FABRIC_KEY, "in_hull_gsm", "hull_fabric"),
@@ -715,9 +785,7 @@ def build_inputs(
                 raise InputError("materials", f"Unknown fabric {choice!r}.")
             _set(d, f"configuration.{part}", inputs_to_dict_part(FABRICS[choice]))
             continue
-        gsm = values.get(gsm_key)
-        if gsm is None:
-            raise InputError("materials", f"{FIELD_BY_KEY[gsm_key].label}: enter a value.")
+        gsm = parse_number(values.get(gsm_key), FIELD_BY_KEY[gsm_key])
         old = _get(d, f"configuration.{part}") or {}
         areal = _clean(float(gsm) / 1000.0)
         name = (
@@ -737,21 +805,189 @@ def build_inputs(
             new = dict(old)
             for key in ("in_tether_lin", "in_tether_dia", "in_tether_mbl", "in_tether_cd"):
                 f = FIELD_BY_KEY[key]
-                v = values.get(key)
-                if v is None:
-                    raise InputError("materials", f"{f.label}: enter a value.")
-                new[f.path.rsplit(".", 1)[1]] = _clean(float(v) / f.scale)
+                if (
+                    _same_text(values.get(key), shown.get(key))
+                    and old.get(f.path.rsplit(".", 1)[1]) is not None
+                ):
+                    continue
+                new[f.path.rsplit(".", 1)[1]] = _clean(parse_number(values.get(key), f) / f.scale)
             if new != old or old.get("name") in TETHERS or not old.get("name"):
                 new["name"] = f"Custom tether {new['linear_density'] * 1000:g} g/m"
             _set(d, "configuration.tether", new)
     try:
-        return inputs_from_dict(d)
+        req, cfg = inputs_from_dict(d)
+    except _validation.InputError as exc:
+        raise form_error(exc) from None
     except ValueError as exc:
         msg = str(exc)
-        raise InputError(error_group(msg), msg) from None
+        raise InputError(error_group(msg), humanise(msg)) from None
+    try:
+        budget.check_design(req, cfg)
+    except budget.BudgetError as exc:
+        raise InputError("advanced", str(exc), "in_segments") from None
+    return req, cfg
+
+
+def _same_text(a: Any, b: Any) -> bool:
+    """Whether two box values show the same thing ("68" and 68.0 do)."""
+    if isinstance(a, str) and isinstance(b, str):
+        return a.strip() == b.strip()
+    try:
+        return float(a) == float(b)
+    except (TypeError, ValueError):
+        return a == b
+
+
+#: Path prefix of each engine class in an inputs dict (for mapping its errors to form fields).
+_OWNER_PATH = {
+    "Requirement": "requirement",
+    "Configuration": "configuration",
+    "LiftingGas": "configuration.gas",
+    "HullSpec": "configuration.hull",
+    "FinSpec": "configuration.fins",
+    "AeroModel": "configuration.aero",
+    "ConfluenceSpec": "configuration.confluence",
+    "WindProfile": "configuration.wind_profile",
+    "TetherSpec": "configuration.tether",
+    "Fabric": "configuration.hull_fabric",
+}
+
+
+def _field_for(owner: str, field: str) -> Field | None:
+    prefix = _OWNER_PATH.get(owner)
+    if prefix is None:
+        return None
+    path = f"{prefix}.{field}"
+    return next((f for f in FIELDS if f.path == path), None)
+
+
+def _range_words(lo: float, hi: float, lo_open: bool, hi_open: bool) -> str:
+    lo_t, hi_t = format_value(lo), format_value(hi)
+    if lo_open and hi_open:
+        return f"more than {lo_t} and less than {hi_t}"
+    if lo_open:
+        return f"more than {lo_t} and at most {hi_t}"
+    if hi_open:
+        return f"at least {lo_t} and less than {hi_t}"
+    return f"between {lo_t} and {hi_t}"
+
+
+def form_error(exc: _validation.InputError) -> InputError:
+    """An engine :class:`aerostat_core.validation.InputError` in the form's words: its label and
+    display unit (e.g. % of hull length for the fin position), the value as typed, the range.
+
+    >>> from aerostat_core import Requirement
+    >>> try:
+    ...     Requirement(payload_mass=-5)
+    ... except ValueError as e:
+    ...     print(form_error(e))
+    Payload mass [kg]: -5 is not allowed; it must be more than 0 and at most 500.
+    """
+    f = _field_for(exc.owner, exc.field)
+    if f is None:
+        msg = humanise(str(exc))
+        return InputError(error_group(str(exc)), msg)
+    if exc.lo is not None and exc.hi is not None and isinstance(exc.value, (int, float)):
+        value = format_value(float(exc.value) * f.scale, f.integer)
+        rng = _range_words(exc.lo * f.scale, exc.hi * f.scale, exc.lo_open, exc.hi_open)
+        if "too small" in exc.reason:
+            return InputError(f.group, f"{f.label}: {value} is too small to compute with.", f.key)
+        return InputError(f.group, f"{f.label}: {value} is not allowed; it must be {rng}.", f.key)
+    return InputError(f.group, f"{f.label}: {humanise(exc.reason)}.", f.key)
+
+
+_NAME_RE = re.compile(r"\b([A-Z][A-Za-z]+)\.([a-z_]+)\b")
+
+
+def humanise(message: str) -> str:
+    """Replace the engine's internal ``Class.field`` names in a message by the form's labels.
+
+    >>> humanise("Requirement.altitude = 4000 m with site_elevation = 8000 m puts ...")
+    'Operating altitude [m] = 4000 m with site_elevation = 8000 m puts ...'
+    """
+
+    def label(m: re.Match) -> str:
+        f = _field_for(m.group(1), m.group(2))
+        return f.label if f is not None else m.group(0)
+
+    return short(_NAME_RE.sub(label, message))
 
 
 # --- Streamlit side -----------------------------------------------------------------------------
+
+_MD_SPECIAL = re.compile(r"([!-/:-@\[-`{-~])")
+
+
+def plain(text: Any) -> str:
+    """User text (case and file names, messages quoting them) for Streamlit's Markdown
+    elements, shown exactly as typed: every ASCII punctuation character is backslash-escaped
+    (CommonMark), so ``![i](http://...)`` is text, not an image the browser would fetch, and
+    ``:red[x]`` or ``$x$`` are not directives.
+    """
+    return _MD_SPECIAL.sub(r"\\\1", str(text))
+
+
+def signed(x: float, digits: int = 1) -> str:
+    """``x`` with its sign, rounded, never "-0.0" (a delta that rounds to zero is "0.0").
+
+    >>> signed(-0.04), signed(2.345, 2), signed(-3.0), signed(0.0)
+    ('0.0', '+2.35', '-3.0', '0.0')
+    """
+    r = round(float(x), digits)
+    if r == 0:
+        return f"{0:.{digits}f}"
+    return f"{r:+.{digits}f}"
+
+
+def speed_ranges(speeds: Any, step: float | None = None) -> str:
+    """Wind speeds as ranges: consecutive sweep points (``step`` apart, or the smallest gap)
+    collapse into "a–b".
+
+    >>> speed_ranges([0, 1, 2, 3, 7, 8, 9, 12])
+    '0–3, 7–9, 12'
+    >>> speed_ranges([0.5, 1.0, 1.5, 4.0], 0.5)
+    '0.5–1.5, 4'
+    """
+    v = sorted({float(s) for s in speeds})
+    if not v:
+        return ""
+    if step is None:
+        gaps = [b - a for a, b in zip(v, v[1:])]
+        step = min(gaps) if gaps else 1.0
+    parts, start, prev = [], v[0], v[0]
+    for s in v[1:]:
+        if s - prev > 1.5 * step:
+            parts.append(f"{start:g}" if start == prev else f"{start:g}–{prev:g}")
+            start = s
+        prev = s
+    parts.append(f"{start:g}" if start == prev else f"{start:g}–{prev:g}")
+    return ", ".join(parts)
+
+
+class _MetricSlot:
+    """One place in a :func:`metric_row`: ``.metric(...)`` sized to its content."""
+
+    def __init__(self, row: Any) -> None:
+        self._row = row
+
+    def metric(self, *args: Any, **kwargs: Any) -> Any:
+        kwargs.setdefault("width", "content")
+        return self._row.metric(*args, **kwargs)
+
+
+def metric_row(n: int) -> list[_MetricSlot]:
+    """``n`` places for headline numbers, used like ``st.columns(n)``: a wrapping horizontal
+    row whose metrics take the width of their label and value, so a narrow window moves a
+    metric to the next line instead of cutting it to "1…" (fixed columns did at 1024 px)."""
+    row = st.container(horizontal=True, wrap=True, gap="large")
+    return [_MetricSlot(row)] * n
+
+
+def feedback(level: str, text: str) -> None:
+    """Show a message (level "success", "info", "warning" or anything else for an error) as
+    plain text (see :func:`plain`)."""
+    show = {"success": st.success, "info": st.info, "warning": st.warning}.get(level, st.error)
+    show(plain(text))
 
 
 def sync_widgets(state: MutableMapping[str, Any] | None = None, *, force: bool = False) -> None:
@@ -775,26 +1011,29 @@ def _on_submit() -> None:
     try:
         req, cfg = build_inputs(values, s[DESIGN_KEY])
     except InputError as exc:
-        s[ERROR_KEY] = {"group": exc.group, "text": str(exc)}
+        s[ERROR_KEY] = {"group": exc.group, "text": str(exc), "key": exc.key}
         return
     s.pop(ERROR_KEY, None)
-    s[DESIGN_KEY] = inputs_to_dict(req, cfg)
+    set_current_inputs(req, cfg, s)  # written through to the workspace store
     sync_widgets(s, force=True)  # show the canonical values (catalogue materials, rounding)
 
 
 def _group_error(group: str) -> None:
     err = st.session_state.get(ERROR_KEY)
     if err and err.get("group") == group:
-        st.error(f"Not applied: {err['text']}", icon=":material/error:")
+        st.error(plain(f"Not applied: {err['text']}"), icon=":material/error:")
 
 
 def _number(f: Field) -> None:
-    kw: dict[str, Any] = dict(
-        step=f.step, format=f.fmt, help=f.help, key=f.key, persist_state="session"
+    # A text box, parsed by parse_number: the browser's number box read "12,5" as 125 and showed
+    # an emptied box as 0.
+    st.text_input(
+        f.label,
+        key=f.key,
+        help=f.help,
+        placeholder="auto" if f.optional else "required",
+        persist_state="session",
     )
-    if f.optional:
-        kw["placeholder"] = "auto"
-    st.number_input(f.label, **kw)
 
 
 def _choice(key: str, horizontal: bool = False) -> None:
@@ -901,18 +1140,31 @@ def _widget(key: str) -> None:
         )
 
 
+def _submit_button(key: str) -> None:
+    st.form_submit_button(
+        "Update design",
+        type="primary",
+        on_click=_on_submit,
+        key=key,
+        icon=":material/refresh:",
+        width="stretch",
+    )
+
+
 def input_form() -> None:
     """The grouped design-input form (one rerun per submit); an input the engine rejects is
-    reported inside its group and nothing is applied."""
+    reported inside its group and nothing is applied. The submit button comes first, so it is
+    in sight without scrolling, and again after the last group."""
     sync_widgets()
     err = st.session_state.get(ERROR_KEY)
     with st.form("design_inputs_form", border=False, enter_to_submit=False):
+        _submit_button(SUBMIT_KEY)
         with st.container():  # always present: the groups below keep their place
             if err and err.get("group") == "general":
-                st.error(f"Not applied: {err['text']}", icon=":material/error:")
+                st.error(plain(f"Not applied: {err['text']}"), icon=":material/error:")
             elif err:
                 st.warning(
-                    f"Inputs not applied: see **{GROUPS.get(err['group'], '')}** below.",
+                    plain(f"Inputs not applied: see {GROUPS.get(err['group'], '')} below."),
                     icon=":material/warning:",
                 )
         for group, keys in LAYOUT.items():
@@ -928,11 +1180,4 @@ def input_form() -> None:
                     st.caption("The custom values are used when 'Custom' is chosen above them.")
                 for key in keys:
                     _widget(key)
-        st.form_submit_button(
-            "Update design",
-            type="primary",
-            on_click=_on_submit,
-            key=SUBMIT_KEY,
-            icon=":material/refresh:",
-            width="stretch",
-        )
+        _submit_button(SUBMIT_KEY + "_bottom")

@@ -57,11 +57,10 @@ def _geometry_tab(rep: dict) -> None:
     g1, g2 = st.columns([1.2, 1])
     with g1:
         st.dataframe(
-            geometry_frame(rep["geometry_rows"]),
+            plots.geometry_styler(geometry_frame(rep["geometry_rows"])),
             hide_index=True,
             width="stretch",
             height=460,
-            column_config={"Value": st.column_config.NumberColumn(format="%.3f")},
             key="geometry_table",
         )
     with g2:
@@ -138,8 +137,8 @@ def _performance_tab(rep: dict) -> None:
 def _tether_tab(rep: dict) -> None:
     @st.fragment
     def _tether_panel() -> None:
-        speeds = [float(v) for v in rep["tether"]["wind_speed"]]
-        default = plots.default_tether_speeds(speeds)
+        speeds = plots.tether_speeds(rep["tether"])  # the sweep and the design wind
+        default = plots.default_profile_speeds(rep["tether"])
         chosen = st.multiselect(
             "Wind speeds to show [m/s]",
             speeds,
@@ -196,10 +195,10 @@ with col_in:
             "A file with a problem changes nothing.",
         )
     import_box = st.container()  # always present: the form below keeps its place
-    fb = st.session_state.get(state.IMPORT_MSG_KEY)
-    if fb and fb.get("where") == "design":
+    fb = state.pop_import_feedback("design")  # shown once: never next to a later file
+    if fb:
         with import_box:
-            (st.success if fb["level"] == "success" else st.error)(fb["text"])
+            widgets.feedback(fb["level"], fb["text"])
     widgets.input_form()
 
 # --- results -----------------------------------------------------------------------------------
@@ -212,9 +211,18 @@ with col_out:
         )
         st.stop()
     s, lim = rep["summary"], rep["limits"]
+    # After a rejected submit the form holds values that were not applied: say whose results
+    # these are, so "meets every requirement" is never read as a verdict on the rejected values.
+    stale = bool(st.session_state.get(widgets.ERROR_KEY))
 
     st.subheader("Result", anchor=False)
-    c = st.columns(5)
+    if stale:
+        st.warning(
+            "These results are for the last valid inputs: your latest change was not applied "
+            "(see the message in the form).",
+            icon=":material/history:",
+        )
+    c = widgets.metric_row(5)
     c[0].metric(
         "Volume [m³]",
         _fmt(s["volume_m3"]),
@@ -240,12 +248,12 @@ with col_out:
         f"({s['percent_static_lift']:.0f} % of the gross buoyancy).",
     )
     st.caption(f"At the design wind, {lim['design_wind']:g} m/s:")
-    c = st.columns(5)
+    c = widgets.metric_row(5)
     bb = s["blow_by_at_design_wind_m"]
     c[0].metric(
         "Blow-by [m]",
         _fmt(bb),
-        delta=f"{bb - lim['blow_by_limit']:+.1f} m",
+        delta=f"{widgets.signed(bb - lim['blow_by_limit'], 1)} m",
         delta_color="inverse",
         help=f"Downwind offset of the confluence point from the winch; limit "
         f"{lim['blow_by_limit']:g} m (the delta is blow-by minus limit).",
@@ -264,24 +272,29 @@ with col_out:
     c[3].metric(
         "Safety factor [-]",
         _fmt(sf, 2),
-        delta=f"{sf - lim['min_safety_factor']:+.2f}",
+        delta=widgets.signed(sf - lim["min_safety_factor"], 2),
         help="Tether breaking strength / largest tension along the tether; required "
         f"{lim['min_safety_factor']:g} (the delta is the margin).",
     )
     c[4].metric("Gas cost [USD]", _fmt(s["gas_cost_USD"], 0), help="Hull volume × gas price.")
 
     if rep["feasible"]:
-        st.success("Meets every requirement at the design wind.", icon=":material/check_circle:")
+        st.success(
+            ("The last valid inputs meet" if stale else "Meets")
+            + " every requirement at the design wind.",
+            icon=":material/check_circle:",
+        )
     else:
         st.error(
             "**Requirements not met:**\n" + "\n".join(f"- {v}" for v in rep["violations"]),
             icon=":material/error:",
         )
     p = rep["perf"]
-    lim_speeds = [f"{v:g}" for v, flag in zip(p["wind_speed"], p["limited"]) if flag]
+    lim_speeds = [float(v) for v, flag in zip(p["wind_speed"], p["limited"]) if flag]
     if lim_speeds:
         st.warning(
-            f"Operating limits exceeded in the sweep at {', '.join(lim_speeds)} m/s "
+            f"Operating limits exceeded in the sweep at "
+            f"{widgets.speed_ranges(lim_speeds, rep['inputs']['requirement']['wind_step'])} m/s "
             "(marked in red in the table and plots).",
             icon=":material/warning:",
         )
@@ -309,7 +322,7 @@ with col_out:
     fb = st.session_state.pop("case_feedback", None)
     if fb:
         with case_box:
-            (st.success if fb[0] == "success" else st.error)(fb[1])
+            widgets.feedback(fb[0], fb[1])
 
     # Lazy tabs: only the open tab runs and is sent to the browser (a rerun draws 1-5 charts
     # instead of 10, which keeps "click Update design -> result" well under a second).

@@ -5,14 +5,17 @@ from __future__ import annotations
 
 import streamlit as st
 
+from aerostat_core import budget
 from aerostat_core.io import inputs_from_dict
 from aerostat_core.report import thesis_gui_cases
-from app_ui import cache, plots, state
+from aerostat_core.validation import short
+from app_ui import cache, plots, state, widgets
 
 st.title("Compare saved cases")
 st.caption(
     "Save designs on the Design page (or load the thesis' GUI test cases) and compare them here. "
-    "Saved cases last for this browser session: download them as JSON to keep them."
+    "Saved cases are kept in this workspace: bookmark or share the page's address to come back "
+    "to them."
 )
 
 
@@ -21,6 +24,12 @@ def _load_gui_cases() -> None:
         names = state.add_cases(thesis_gui_cases())
     except ValueError as exc:  # e.g. the case limit
         st.session_state["compare_feedback"] = ("error", str(exc))
+        return
+    if not names:
+        st.session_state["compare_feedback"] = (
+            "info",
+            "The thesis' GUI test cases are saved already.",
+        )
         return
     st.session_state["compare_feedback"] = (
         "success",
@@ -38,6 +47,13 @@ def _rename() -> None:
     else:
         st.session_state["compare_feedback"] = ("success", f"Renamed “{old}” to “{used}”.")
         st.session_state["rename_to"] = ""
+        # The pickers follow the case to its new name (a stale name made the next rename fail).
+        for key in ("rename_from", "load_name"):
+            if st.session_state.get(key) == old:
+                st.session_state[key] = used
+        sel = st.session_state.get("compare_selected")
+        if isinstance(sel, list):
+            st.session_state["compare_selected"] = [used if n == old else n for n in sel]
 
 
 def _delete() -> None:
@@ -68,7 +84,8 @@ def _load_into_design() -> None:
 def _on_upload() -> None:
     uploaded = st.session_state.get("cases_upload")
     if uploaded is not None:
-        state.handle_upload(uploaded, "compare")
+        mode = st.session_state.get("import_mode", "add")
+        state.handle_upload(uploaded, "compare", mode=mode if mode in state.IMPORT_MODES else "add")
 
 
 top = st.columns([1, 1, 2], vertical_alignment="center")
@@ -86,7 +103,7 @@ feedback_box = st.container()
 fb = st.session_state.pop("compare_feedback", None)
 if fb:
     with feedback_box:
-        (st.success if fb[0] == "success" else st.error)(fb[1])
+        widgets.feedback(fb[0], fb[1])
 
 cases = state.get_cases()
 
@@ -118,6 +135,15 @@ with st.expander("Cases file: export / import", icon=":material/folder_open:"):
             "results and the performance at that wind. Units are in the column names.",
         )
     with c2:
+        st.radio(
+            "Importing a cases file",
+            state.IMPORT_MODES,
+            format_func={"add": "adds its cases", "replace": "replaces every saved case"}.get,
+            key="import_mode",
+            horizontal=True,
+            help="Add: cases identical to saved ones are skipped, other names that are taken "
+            "get a number. Replace: the file's cases become the saved cases.",
+        )
         st.file_uploader(
             "Upload a cases or design file (JSON)",
             type=["json"],
@@ -129,10 +155,10 @@ with st.expander("Cases file: export / import", icon=":material/folder_open:"):
         )
 
 import_box = st.container()
-fb = st.session_state.get(state.IMPORT_MSG_KEY)
-if fb and fb.get("where") == "compare":
+fb = state.pop_import_feedback("compare")  # shown once: never next to a later file
+if fb:
     with import_box:
-        (st.success if fb["level"] == "success" else st.error)(fb["text"])
+        widgets.feedback(fb["level"], fb["text"])
 
 if not cases:
     st.info(
@@ -165,12 +191,20 @@ if not selected:
     st.info("Choose at least one case to compare.")
     st.stop()
 
+try:  # the whole comparison against the compute budget, before any case is computed
+    budget.check_cases({n: cases[n] for n in selected})
+except budget.BudgetError as exc:
+    st.error(widgets.plain(str(exc)), icon=":material/speed:")
+    st.stop()
 reports: dict[str, dict] = {}
 for name in selected:
     try:
         reports[name] = cache.report_for(cases[name])
     except Exception as exc:  # noqa: BLE001 - never show a traceback
-        st.error(f"Case “{name}” could not be evaluated: {exc}", icon=":material/error:")
+        st.error(
+            widgets.plain(short(f"Case “{name}” could not be evaluated: {exc}")),
+            icon=":material/error:",
+        )
 
 # Lazy tabs: only the open tab runs and is sent to the browser.
 tab_table, tab_perf, tab_tether, tab_manage = st.tabs(
@@ -189,7 +223,7 @@ with tab_table:
         try:
             rows = cache.cached_comparison(cache.cases_key(sub)) if sub else []
         except Exception as exc:  # noqa: BLE001
-            st.error(f"The comparison could not be built: {exc}")
+            st.error(widgets.plain(short(f"The comparison could not be built: {exc}")))
             rows = []
         if rows:
             df = plots.comparison_frame(rows, ok, only_differences=only_diff)

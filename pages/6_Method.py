@@ -9,6 +9,7 @@ import pandas as pd
 import streamlit as st
 
 from aerostat_core.io import rows_to_csv
+from app_ui import widgets
 
 st.title("Method")
 st.caption(
@@ -319,7 +320,7 @@ with tab_val:
         )
         n_ok = int(df["Within tolerance"].sum())
         kinds = df["Kind"].value_counts().to_dict()
-        c = st.columns(4)
+        c = widgets.metric_row(4)
         c[0].metric("Checks within tolerance", f"{n_ok} / {len(df)}")
         c[1].metric("Calibrated", kinds.get("calibrated", 0))
         c[2].metric("Predicted", kinds.get("predicted", 0))

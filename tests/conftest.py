@@ -5,8 +5,15 @@ examples every run; locally every run explores new ones (a failure prints its re
 """
 
 import os
+import tempfile
 
 from hypothesis import settings
+
+# Saved workspaces of the tests go to a throw-away folder (the app's default is the user's data
+# folder); the browser tests' servers inherit it. AEROSTAT_DATABASE_URL is for deployments only.
+if not os.environ.get("AEROSTAT_DATA_DIR"):
+    os.environ["AEROSTAT_DATA_DIR"] = tempfile.mkdtemp(prefix="aerostat-test-data-")
+os.environ.pop("AEROSTAT_DATABASE_URL", None)
 
 settings.register_profile("ci", derandomize=True, print_blob=True)
 settings.register_profile("dev", print_blob=True)

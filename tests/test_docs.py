@@ -148,7 +148,7 @@ def test_links_between_documents_resolve() -> None:
 
 STDLIB = set(sys.stdlib_module_names)
 CORE_THIRD_PARTY = {"numpy", "scipy", "numba", "pymoo", "moordyn", "ezdxf", "stl"}
-UI_THIRD_PARTY = {"streamlit", "plotly", "pandas", "numpy"}
+UI_THIRD_PARTY = {"streamlit", "plotly", "pandas", "numpy", "sqlalchemy"}
 PAGE_THIRD_PARTY = {"streamlit", "pandas"}
 #: The library modules a page may import (docs/architecture.md §2.3).
 PAGE_FACES = (

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import base64
 import json
+import re
 from typing import Any
 
 import numpy as np
@@ -68,8 +69,17 @@ def metric_float(at: AppTest, label: str) -> float:
     return float(metric(at, label).replace(",", ""))
 
 
+_MD_ESCAPE = re.compile(r"\\([!-/:-@\[-`{-~])")
+
+
 def messages(at: AppTest, kind: str) -> list[str]:
-    """Texts of st.error / st.warning / st.success / st.info elements."""
+    """Texts of st.error / st.warning / st.success / st.info elements, with the Markdown
+    escapes of :func:`app_ui.widgets.plain` removed (the text the user reads)."""
+    return [_MD_ESCAPE.sub(r"\1", str(e.value)) for e in getattr(at, kind)]
+
+
+def raw_messages(at: AppTest, kind: str) -> list[str]:
+    """The Markdown source of the message elements (escapes included)."""
     return [str(e.value) for e in getattr(at, kind)]
 
 
@@ -77,10 +87,18 @@ def submit(at: AppTest, **widget_values: Any) -> AppTest:
     """Set form widgets by key (number inputs, radios, selectboxes) and press Update design."""
     for key, value in widget_values.items():
         widget = _widget(at, key)
+        if widget.type == "text_input" and isinstance(value, (int, float)):
+            value = f"{value:g}"  # the form's number boxes are text boxes
         widget.set_value(value)
     at.button(key="in_submit").click()
     at.run()
     return at
+
+
+def field_value(at: AppTest, key: str) -> float | None:
+    """The number shown in a design-form box (text boxes: "12,5" reads as 12.5)."""
+    text = _widget(at, key).value
+    return None if not str(text).strip() else float(str(text).replace(",", "."))
 
 
 def _widget(at: AppTest, key: str):

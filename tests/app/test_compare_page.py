@@ -4,20 +4,23 @@ and tether profiles, thesis GUI test cases, rename/delete/load, cases-file impor
 from __future__ import annotations
 
 import json
+from dataclasses import replace
 
 import numpy as np
 import pytest
 
-from aerostat_core import design
-from aerostat_core.io import cases_to_json, inputs_from_dict
+from aerostat_core import design, thesis_baseline
+from aerostat_core.io import cases_to_json, inputs_from_dict, inputs_to_dict
 from aerostat_core.report import thesis_gui_cases
 from app_ui import state
 from tests.app.helpers import (
     COMPARE_PAGE,
     DESIGN_PAGE,
     chart,
+    field_value,
     goto,
     messages,
+    raw_messages,
     show_tab,
     submit,
     table,
@@ -171,6 +174,68 @@ def test_rename_and_refuse_duplicates(with_gui_cases):
     assert "thirty kilos" in at.session_state["cases"]
 
 
+def test_a_rename_updates_the_pickers_and_a_second_rename_works(with_gui_cases):
+    at = with_gui_cases
+    tab(at, "Manage cases")
+    at.selectbox(key="rename_from").set_value(GUI[1])
+    at.text_input(key="rename_to").set_value("first rename")
+    _button(at, "Rename").click().run()
+    assert at.selectbox(key="rename_from").value == "first rename"
+    assert "first rename" in at.multiselect(key="compare_selected").value
+    assert GUI[1] not in at.selectbox(key="rename_from").options
+    at.text_input(key="rename_to").set_value("second rename")  # the picker already shows it
+    _button(at, "Rename").click().run()
+    assert not at.exception
+    assert list(at.session_state["cases"])[1] == "second rename"
+    assert at.selectbox(key="rename_from").value == "second rename"
+    assert any("Renamed “first rename” to “second rename”" in m for m in messages(at, "success"))
+
+
+def test_loading_the_gui_cases_twice_adds_nothing(with_gui_cases):
+    at = with_gui_cases
+    _button(at, "Load the thesis' GUI test cases").click().run()
+    assert not at.exception
+    assert len(at.session_state["cases"]) == 4
+    assert any("saved already" in m for m in messages(at, "info"))
+
+
+def test_import_can_replace_the_saved_cases(with_gui_cases):
+    at = with_gui_cases
+    assert at.radio(key="import_mode").value == "add"
+    one = {GUI[0]: at.session_state["cases"][GUI[0]]}
+    level, msg = state.handle_upload(
+        cases_to_json(one).encode(), "compare", at.session_state, mode="replace"
+    )
+    assert level == "success" and "Replaced" in msg
+    at.run()
+    assert list(at.session_state["cases"]) == [GUI[0]]
+
+
+def test_a_comparison_over_the_compute_budget_is_a_message(compare):
+    at = compare
+    req, cfg = thesis_baseline()
+    big = inputs_to_dict(req, replace(cfg, tether_segments=2000))
+    state.add_cases({f"big {i}": big for i in range(12)}, at.session_state)
+    at.run()
+    assert not at.exception
+    assert any("units of work" in e and "fewer cases" in e for e in messages(at, "error"))
+
+
+def test_hostile_case_names_show_as_plain_text(compare):
+    at = compare
+    name = "![i](http://example.invalid/x.png) *bold* <b>b</b>"
+    state.save_case(name, *thesis_baseline(), at.session_state)
+    at.run()
+    assert not at.exception
+    tab(at, "Performance")
+    fig = chart(at, "cmp_blow_by")
+    assert (
+        fig["data"][0]["name"] == "![i](http://example.invalid/x.png) *bold* &lt;b&gt;b&lt;/b&gt;"
+    )
+    raw = [m for m in raw_messages(at, "success") + raw_messages(at, "error") if "example" in m]
+    assert all("\\!\\[i\\]" in m for m in raw)
+
+
 def test_delete_cases(with_gui_cases):
     at = with_gui_cases
     tab(at, "Manage cases")
@@ -195,7 +260,7 @@ def test_open_a_case_on_the_design_page(with_gui_cases):
     assert at.session_state["design_inputs"] == at.session_state["cases"][GUI[1]]
     goto(at, DESIGN_PAGE)
     assert not at.exception
-    assert at.number_input(key="in_payload").value == 30.0
+    assert field_value(at, "in_payload") == 30.0
     assert at.radio(key="in_volume_mode").value == "sized"
 
 
@@ -203,7 +268,16 @@ def test_import_cases_file_adds_with_unique_names(with_gui_cases):
     at = with_gui_cases
     text = cases_to_json(thesis_gui_cases())
     level, msg = state.handle_upload(text.encode(), "compare", at.session_state)
-    assert level == "success" and "Added 4 case(s)" in msg
+    assert level == "info" and "nothing was added" in msg  # re-importing duplicates nothing
+    at.run()
+    assert any("nothing was added" in s for s in messages(at, "info"))
+    at.run()  # the message is shown once, not left next to the next file's
+    assert not any("nothing was added" in s for s in messages(at, "info"))
+    changed = json.loads(text)
+    for case in changed["cases"].values():
+        case["requirement"]["payload_mass"] = 12.5
+    up = state.handle_upload(json.dumps(changed).encode(), "compare", at.session_state)
+    assert up[0] == "success" and "Added 4 case(s)" in up[1]
     at.run()
     assert not at.exception
     names = list(at.session_state["cases"])

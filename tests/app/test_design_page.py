@@ -12,11 +12,13 @@ import pytest
 from aerostat_core import FABRICS, design, thesis_baseline
 from aerostat_core.io import design_to_json, inputs_from_dict, inputs_to_dict
 from app_ui import state
+from app_ui.widgets import FIELD_BY_KEY
 from tests.app.helpers import (
     COMPARE_PAGE,
     DESIGN_PAGE,
     chart,
     chart_keys,
+    field_value,
     goto,
     messages,
     metric,
@@ -50,9 +52,9 @@ def test_opens_on_the_thesis_baseline(at):
     assert d.feasible
     assert not any("Requirements not met" in e for e in messages(at, "error"))
     # every input widget shows the baseline
-    assert at.number_input(key="in_payload").value == 10.0
-    assert at.number_input(key="in_fin_pos").value == pytest.approx(68.0)
-    assert at.number_input(key="in_hull_gsm").value == pytest.approx(130.0)
+    assert field_value(at, "in_payload") == 10.0
+    assert field_value(at, "in_fin_pos") == pytest.approx(68.0)
+    assert field_value(at, "in_hull_gsm") == pytest.approx(130.0)
     assert at.radio(key="in_volume_mode").value == "given"
 
 
@@ -215,14 +217,14 @@ def test_rejected_input_shows_next_to_its_group_and_changes_nothing(at):
     submit(at, in_blow_by=400.0, in_payload=25.0)  # limit above the 300 m altitude
     assert not at.exception
     errors = messages(at, "error")
-    assert any("blow_by_limit" in e and "Not applied" in e for e in errors)
+    assert any("Blow-by limit at the design wind [m]" in e and "Not applied" in e for e in errors)
     warnings = messages(at, "warning")
     assert any("Wind and operating limits" in w for w in warnings)
     assert json.dumps(at.session_state["design_inputs"], sort_keys=True) == before
     assert metric(at, "Volume [m³]") == volume_before
     assert at.session_state["input_error"]["group"] == "wind"
     # the user's values stay in the form to be fixed; fixing them applies both changes
-    assert at.number_input(key="in_blow_by").value == 400.0
+    assert field_value(at, "in_blow_by") == 400.0
     submit(at, in_blow_by=40.0)
     assert "input_error" not in at.session_state
     assert at.session_state["design_inputs"]["requirement"]["blow_by_limit"] == 40.0
@@ -230,27 +232,55 @@ def test_rejected_input_shows_next_to_its_group_and_changes_nothing(at):
 
 
 @pytest.mark.parametrize(
-    "widgets, group, field",
+    "widgets, group, key",
     [
-        ({"in_payload": 600.0}, "requirement", "payload_mass"),
-        ({"in_altitude": 5.0}, "requirement", "altitude"),
-        ({"in_wind_max": 45.0}, "wind", "wind_max"),
-        ({"in_purity": 120.0}, "gas", "purity"),
-        ({"in_hull_fabric": "Custom", "in_hull_gsm": 0.0}, "materials", "areal_density"),
-        ({"in_fineness": 9.0}, "configuration", "fineness_ratio"),
-        ({"in_fin_pos": 99.0}, "configuration", "position"),
-        ({"in_fin_ar": 9.0}, "advanced", "aspect_ratio"),
-        ({"in_segments": 5}, "advanced", "tether_segments"),
+        ({"in_payload": 600.0}, "requirement", "in_payload"),
+        ({"in_altitude": 5.0}, "requirement", "in_altitude"),
+        ({"in_wind_max": 45.0}, "wind", "in_wind_max"),
+        ({"in_purity": 120.0}, "gas", "in_purity"),
+        ({"in_hull_fabric": "Custom", "in_hull_gsm": 0.0}, "materials", "in_hull_gsm"),
+        ({"in_fineness": 9.0}, "configuration", "in_fineness"),
+        ({"in_fin_pos": 99.0}, "configuration", "in_fin_pos"),
+        ({"in_fin_ar": 9.0}, "advanced", "in_fin_ar"),
+        ({"in_segments": 5}, "advanced", "in_segments"),
+        ({"in_payload": ""}, "requirement", "in_payload"),
+        ({"in_altitude": "3,5,0"}, "requirement", "in_altitude"),
     ],
 )
-def test_each_rejected_input_is_reported_in_its_group(at, widgets, group, field):
+def test_each_rejected_input_is_reported_in_its_group(at, widgets, group, key):
     before = json.dumps(at.session_state["design_inputs"], sort_keys=True)
     submit(at, **widgets)
     assert not at.exception
-    assert at.session_state["input_error"]["group"] == group
-    assert field in at.session_state["input_error"]["text"]
-    assert any(field in e and e.startswith("Not applied") for e in messages(at, "error"))
+    err = at.session_state["input_error"]
+    assert err["group"] == group and err["key"] == key
+    label = FIELD_BY_KEY[key].label
+    assert err["text"].startswith(f"{label}: ")  # the form's label and unit, not Class.field
+    assert "." not in err["text"].split(":")[0].replace("Δl_f", "")
+    assert any(e.startswith(f"Not applied: {label}") for e in messages(at, "error"))
     assert json.dumps(at.session_state["design_inputs"], sort_keys=True) == before
+
+
+def test_an_emptied_box_says_required_not_zero(at):
+    submit(at, in_payload="")
+    assert at.session_state["input_error"]["text"] == "Payload mass [kg]: required; enter a value."
+    assert at.session_state["design_inputs"]["requirement"]["payload_mass"] == 10.0
+
+
+def test_a_decimal_comma_is_read_as_a_point(at):
+    submit(at, in_payload="12,5")
+    assert "input_error" not in at.session_state
+    assert at.session_state["design_inputs"]["requirement"]["payload_mass"] == 12.5
+    assert field_value(at, "in_payload") == 12.5
+
+
+def test_after_a_rejected_submit_the_results_say_they_are_the_last_valid_inputs(at):
+    assert any("Meets every requirement" in m for m in messages(at, "success"))
+    submit(at, in_payload=600.0)
+    warnings = messages(at, "warning")
+    assert any("last valid inputs" in w for w in warnings)
+    assert not any(m.startswith("Meets every requirement") for m in messages(at, "success"))
+    submit(at, in_payload=10.0)
+    assert not any("last valid inputs" in w for w in messages(at, "warning"))
 
 
 def test_custom_fabric_and_catalogue_tether(at):
@@ -267,7 +297,7 @@ def test_custom_fabric_and_catalogue_tether(at):
     tether = at.session_state["design_inputs"]["configuration"]["tether"]
     assert tether["name"] == name and tether["linear_density"] == pytest.approx(0.009)
     # the custom boxes now show the catalogue tether's values
-    assert at.number_input(key="in_tether_lin").value == pytest.approx(9.0)
+    assert field_value(at, "in_tether_lin") == pytest.approx(9.0)
     assert at.selectbox(key="in_hull_fabric").value == "Custom"
     assert "Heavy laminate (300 g/m2)" in FABRICS
 
@@ -278,7 +308,7 @@ def test_load_thesis_baseline_resets_inputs_and_form(at):
     at.button[0].click().run()  # "Load thesis baseline"
     assert at.button[0].label == "Load thesis baseline"
     assert at.session_state["design_inputs"] == inputs_to_dict(*thesis_baseline())
-    assert at.number_input(key="in_payload").value == 10.0
+    assert field_value(at, "in_payload") == 10.0
     assert at.radio(key="in_volume_mode").value == "given"
     assert metric(at, "Volume [m³]") == "170.0"
 
@@ -305,8 +335,8 @@ def test_inputs_and_cases_survive_page_switches(at):
     assert not at.exception
     goto(at, DESIGN_PAGE)
     assert not at.exception
-    assert at.number_input(key="in_payload").value == 17.0
-    assert at.number_input(key="in_fineness").value == pytest.approx(3.2)
+    assert field_value(at, "in_payload") == 17.0
+    assert field_value(at, "in_fineness") == pytest.approx(3.2)
     assert at.session_state["design_inputs"]["requirement"]["payload_mass"] == 17.0
     assert len(at.session_state["cases"]) == 1
     assert metric_float(at, "Length [m]") != pytest.approx(_baseline().summary()["length_m"])
@@ -322,9 +352,9 @@ def test_importing_a_design_file_restores_inputs(at):
     assert level == "success"
     at.run()
     assert not at.exception
-    assert at.number_input(key="in_payload").value == 22.0
-    assert at.number_input(key="in_altitude").value == 400.0
-    assert at.number_input(key="in_fineness").value == 3.5
+    assert field_value(at, "in_payload") == 22.0
+    assert field_value(at, "in_altitude") == 400.0
+    assert field_value(at, "in_fineness") == 3.5
     assert any("Loaded the design inputs" in s for s in messages(at, "success"))
 
 
@@ -349,7 +379,7 @@ def test_a_bad_design_file_shows_a_message_and_changes_nothing(at, payload, frag
     errors = messages(at, "error")
     assert any("Could not import" in e and "Nothing was changed" in e for e in errors)
     assert json.dumps(at.session_state["design_inputs"], sort_keys=True) == before
-    assert at.number_input(key="in_payload").value == 10.0
+    assert field_value(at, "in_payload") == 10.0
     assert at.session_state["cases"] == {}
 
 

@@ -251,3 +251,58 @@ def test_cancelled_run_keeps_finished_tasks(opt):
     assert list(table(opt, "Solver")["Solver"]) == ["SLSQP (2 starts)"]
     assert "opt_pareto" not in chart_keys(opt)
     assert list(opt.session_state[view.JOB_KEY]["done"]) == ["slsqp"]
+
+
+def _quick_request(solvers=("pso",)):
+    from app_ui import optimise_view as view
+
+    inputs = json.dumps(inputs_to_dict(*thesis_baseline()), sort_keys=True, separators=(",", ":"))
+    return view.build_request(
+        inputs,
+        limit=thesis_baseline()[0].blow_by_limit,
+        bounds=DEFAULT_BOUNDS,
+        objective="total_mass",
+        level="quick",
+        seed=0,
+        solvers=list(solvers),
+        pareto=False,
+        pareto_points=5,
+        pareto_low=0.8,
+        pareto_high=1.5,
+    )
+
+
+def test_progress_is_reported_per_batch_naming_the_solver_and_shared_runs_skip_it():
+    from app_ui import optimise_view as view
+
+    r = _quick_request()
+    calls: list[tuple[float, str]] = []
+    args = (r["inputs"], r["bounds"], "total_mass", "pso", "quick", 123)
+    first = view.solve_shared(*args, progress=lambda f, t: calls.append((f, t)))
+    # one report per generation of the swarm (quick: 20), each naming the solver
+    assert len(calls) >= 20
+    assert all(t.startswith("Particle swarm: ") for _, t in calls)
+    fracs = [f for f, _ in calls]
+    assert fracs == sorted(fracs) and fracs[-1] == pytest.approx(1.0)
+    again: list = []
+    assert view.solve_shared(*args, progress=lambda f, t: again.append(t)) is first
+    assert again == []  # a second session gets the shared result without recomputing
+
+
+def test_cancelling_a_new_run_keeps_the_previous_results(opt):
+    from app_ui import optimise_view as view
+
+    old = _quick_request(["slsqp"])
+    view.start_job(old, opt.session_state)
+    opt.run()  # the first run finishes
+    assert not opt.exception
+    assert list(table(opt, "Solver")["Solver"]) == ["SLSQP (2 starts)"]
+    new = _quick_request(["pso"])
+    view.start_job(new, opt.session_state)
+    job = opt.session_state[view.JOB_KEY]
+    job["cancelled"] = True  # Cancel pressed before the swarm finished
+    opt.session_state[view.JOB_KEY] = job
+    opt.run()
+    assert not opt.exception
+    assert any("previous run's results are shown" in w for w in messages(opt, "warning"))
+    assert list(table(opt, "Solver")["Solver"]) == ["SLSQP (2 starts)"]

@@ -58,11 +58,14 @@ def test_save_rename_delete(s):
     assert state.save_case("  first ", req, cfg, s) == "first"
     state.save_case("second", replace(req, payload_mass=30.0), cfg, s)
     assert list(state.get_cases(s)) == ["first", "second"]
-    state.save_case("first", replace(req, payload_mass=12.0), cfg, s)  # replace in place
-    assert list(state.get_cases(s)) == ["first", "second"]
+    # an existing name gets a suffix: "first" still holds its own design
+    assert state.save_case("first", replace(req, payload_mass=30.0), cfg, s) == "first (2)"
+    assert s["cases"]["first"]["requirement"]["payload_mass"] == 10.0
+    assert s["cases"]["first (2)"]["requirement"]["payload_mass"] == 30.0
+    state.delete_case("first (2)", s)
+    state.save_case("first", replace(req, payload_mass=12.0), cfg, s, overwrite=True)
+    assert list(state.get_cases(s)) == ["first", "second"]  # replaced in place
     assert s["cases"]["first"]["requirement"]["payload_mass"] == 12.0
-    with pytest.raises(ValueError, match="exists"):
-        state.save_case("first", req, cfg, s, overwrite=False)
     assert state.rename_case("first", "renamed", s) == "renamed"
     assert list(state.get_cases(s)) == ["renamed", "second"]  # order kept
     with pytest.raises(ValueError, match="exists already"):
@@ -88,14 +91,59 @@ def test_case_limit(s):
     s["cases"] = {f"c{i}": inputs_to_dict(req, cfg) for i in range(MAX_CASES)}
     with pytest.raises(ValueError, match="At most"):
         state.save_case("one more", req, cfg, s)
-    state.save_case("c0", req, cfg, s)  # replacing an existing one is still fine
+    state.save_case("c0", req, cfg, s, overwrite=True)  # replacing one is still fine
 
 
-def test_add_cases_never_overwrites(s):
+def test_add_cases_never_overwrites_nor_duplicates(s):
     names = state.add_cases(thesis_gui_cases(), s)
-    again = state.add_cases(thesis_gui_cases(), s)
+    assert state.add_cases(thesis_gui_cases(), s) == []  # identical cases: nothing added
+    assert len(s["cases"]) == 4
+    changed = {
+        n: {**v, "requirement": {**v["requirement"], "payload_mass": 42.0}}
+        for n, v in thesis_gui_cases().items()
+    }
+    again = state.add_cases(changed, s)  # same names, other inputs: kept apart by a suffix
     assert again == [f"{n} (2)" for n in names]
     assert len(s["cases"]) == 8
+    assert state.add_cases(thesis_gui_cases(), s, mode="replace") == names
+    assert list(s["cases"]) == names
+
+
+def test_reimporting_an_export_duplicates_nothing(s):
+    state.add_cases(thesis_gui_cases(), s)
+    raw = cases_to_json(state.get_cases(s)).encode()
+    level, msg = state.import_file(raw, s, filename="mine.json")
+    assert level == "info" and "nothing was added" in msg
+    assert len(s["cases"]) == 4
+    level, msg = state.import_file(raw, s, filename="mine.json", mode="replace")
+    assert level == "success" and "Replaced" in msg and len(s["cases"]) == 4
+
+
+@pytest.mark.parametrize(
+    "name", ["\ud83d", "tab\there", "bell\x07", "del\x7f", "c1\x85x", "rtl\u202eevil"]
+)
+def test_hostile_case_names_are_refused(s, name):
+    with pytest.raises(ValueError, match="Case name"):
+        state.save_case(name, *thesis_baseline(), s)
+    assert s["cases"] == {}
+
+
+def test_suffix_keeps_the_name_within_the_limit(s):
+    req, cfg = thesis_baseline()
+    long = "n" * state.MAX_NAME_CHARS
+    state.save_case(long, req, cfg, s)
+    used = state.save_case(long, req, cfg, s)
+    assert used.endswith(" (2)") and len(used) == state.MAX_NAME_CHARS
+
+
+def test_messages_name_the_file_and_are_capped(s):
+    level, msg = state.import_file(b"{" * 10, s, filename="x" * 5000 + ".json")
+    assert level == "error" and len(msg) <= 400
+    huge = json.dumps(
+        {"format": "aerostat-design", "version": 1, "requirement": {"payload_mass": "y" * 900_000}}
+    ).encode()
+    level, msg = state.import_file(huge, s, filename="big.json")
+    assert level == "error" and "big.json" in msg and len(msg) <= 400
 
 
 def test_import_design_file(s):

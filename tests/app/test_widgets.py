@@ -58,12 +58,13 @@ def test_round_trip_of_the_gui_cases(name):
 
 def test_display_units_convert(base):
     values = widget_values(base)
-    assert values["in_fin_pos"] == 68.0  # fraction 0.68 -> % of hull length
-    assert values["in_hull_gsm"] == 130.0  # 0.130 kg/m2 -> g/m2
-    assert values["in_tether_mbl"] == 20.0  # 20000 N -> kN
-    assert values["in_purity"] == 100.0
-    values["in_fin_pos"] = 70.0
-    values["in_purity"] = 98.0
+    assert values["in_fin_pos"] == "68"  # fraction 0.68 -> % of hull length
+    assert values["in_hull_gsm"] == "130"  # 0.130 kg/m2 -> g/m2
+    assert values["in_tether_mbl"] == "20"  # 20000 N -> kN
+    assert values["in_purity"] == "100"
+    assert values["in_segments"] == "50"  # an integer shown as an integer
+    values["in_fin_pos"] = "70"
+    values["in_purity"] = "98"
     req, cfg = build_inputs(values, base)
     assert cfg.fins.position == 0.7
     assert cfg.gas.purity == 0.98
@@ -76,9 +77,9 @@ def test_volume_modes(base):
     assert cfg.hull.volume is None
     sized = inputs_to_dict(thesis_baseline()[0], cfg)
     again = widget_values(sized, previous=values)
-    assert again["in_volume_mode"] == "sized" and again["in_volume"] == 170.0
+    assert again["in_volume_mode"] == "sized" and again["in_volume"] == "170"
     again["in_volume_mode"] = "given"
-    again["in_volume"] = 150.0
+    again["in_volume"] = "150"
     assert build_inputs(again, sized)[1].hull.volume == 150.0
 
 
@@ -110,20 +111,21 @@ def test_a_named_custom_fabric_keeps_its_name(base):
     fabric = replace(cfg.hull_fabric, name="Vectran laminate", areal_density=0.21)
     inputs = inputs_to_dict(req, replace(cfg, hull_fabric=fabric))
     values = widget_values(inputs)
-    assert values["in_hull_fabric"] == CUSTOM and values["in_hull_gsm"] == 210.0
+    assert values["in_hull_fabric"] == CUSTOM and values["in_hull_gsm"] == "210"
     assert build_inputs(values, inputs)[1].hull_fabric.name == "Vectran laminate"
 
 
 def test_optional_fields_accept_empty(base):
     values = widget_values(base)
-    assert values["in_gas_price"] is None and values["in_cdv"] is None
-    values["in_gas_price"] = 20.0
+    assert values["in_gas_price"] == "" and values["in_cdv"] == ""
+    values["in_gas_price"] = "20"
     _, cfg = build_inputs(values, base)
     assert cfg.gas_price == 20.0
-    values["in_payload"] = None
+    values["in_payload"] = "  "
     with pytest.raises(InputError) as err:
         build_inputs(values, base)
-    assert err.value.group == "requirement"
+    assert err.value.group == "requirement" and err.value.key == "in_payload"
+    assert str(err.value) == "Payload mass [kg]: required; enter a value."
 
 
 def test_fields_not_in_the_form_are_kept(base):
@@ -252,3 +254,129 @@ def test_comparison_frame_and_highlight():
 )
 def test_format_value(value, text):
     assert plots.format_value(value) == text
+
+
+@pytest.mark.parametrize(
+    "typed, expected",
+    [("12,5", 12.5), ("12.5", 12.5), (" 12 ", 12.0), ("1e1", 10.0), ("−3", None), (",5", 0.5)],
+)
+def test_a_decimal_comma_is_a_decimal_point(base, typed, expected):
+    values = widget_values(base)
+    values["in_payload"] = typed
+    if expected is None:  # -3 kg: parsed (unicode minus), then refused by the range
+        with pytest.raises(InputError, match="must be more than 0 and at most 500"):
+            build_inputs(values, base)
+        return
+    req, _ = build_inputs(values, base)
+    assert req.payload_mass == expected  # never 125 for "12,5"
+
+
+@pytest.mark.parametrize("typed", ["1,234.5", "1.234,5", "1,2,3", "12 5", "ten", "nan", "1e999"])
+def test_ambiguous_or_bad_numbers_are_refused_with_the_label(base, typed):
+    values = widget_values(base)
+    values["in_payload"] = typed
+    with pytest.raises(InputError) as err:
+        build_inputs(values, base)
+    assert str(err.value).startswith("Payload mass [kg]: ")
+    assert err.value.key == "in_payload"
+
+
+def test_engine_errors_use_the_form_label_and_display_unit(base):
+    values = widget_values(base)
+    values["in_fin_pos"] = "30"  # % of hull length; the engine's range is 0.4-0.95
+    with pytest.raises(InputError) as err:
+        build_inputs(values, base)
+    msg = str(err.value)
+    assert (
+        msg
+        == "Fin position Δl_f [% of hull length]: 30 is not allowed; it must be between 40 and 95."
+    )
+    assert "FinSpec" not in msg and "position =" not in msg
+
+
+def test_a_range_set_by_another_field_is_shown_in_its_words(base):
+    values = widget_values(base)
+    values["in_blow_by"] = "400"  # more than the 300 m altitude
+    with pytest.raises(InputError) as err:
+        build_inputs(values, base)
+    assert str(err.value) == (
+        "Blow-by limit at the design wind [m]: 400 is not allowed; it must be more than 0 and "
+        "at most 300."
+    )
+    assert err.value.group == "wind"
+
+
+def test_internal_names_are_replaced_by_labels():
+    from app_ui.widgets import humanise
+
+    text = humanise(
+        "Requirement.altitude = 9000 m with site_elevation = 5000 m ... HullSpec.volume"
+    )
+    assert text.startswith("Operating altitude [m] = 9000 m") and "Hull volume [m³]" in text
+
+
+def test_the_compute_budget_is_a_form_error(base):
+    values = widget_values(base)
+    values["in_segments"] = "5000"
+    values["in_wind_step"] = "0,1"
+    with pytest.raises(InputError) as err:
+        build_inputs(values, base)
+    assert err.value.group == "advanced" and "Reduce the tether segments" in str(err.value)
+
+
+def test_every_requirement_field_is_one_table_entry():
+    from dataclasses import fields
+
+    from aerostat_core import Requirement
+
+    paths = {f.path for f in FIELDS}
+    for fld in fields(Requirement):
+        assert f"requirement.{fld.name}" in paths, f"Requirement.{fld.name} has no form field"
+
+
+def test_signed_never_shows_minus_zero():
+    from app_ui.widgets import signed
+
+    assert [signed(v) for v in (-0.04, -0.0, 0.04, -3.0, 2.25)] == [
+        "0.0",
+        "0.0",
+        "0.0",
+        "-3.0",
+        "+2.2",
+    ]
+
+
+def test_wind_lists_collapse_into_ranges():
+    from app_ui.widgets import speed_ranges
+
+    assert speed_ranges([0, 1, 2, 3, 4, 5, 17, 18, 19, 20], 1.0) == "0–5, 17–20"
+    assert speed_ranges([0.0, 0.1, 0.2, 0.3, 5.0], 0.1) == "0–0.3, 5"
+    assert speed_ranges([7]) == "7"
+
+
+def test_tether_speeds_include_the_design_wind():
+    req, cfg = thesis_baseline()
+    rep = design_report(design(replace(req, wind_step=2.0, design_wind=15.0), cfg))
+    assert 15.0 not in [float(v) for v in rep["tether"]["wind_speed"]]  # the sweep skips it
+    assert 15.0 in plots.tether_speeds(rep["tether"])
+    assert 15.0 in plots.default_profile_speeds(rep["tether"])
+    fig = plots.tether_figure(rep, [14.0, 15.0])
+    names = [t.name for t in fig.data]
+    assert "15 m/s" in names and "14 m/s" in names
+    x15 = np.asarray(next(t for t in fig.data if t.name == "15 m/s").x)
+    assert np.allclose(x15, rep["tether"]["design"]["x"])
+    assert max(x15) == pytest.approx(rep["summary"]["blow_by_at_design_wind_m"], abs=0.05)
+
+
+def test_geometry_counts_are_integers_and_volume_matches_the_metric(rep):
+    html = plots.geometry_styler(plots.geometry_frame(rep["geometry_rows"])).to_html()
+    import re
+
+    assert re.search(r"Number of fins</td>\s*<td[^>]*>4</td>", html)
+    assert re.search(r"Hull volume</td>\s*<td[^>]*>170.0</td>", html)  # the metric's precision
+    assert re.search(r"Fineness ratio l/d</td>\s*<td[^>]*>4.000</td>", html)
+
+
+def test_secondary_axes_have_round_ticks(rep):
+    fig = plots.tension_figure(rep)
+    assert fig.layout.yaxis2.tickmode == "auto"  # not synced to the primary grid

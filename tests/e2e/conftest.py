@@ -130,21 +130,20 @@ class StreamlitServer:
             return "<no server log>"
 
 
-@pytest.fixture(scope="session")
-def streamlit_server() -> Iterator[StreamlitServer]:
-    """``streamlit run app.py`` on a free loopback port, for the whole session."""
+def start_streamlit(log_path: Path, env_extra: dict[str, str] | None = None) -> StreamlitServer:
+    """``streamlit run app.py`` on a free loopback port, answering /_stcore/health (fails the
+    test with the server log otherwise). Stop it with :func:`stop_streamlit`."""
     if not APP_SCRIPT.is_file():
         pytest.fail(f"{APP_SCRIPT} does not exist", pytrace=False)
     port = _free_port()
     url = f"http://127.0.0.1:{port}"
-    ARTIFACTS_DIR.mkdir(parents=True, exist_ok=True)
-    worker = os.environ.get("PYTEST_XDIST_WORKER", "")  # one server per xdist worker
-    log_path = ARTIFACTS_DIR / f"streamlit-server{'-' + worker if worker else ''}.log"
+    log_path.parent.mkdir(parents=True, exist_ok=True)
     env = {
         **os.environ,
         "OPENBLAS_NUM_THREADS": "1",
         "OMP_NUM_THREADS": "1",
         "PYTHONUNBUFFERED": "1",
+        **(env_extra or {}),
     }
     cmd = [
         sys.executable, "-m", "streamlit", "run", str(APP_SCRIPT),
@@ -154,7 +153,7 @@ def streamlit_server() -> Iterator[StreamlitServer]:
         "--browser.gatherUsageStats", "false",
         "--server.fileWatcherType", "none",
     ]  # fmt: skip
-    with log_path.open("wb") as log_file:
+    with log_path.open("ab") as log_file:
         process = subprocess.Popen(
             cmd,
             cwd=REPO_ROOT,
@@ -164,30 +163,47 @@ def streamlit_server() -> Iterator[StreamlitServer]:
             stderr=subprocess.STDOUT,
         )
     server = StreamlitServer(url=url, log_path=log_path, process=process)
+    deadline = time.monotonic() + SERVER_START_TIMEOUT_S
+    while _health(url) != "ok":
+        if process.poll() is not None:
+            pytest.fail(
+                f"streamlit exited with code {process.returncode} before answering "
+                f"/_stcore/health. Server log:\n{server.log()}",
+                pytrace=False,
+            )
+        if time.monotonic() > deadline:
+            stop_streamlit(server)
+            pytest.fail(
+                f"streamlit did not answer 'ok' on {url}/_stcore/health within "
+                f"{SERVER_START_TIMEOUT_S:.0f} s. Server log:\n{server.log()}",
+                pytrace=False,
+            )
+        time.sleep(0.2)
+    return server
+
+
+def stop_streamlit(server: StreamlitServer) -> None:
+    """Stop a server started by :func:`start_streamlit` (SIGTERM, then SIGKILL after 10 s)."""
+    server.process.terminate()
     try:
-        deadline = time.monotonic() + SERVER_START_TIMEOUT_S
-        while _health(url) != "ok":
-            if process.poll() is not None:
-                pytest.fail(
-                    f"streamlit exited with code {process.returncode} before answering "
-                    f"/_stcore/health. Server log:\n{server.log()}",
-                    pytrace=False,
-                )
-            if time.monotonic() > deadline:
-                pytest.fail(
-                    f"streamlit did not answer 'ok' on {url}/_stcore/health within "
-                    f"{SERVER_START_TIMEOUT_S:.0f} s. Server log:\n{server.log()}",
-                    pytrace=False,
-                )
-            time.sleep(0.2)
+        server.process.wait(timeout=10)
+    except subprocess.TimeoutExpired:
+        server.process.kill()
+        server.process.wait(timeout=10)
+
+
+@pytest.fixture(scope="session")
+def streamlit_server() -> Iterator[StreamlitServer]:
+    """``streamlit run app.py`` on a free loopback port, for the whole session."""
+    worker = os.environ.get("PYTEST_XDIST_WORKER", "")  # one server per xdist worker
+    log_path = ARTIFACTS_DIR / f"streamlit-server{'-' + worker if worker else ''}.log"
+    if log_path.exists():
+        log_path.unlink()
+    server = start_streamlit(log_path)
+    try:
         yield server
     finally:
-        process.terminate()
-        try:
-            process.wait(timeout=10)
-        except subprocess.TimeoutExpired:
-            process.kill()
-            process.wait(timeout=10)
+        stop_streamlit(server)
 
 
 @pytest.fixture(scope="session")
