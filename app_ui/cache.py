@@ -25,7 +25,8 @@ from .state import inputs_key
 
 
 def _inputs(inputs_json: str):
-    return inputs_from_dict(json.loads(inputs_json))
+    req, cfg = inputs_from_dict(json.loads(inputs_json))
+    return req.resolved(), cfg  # the limits as applied (rule-set values filled in)
 
 
 @st.cache_data(max_entries=256, show_spinner=False)

@@ -132,7 +132,8 @@ def is_thesis_preset(req: Requirement, cfg: Configuration) -> bool:
 
 def _load(inputs_json: str) -> tuple[Requirement, Configuration]:
     """(Requirement, Configuration) from canonical inputs JSON (raises ValueError)."""
-    return inputs_from_dict(json.loads(inputs_json))
+    req, cfg = inputs_from_dict(json.loads(inputs_json))
+    return req.resolved(), cfg  # the limits as applied (rule-set values filled in)
 
 
 def bounds_key(bounds: Mapping[str, Sequence[float]]) -> str:

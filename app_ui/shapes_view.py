@@ -38,7 +38,8 @@ WIND_AXIS = "Wind speed at the aerostat [m/s]"
 
 
 def _inputs(inputs_json: str):
-    return inputs_from_dict(json.loads(inputs_json))
+    req, cfg = inputs_from_dict(json.loads(inputs_json))
+    return req.resolved(), cfg  # the limits as applied (rule-set values filled in)
 
 
 # --- cached engine calls -----------------------------------------------------------------------

@@ -3,7 +3,7 @@
 Contract (other pages rely on it):
 
 * ``st.session_state["design_inputs"]``: the current inputs as an
-  :func:`aerostat_core.io.inputs_to_dict` dict (the thesis baseline until the user changes it);
+  :func:`aerostat_core.io.inputs_to_dict` dict (the practice default until the user changes it);
 * ``st.session_state["cases"]``: ``{name: inputs dict}``, in the order they were saved.
 
 Every function takes an optional ``state`` mapping (default ``st.session_state``) so that it can be
@@ -25,7 +25,7 @@ from typing import Any
 
 import streamlit as st
 
-from aerostat_core import Configuration, Requirement, thesis_baseline
+from aerostat_core import Configuration, Requirement
 from aerostat_core.io import (
     MAX_CASES,
     MAX_JSON_BYTES,
@@ -34,6 +34,7 @@ from aerostat_core.io import (
     inputs_from_dict,
     inputs_to_dict,
 )
+from aerostat_core.presets import practice_configuration
 from aerostat_core.validation import InputError, check_name, short
 
 from . import store as _store
@@ -57,12 +58,13 @@ def _s(state: MutableMapping[str, Any] | None) -> MutableMapping[str, Any]:
 
 
 def baseline_inputs() -> dict[str, Any]:
-    """The thesis baseline as an inputs dict."""
-    return inputs_to_dict(*thesis_baseline())
+    """The default inputs: 10 kg at 300 m under the default "practice" rules, hull sized, every
+    limit left to the rule set (the same design as ``design(Requirement())`` and the CLI)."""
+    return inputs_to_dict(Requirement(), practice_configuration())
 
 
 def init_state(state: MutableMapping[str, Any] | None = None) -> None:
-    """Create ``design_inputs`` (thesis baseline) and ``cases`` (empty) when missing.
+    """Create ``design_inputs`` (the practice default) and ``cases`` (empty) when missing.
 
     In a live session not yet bound to a workspace, bind it first: on a freshly started server
     Streamlit can run a page script directly (``/Compare?ws=...``) before ``app.py`` has run."""

@@ -27,6 +27,7 @@ import streamlit as st
 from aerostat_core import FABRICS, TETHERS, Configuration, Requirement, budget
 from aerostat_core import validation as _validation
 from aerostat_core.io import inputs_from_dict
+from aerostat_core.rules import RULE_SETS
 from aerostat_core.shapes import SHAPE_INFO
 from aerostat_core.validation import short
 
@@ -116,7 +117,19 @@ FIELDS: tuple[Field, ...] = (
         "requirement",
         step=1.0,
         fmt="%.1f",
-        help="Hot tropical day about +15 K. Valid -40 to +40 K.",
+        help="Hot tropical day about +15 K. Valid -40 to +40 K. Ignored when the site "
+        "temperature is given.",
+    ),
+    _F(
+        "in_site_temp",
+        "requirement.site_temperature",
+        "Temperature at the launch site [°C] (empty = ISA + offset)",
+        "requirement",
+        step=1.0,
+        fmt="%.1f",
+        optional=True,
+        help="Sets the ISA offset so that the standard lapse rate runs through it. "
+        "Valid -60 to 60 °C.",
     ),
     # wind and limits
     _F(
@@ -140,31 +153,99 @@ FIELDS: tuple[Field, ...] = (
     _F(
         "in_design_wind",
         "requirement.design_wind",
-        "Design wind [m/s]",
+        "Operational (design) wind [m/s] (empty = rule set)",
         "wind",
         step=1.0,
         fmt="%.1f",
-        help="Wind at which the blow-by limit and the safety factor are checked "
-        "(thesis Table 2.2 uses 15 m/s). Valid 0-40 m/s.",
+        optional=True,
+        help="Wind at which blow-by, altitude loss, tether angle, stall and stability are checked "
+        "(practice 10 m/s, thesis 15 m/s). Valid 0-40 m/s.",
+    ),
+    _F(
+        "in_survival_wind",
+        "requirement.survival_wind",
+        "Survival wind [m/s] (empty = rule set)",
+        "wind",
+        step=1.0,
+        fmt="%.1f",
+        optional=True,
+        help="Wind the tether must survive aloft (practice 20 m/s, the tactical class). "
+        "At least the design wind, at most 60 m/s.",
     ),
     _F(
         "in_blow_by",
         "requirement.blow_by_limit",
-        "Blow-by limit at the design wind [m]",
+        "Blow-by limit at the design wind [m] (empty = rule set)",
         "wind",
         step=5.0,
         fmt="%.1f",
-        help="Largest acceptable downwind offset of the confluence point "
-        "from the winch; must not exceed the altitude.",
+        optional=True,
+        help="Largest acceptable downwind offset of the confluence point from the winch "
+        "(practice 0.5 x altitude, thesis 0.178 x altitude); must not exceed the altitude.",
+    ),
+    _F(
+        "in_loss_limit",
+        "requirement.altitude_loss_limit",
+        "Permissible altitude loss [m] (empty = rule set)",
+        "wind",
+        step=5.0,
+        fmt="%.1f",
+        optional=True,
+        help="Largest acceptable loss of height at the design wind (practice 0.15 x altitude, "
+        "thesis: off).",
+    ),
+    _F(
+        "in_free_lift",
+        "requirement.free_lift_fraction",
+        "Free lift, share of gross lift [%] (empty = rule set)",
+        "wind",
+        scale=100.0,
+        step=1.0,
+        fmt="%.1f",
+        optional=True,
+        help="Free lift at rest the hull must keep (practice 15 %, thesis 1 %). Valid 0-80 %.",
     ),
     _F(
         "in_min_sf",
         "requirement.min_tether_safety_factor",
-        "Required tether safety factor [-]",
+        "Tether safety factor at the design wind [-] (empty = rule set)",
         "wind",
         step=0.5,
         fmt="%.2f",
-        help="Breaking strength / largest tether tension must reach this. Valid 1-20.",
+        optional=True,
+        help="Breaking strength / largest tether tension must reach this (3 in both rule sets). "
+        "Valid 1-20.",
+    ),
+    _F(
+        "in_survival_sf",
+        "requirement.survival_safety_factor",
+        "Tether safety factor at the survival wind [-] (empty = rule set)",
+        "wind",
+        step=0.1,
+        fmt="%.2f",
+        optional=True,
+        help="Practice 1.5. Valid 1-20.",
+    ),
+    _F(
+        "in_max_angle",
+        "requirement.max_tether_angle_deg",
+        "Largest tether angle from the vertical [deg] (empty = rule set)",
+        "wind",
+        step=5.0,
+        fmt="%.0f",
+        optional=True,
+        help="At the design wind (practice 60 deg, thesis 45 deg). Valid (0, 90].",
+    ),
+    _F(
+        "in_wv_margin",
+        "requirement.weathervane_margin",
+        "Weathervane stability margin [1/rad] (empty = rule set)",
+        "wind",
+        step=0.01,
+        fmt="%.3f",
+        optional=True,
+        help="C_m_alpha about the centre of volume must be at most minus this (practice 0.02, "
+        "thesis 0). Valid 0-1.",
     ),
     # gas
     _F(
@@ -479,6 +560,15 @@ FIELD_BY_KEY = {f.key: f for f in FIELDS}
 
 #: Choice widgets: key -> (path, label, options {value: shown text}, group, help).
 CHOICES: dict[str, tuple[str, str, dict[str, str], str, str]] = {
+    "in_rules": (
+        "requirement.rules",
+        "Rule set",
+        {name: r.title for name, r in RULE_SETS.items()},
+        "requirement",
+        "Where the limits left empty come from: 'practice' for real missions (free lift 15 % "
+        "of gross lift, limits scaled to the tether length), 'thesis' for the calibrated preset "
+        "of Mahmood (2020). Method page: sources of every value.",
+    ),
     "in_shape": (
         "configuration.hull.shape",
         "Hull shape",
@@ -526,7 +616,7 @@ CHOICES: dict[str, tuple[str, str, dict[str, str], str, str]] = {
 }
 
 VOLUME_MODE_KEY = "in_volume_mode"
-VOLUME_MODES = {"given": "Given", "sized": "Sized to meet the blow-by limit"}
+VOLUME_MODES = {"given": "Given", "sized": "Sized: smallest hull meeting every constraint"}
 HULL_FABRIC_KEY, FIN_FABRIC_KEY, TETHER_KEY = "in_hull_fabric", "in_fin_fabric", "in_tether"
 SUBMIT_KEY = "in_submit"
 
@@ -554,6 +644,8 @@ _FIELD_GROUP = {
     "Requirement.altitude": "requirement",
     "Requirement.site_elevation": "requirement",
     "Requirement.isa_offset": "requirement",
+    "Requirement.site_temperature": "requirement",
+    "Requirement.rules": "requirement",
     "Configuration.gas_price": "gas",
     "Configuration.misc_mass_ratio": "advanced",
     "Configuration.tether_segments": "advanced",
