@@ -11,29 +11,22 @@ Typical use::
     res = simulate(system, wind, 150.0, guess=engine_guess(system, d, 10.0))
     res.signal("x_C"), res.signal("theta"), res.stats_table()
 
-Modules: :mod:`.wind` (profiles, ramps, gusts, Dryden), :mod:`.tether` (lumped-mass line),
-:mod:`.model` (point aerostat, rigid hull, system assembly), :mod:`.solver` (TR-BDF2, banded
-Jacobian), :mod:`.simulate` (equilibrium, runs, results, summaries), :mod:`.linearise` (modes),
-:mod:`.cases` (reference cases R1-R4 and the thesis design), :mod:`.moordyn_check` (optional
-cross-check). The numba kernels compile on first use and are cached on disk (``cache=True``);
-:func:`warm_up` compiles them ahead (e.g. when building a container image).
+Modules: :mod:`.wind` (profiles, ramps, gusts, the wind kernels), :mod:`.turbulence` (MIL-HDBK-1797
+Dryden field with IEC 61400-1 coherence), :mod:`.tether` (lumped-mass line), :mod:`.bodies`
+(point aerostat, rigid hull), :mod:`.kernel` (equations of motion), :mod:`.system` (assembly),
+:mod:`.solver` (TR-BDF2, banded Jacobian), :mod:`.simulate` (equilibrium, runs), :mod:`.results`
+(time histories, statistics, events, limits), :mod:`.linearise` (modes), :mod:`.cases`
+(reference cases R1-R4), :mod:`.thesis` (the thesis comparison), :mod:`.scenarios` (runs from
+plain settings: the app and the CLI), :mod:`.moordyn_check` (live MoorDyn cross-check).
+
+Importing the package has no side effects. The numba kernels compile on first use and are cached
+on disk (``cache=True``); the first :class:`DynamicSystem` of a process drops stale cache files
+(:mod:`.kernel_cache`), and :func:`warm_up` compiles everything ahead (server start, image build).
 """
 
-from ._cache import ensure_fresh_cache
-
-ensure_fresh_cache()
-
-from .linearise import Linearisation, Mode, linearise  # noqa: E402
-from .model import (  # noqa: E402
-    Atmosphere,
-    DynamicSystem,
-    HullModel,
-    PointAerostat,
-    ellipsoid_hull,
-    hull_from_airframe,
-    system_from_design,
-)
-from .simulate import (  # noqa: E402
+from .bodies import HullModel, PointAerostat, ellipsoid_hull, hull_from_airframe
+from .linearise import Linearisation, Mode, linearise
+from .simulate import (
     SIGNALS,
     SimulationResult,
     SolverOptions,
@@ -45,8 +38,9 @@ from .simulate import (  # noqa: E402
     straight_guess,
     straight_state,
 )
-from .tether import TetherModel  # noqa: E402
-from .wind import (  # noqa: E402
+from .system import Atmosphere, DynamicSystem, system_from_design
+from .tether import TetherModel
+from .wind import (
     DrydenTurbulence,
     Gust,
     MeanProfile,
@@ -56,10 +50,14 @@ from .wind import (  # noqa: E402
 )
 
 
-def warm_up() -> None:
-    """Compile (or load from the disk cache) every numba kernel with two tiny runs."""
+def warm_up() -> float:
+    """Compile (or load from the disk cache) every numba kernel with tiny runs; returns the
+    seconds it took."""
+    import time
+
     from . import cases
 
+    t0 = time.perf_counter()
     system = cases.case_p_system(4)
     simulate(system, cases.r3_wind(), 1.0, initial_state=straight_state(system, (0.0, 319.5)))
     hull = ellipsoid_hull()
@@ -68,6 +66,7 @@ def warm_up() -> None:
     turb = WindScenario(SpeedSchedule.constant(5.0), turbulence=DrydenTurbulence(fade_in=0.0))
     simulate(hs, turb, 1.0, initial_state=straight_state(hs, (0.0, 300.3)))
     linearise(system, 5.0)
+    return time.perf_counter() - t0
 
 
 __all__ = [

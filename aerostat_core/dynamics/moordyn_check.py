@@ -17,7 +17,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .model import PointAerostat
+from .bodies import PointAerostat
 from .tether import TetherModel
 from .wind import MeanProfile, SpeedSchedule
 

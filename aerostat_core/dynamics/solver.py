@@ -6,7 +6,9 @@ the surge mode has a period of ~60 s). Explicit schemes (MoorDyn's RK2 at dt = 2
 that stiffness with millions of steps; scipy's Radau/BDF with a finite-difference Jacobian pay
 in Python overhead (~40 s for a 300 s case). Here:
 
-* the right-hand side is a numba kernel (:func:`.model.rhs_kernel`);
+* the right-hand side is a numba kernel; the integrator sees the model only through
+  ``rhs_kernel(t, y, dy, data, diag)`` and ``check_kernel(t, y, data, diag)`` (:mod:`.kernel`):
+  ``data`` and ``diag`` are opaque, no index of the aerostat model appears here;
 * TR-BDF2 (Bank et al. 1985; Hosea & Shampine 1996, MATLAB's ode23tb): a one-step, L-stable,
   second-order ESDIRK with an embedded third-order error estimate. One Newton matrix
   W = I - h d J serves both implicit stages, L-stability damps the axial ringing in one step,
@@ -31,17 +33,9 @@ import math
 import numpy as np
 from numba import njit
 
-from ._layout import (
-    P_AERO_AX,
-    P_AERO_CF,
-    P_AERO_FIN,
-    P_AERO_INV,
-    P_MODE,
-    P_NSEG,
-    P_THETA_MAX,
-)
-from .model import ND, rhs_kernel
-from .wind import NT, wind_time_terms
+# The only two model functions the integrator calls; bound statically so numba can cache the
+# compiled integrator (a function passed as an argument would be recompiled in every process).
+from .kernel import ND, check_kernel, rhs_kernel
 
 GAMMA = 2.0 - math.sqrt(2.0)
 D_COEF = GAMMA / 2.0
@@ -69,7 +63,6 @@ STATUS = {
     4: "pitch beyond the model's limit: the aerostat diverged",
     5: "the aerostat or a tether node went below the winch level (ground not modelled)",
     6: "singular Newton matrix",
-    7: "the relative wind reversed on the hull (outside the aerodynamic model)",
 }
 
 
@@ -130,7 +123,7 @@ def band_solve(a, n, kl, ku, piv, b):  # pragma: no cover - numba
 
 
 @njit(cache=True)
-def band_jacobian(y, f0, data, wt, kl, ku, jac, scale):  # pragma: no cover - numba
+def band_jacobian(t, y, f0, data, kl, ku, jac, scale):  # pragma: no cover - numba
     """Banded Jacobian df/dy by forward differences with column colouring.
 
     Columns j and j' share a kernel call when |j - j'| >= kl + ku + 1 (their row supports cannot
@@ -148,7 +141,7 @@ def band_jacobian(y, f0, data, wt, kl, ku, jac, scale):  # pragma: no cover - nu
             h = 1.4901161193847656e-08 * max(abs(y[j]), scale[j])
             yp[j] = y[j] + h
             hs[j] = yp[j] - y[j]
-        rhs_kernel(yp, fp, data, wt, diag)
+        rhs_kernel(t, yp, fp, data, diag)
         for j in range(gi, n, ng):
             yp[j] = y[j]
             for i in range(max(0, j - ku), min(n, j + kl + 1)):
@@ -168,32 +161,6 @@ def _wnorm(v, y0, y1, atol, rtol):  # pragma: no cover - numba
 
 
 @njit(cache=True)
-def check_state(y, data, diag):  # pragma: no cover - numba
-    """0 if the state is physical, else a ``STATUS`` code (3, 4, 5, 7)."""
-    prm = data[0]
-    for i in range(y.size):
-        if not math.isfinite(y[i]):
-            return 3
-    n = int(prm[P_NSEG])
-    for i in range(1, n):
-        if y[4 * (i - 1) + 1] < -1.0:
-            return 5
-    b = 4 * (n - 1)
-    if prm[P_MODE] > 0.0:
-        if abs(y[b + 2]) > prm[P_THETA_MAX]:
-            return 4
-        if diag[10] < 0.0:
-            return 5
-        aero = prm[P_AERO_INV] + prm[P_AERO_AX] + prm[P_AERO_CF] + prm[P_AERO_FIN]
-        if aero > 0.0 and diag[1] > 2.0 and abs(diag[0]) > 0.5 * math.pi:
-            return 7
-    else:
-        if y[b + 1] < 0.0:
-            return 5
-    return 0
-
-
-@njit(cache=True)
 def _build_w(jac, wmat, n, kl, ku, hd):  # pragma: no cover - numba
     uw = ku + kl
     for i in range(n):
@@ -206,14 +173,14 @@ def _build_w(jac, wmat, n, kl, ku, hd):  # pragma: no cover - numba
 
 
 @njit(cache=True)
-def _newton(z, base, hd, tt, data, wt, wmat, n, kl, ku, piv, yref, atol, rtol, kappa, maxit,
+def _newton(z, base, hd, tt, data, wmat, n, kl, ku, piv, yref, atol, rtol, kappa, maxit,
             eta0, fz, res, diag):  # pragma: no cover - numba
     """Solve z = base + hd f(tt, z) by simplified Newton. Returns (ok, iterations, eta, rate)."""
     dn_old = 0.0
     eta = max(eta0, 1e-16) ** 0.8
     rate = 0.0
     for it in range(maxit):
-        rhs_kernel(z, fz, data, wt, diag)
+        rhs_kernel(tt, z, fz, data, diag)
         for i in range(n):
             res[i] = base[i] + hd * fz[i] - z[i]
         band_solve(wmat, n, kl, ku, piv, res)
@@ -249,7 +216,7 @@ def integrate_chunk(fs, y, f, t_end, data, opts, atol, stops, out_t, out_y, out_
     t_end : float
         Stop time of this call [s].
     data : tuple
-        Kernel data (:meth:`.model.DynamicSystem.data`).
+        Model data, passed through to the model functions unread.
     opts : ndarray (O_SIZE,)
         rtol, h_max, h_min, step budget of this call, Newton tolerance kappa, Jacobian refresh
         interval (accepted steps), max Newton iterations.
@@ -281,8 +248,6 @@ def integrate_chunk(fs, y, f, t_end, data, opts, atol, stops, out_t, out_y, out_
     t = fs[F_T]
     h = fs[F_H]
     eta = fs[F_ETA]
-    wt = np.empty(NT)
-    wt2 = np.empty(NT)
     z2 = np.empty(n)
     z3 = np.empty(n)
     base = np.empty(n)
@@ -292,9 +257,6 @@ def integrate_chunk(fs, y, f, t_end, data, opts, atol, stops, out_t, out_y, out_
     k3 = np.empty(n)
     err = np.empty(n)
     diag = np.empty(ND)
-    wpar = data[1]
-    sched = data[2]
-    turb = data[3]
     nsteps = 0
     hd = 0.0
     w_ok = False
@@ -323,8 +285,7 @@ def integrate_chunk(fs, y, f, t_end, data, opts, atol, stops, out_t, out_y, out_
             break
         # Jacobian and Newton matrix
         if fs[F_STALE] > 0.0:
-            wind_time_terms(t, wpar, sched, turb, wt)
-            stats[S_FEVAL] += band_jacobian(y, f, data, wt, kl, ku, jac, scale)
+            stats[S_FEVAL] += band_jacobian(t, y, f, data, kl, ku, jac, scale)
             stats[S_JAC] += 1
             fs[F_STALE] = 0.0
             fs[F_AGE] = 0.0
@@ -339,22 +300,20 @@ def integrate_chunk(fs, y, f, t_end, data, opts, atol, stops, out_t, out_y, out_
             w_ok = True
             h_w = h
         # stage 2: trapezoidal rule to t + gamma h
-        wind_time_terms(t + GAMMA * h, wpar, sched, turb, wt)
         for i in range(n):
             base[i] = y[i] + hd * f[i]
             z2[i] = y[i] + GAMMA * h * f[i]
-        ok, its, eta2, rate = _newton(z2, base, hd, t + GAMMA * h, data, wt, wmat, n, kl, ku,
+        ok, its, eta2, rate = _newton(z2, base, hd, t + GAMMA * h, data, wmat, n, kl, ku,
                                       piv, y, atol, rtol, kappa, maxit, eta, fz, res, diag)
         stats[S_FEVAL] += its
         if ok:
             for i in range(n):
                 k2[i] = (z2[i] - base[i]) / hd
             # stage 3: BDF2 to t + h
-            wind_time_terms(t + h, wpar, sched, turb, wt2)
             for i in range(n):
                 base[i] = y[i] + h * W_COEF * (f[i] + k2[i])
                 z3[i] = base[i] + hd * k2[i]
-            ok, its3, eta, rate3 = _newton(z3, base, hd, t + h, data, wt2, wmat, n, kl, ku, piv,
+            ok, its3, eta, rate3 = _newton(z3, base, hd, t + h, data, wmat, n, kl, ku, piv,
                                            y, atol, rtol, kappa, maxit, eta2, fz, res, diag)
             stats[S_FEVAL] += its3
             its = max(its, its3)
@@ -390,8 +349,7 @@ def integrate_chunk(fs, y, f, t_end, data, opts, atol, stops, out_t, out_y, out_
                 h11 = s * s * (s - 1.0)
                 for i in range(n):
                     out_y[io, i] = h00 * y[i] + h10 * h * f[i] + h01 * z3[i] + h11 * h * k3[i]
-                wind_time_terms(to, wpar, sched, turb, wt2)
-                rhs_kernel(out_y[io], fz, data, wt2, out_d[io])
+                rhs_kernel(to, out_y[io], fz, data, out_d[io])
             io += 1
         stats[S_IOUT] = io
         t = t + h
@@ -404,16 +362,14 @@ def integrate_chunk(fs, y, f, t_end, data, opts, atol, stops, out_t, out_y, out_
         fs[F_AGE] += 1.0
         if hit and target != t_end:
             # the input's slope jumps here: restart with the right-hand derivative
-            wind_time_terms(t + 1e-9 * max(1.0, abs(t)), wpar, sched, turb, wt)
-            rhs_kernel(y, f, data, wt, diag)
+            rhs_kernel(t + 1e-9 * max(1.0, abs(t)), y, f, data, diag)
             stats[S_FEVAL] += 1
             fs[F_STALE] = 1.0
         else:
             # a fresh derivative, not the algebraic k3: the latter carries the Newton error / hd
-            wind_time_terms(t, wpar, sched, turb, wt)
-            rhs_kernel(y, f, data, wt, diag)
+            rhs_kernel(t, y, f, data, diag)
             stats[S_FEVAL] += 1
-        code = check_state(y, data, diag)
+        code = check_kernel(t, y, data, diag)
         if code != 0:
             stats[S_STATUS] = code
             break

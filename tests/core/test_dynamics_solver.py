@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 from aerostat_core.dynamics import cases
-from aerostat_core.dynamics.model import _dense_fd, system_from_design
+from aerostat_core.dynamics.system import dense_jacobian, system_from_design
 from aerostat_core.dynamics.simulate import (
     SolverOptions,
     engine_guess,
@@ -35,7 +35,7 @@ def test_jacobian_band_contains_every_coupling(design, hull):
     y, _ = equilibrium(system, field, guess)
     rng = np.random.default_rng(1)
     y = y + rng.normal(scale=0.05, size=y.size)
-    jac = _dense_fd(system, y, field)
+    jac = dense_jacobian(system, y, field)
     kl, ku = system.structure()
     i, j = np.nonzero(np.abs(jac) > 1e-12 * np.abs(jac).max())
     assert np.max(i - j) == kl
