@@ -7,7 +7,6 @@ import numpy as np
 import pytest
 
 from aerostat_core.dynamics import cases
-from aerostat_core.dynamics.system import dense_jacobian, system_from_design
 from aerostat_core.dynamics.simulate import (
     SolverOptions,
     engine_guess,
@@ -17,6 +16,7 @@ from aerostat_core.dynamics.simulate import (
     straight_guess,
 )
 from aerostat_core.dynamics.solver import band_lu, band_solve
+from aerostat_core.dynamics.system import dense_jacobian, system_from_design
 from aerostat_core.dynamics.wind import Gust, SpeedSchedule, WindScenario
 
 
