@@ -10,6 +10,7 @@ from dataclasses import replace
 from pathlib import Path
 
 from .design import Design, design
+from .dynamics import cli as simulate_cli
 from .inputs import Configuration, Requirement
 from .io import design_from_json, rows_to_csv
 
@@ -82,12 +83,15 @@ def _parser() -> argparse.ArgumentParser:
     d.add_argument("--volume", type=float, help="hull volume [m3] (default: sized)")
     d.add_argument("--config", type=Path, help="JSON design file with every input")
     d.add_argument("--csv", type=Path, help="write geometry, mass and performance CSV here")
+    simulate_cli.add_parser(sub)  # python -m aerostat_core simulate (aerostat_core.dynamics.cli)
     return p
 
 
 def main(argv: list[str] | None = None) -> int:
     """Entry point; returns the exit code (0 ok, 2 bad input)."""
     args = _parser().parse_args(argv)
+    if args.command == "simulate":
+        return args.handler(args)
     try:
         if args.config is not None:
             try:

@@ -24,38 +24,44 @@ on disk (``cache=True``); the first :class:`DynamicSystem` of a process drops st
 (:mod:`.kernel_cache`), and :func:`warm_up` compiles everything ahead (server start, image build).
 """
 
-from .bodies import HullModel, PointAerostat, ellipsoid_hull, hull_from_airframe
-from .linearise import Linearisation, Mode, linearise
-from .simulate import (
-    SIGNALS,
-    SimulationResult,
-    SolverOptions,
-    engine_guess,
-    equilibrium,
-    response_metrics,
-    signal_stats,
-    simulate,
-    straight_guess,
-    straight_state,
-)
-from .system import Atmosphere, DynamicSystem, system_from_design
-from .tether import TetherModel
-from .wind import (
-    DrydenTurbulence,
-    Gust,
-    MeanProfile,
-    SpeedSchedule,
-    WindScenario,
-    dryden_parameters,
-)
+from importlib import import_module
+
+#: Public names -> the module that defines them (imported on first use: ``import
+#: aerostat_core.dynamics`` loads neither numba nor a kernel).
+_EXPORTS = {
+    "HullModel": "bodies", "PointAerostat": "bodies", "ellipsoid_hull": "bodies",
+    "hull_from_airframe": "bodies", "point_from_design": "bodies",
+    "Linearisation": "linearise", "Mode": "linearise", "linearise": "linearise",
+    "SIGNALS": "results", "SimulationResult": "results", "response_metrics": "results",
+    "signal_stats": "results", "Limits": "results", "limit_flags": "results",
+    "SolverOptions": "options",
+    "engine_guess": "simulate", "equilibrium": "simulate", "simulate": "simulate",
+    "straight_guess": "simulate", "straight_state": "simulate", "warm_kernels": "simulate",
+    "Atmosphere": "system", "DynamicSystem": "system", "system_from_design": "system",
+    "TetherModel": "tether",
+    "DrydenTurbulence": "wind", "Gust": "wind", "MeanProfile": "wind", "SpeedSchedule": "wind",
+    "WindScenario": "wind", "dryden_parameters": "wind",
+}
+
+
+def __getattr__(name: str):
+    if name in _EXPORTS:
+        return getattr(import_module(f".{_EXPORTS[name]}", __name__), name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
 def warm_up() -> float:
-    """Compile (or load from the disk cache) every numba kernel with tiny runs; returns the
-    seconds it took."""
+    """Compile (or load from the disk cache) every numba kernel with tiny runs (a point case, a
+    hull in spatial turbulence, a linearisation); returns the seconds it took."""
     import time
 
     from . import cases
+    from .bodies import ellipsoid_hull
+    from .linearise import linearise
+    from .simulate import simulate, straight_state
+    from .system import Atmosphere, DynamicSystem
+    from .tether import TetherModel
+    from .wind import DrydenTurbulence, SpeedSchedule, WindScenario
 
     t0 = time.perf_counter()
     system = cases.case_p_system(4)
@@ -69,11 +75,4 @@ def warm_up() -> float:
     return time.perf_counter() - t0
 
 
-__all__ = [
-    "SIGNALS", "Atmosphere", "DrydenTurbulence", "DynamicSystem", "Gust", "HullModel",
-    "Linearisation", "MeanProfile", "Mode", "PointAerostat", "SimulationResult", "SolverOptions",
-    "SpeedSchedule", "TetherModel", "WindScenario", "dryden_parameters", "ellipsoid_hull",
-    "engine_guess", "equilibrium", "hull_from_airframe", "linearise", "response_metrics",
-    "signal_stats", "simulate", "straight_guess", "straight_state", "system_from_design",
-    "warm_up",
-]
+__all__ = sorted([*_EXPORTS, "warm_up"])

@@ -26,7 +26,7 @@ Aerodynamics (dynamics.md §1.3): the static engine's functions tabulated agains
 drag at O; the viscous cross-flow term as strips with the local normal velocity w - nu_w,z(x_k) -
 q x_k; the fins with the local velocity at their aerodynamic centre. When the wind varies along the
 wind direction (turbulence, convected gusts) each strip and the fins take the wind at their own
-position. The Munk moment is counted once: the J&D inviscid term already contains it, so the
+position (the strips interpolate it between ``N_STATIONS`` stations along the hull). The Munk moment is counted once: the J&D inviscid term already contains it, so the
 Kirchhoff entry is only used with the aerodynamics off (energy check V4).
 
 Point aerostat (dynamics.md §3.1 "case P", MoorDyn point): mass M, buoyancy rho V g, drag
@@ -119,6 +119,8 @@ DIAG_NAMES = (
     "tension_min_segment",  # segment with the smallest tension, 1 = at the winch [-]
 )
 ND = len(DIAG_NAMES)
+#: Stations along the hull where the cross-flow strips sample a spatially varying wind [-].
+N_STATIONS = 6
 
 
 @njit(cache=True)
@@ -279,6 +281,7 @@ def rhs_kernel(t, y, dy, data, diag):  # pragma: no cover - numba
     azw = wo[5]
     # inputs that vary along the wind: every strip and the fins see their own wind
     spatial = wpar[W_TURB_ON] > 0.0 or (wpar[W_GUST_ON] > 0.0 and wpar[W_GUST_CONV] > 0.0)
+    nwz_st = np.empty(N_STATIONS)
     nwx = -c * ux + s * uz
     nwz = -s * ux - c * uz
     ur = u - nwx
@@ -311,11 +314,27 @@ def rhs_kernel(t, y, dy, data, diag):  # pragma: no cover - numba
         fx -= q0 * cd * table_lookup(tab, T_A_AX, alpha, al0, dal)
     if prm[P_AERO_CF] > 0.0:
         kc = 0.5 * rho * prm[P_CDC]
-        for k in range(strips.shape[1]):
+        ns = strips.shape[1]
+        x_hi = strips[0, 0]
+        x_lo = strips[0, 0]
+        for k in range(ns):
+            x_hi = max(x_hi, strips[0, k])
+            x_lo = min(x_lo, strips[0, k])
+        dxs = (x_hi - x_lo) / (N_STATIONS - 1)
+        if spatial:
+            # body-z wind at N_STATIONS points along the hull, linear in between (the strips are
+            # 0.3 m apart; the stations ~2 m, a quarter of a 1 Hz wavelength at 10 m/s)
+            for j in range(N_STATIONS):
+                xj = x_lo + j * dxs
+                wind_point(t, xo - c * xj, zo + s * xj, wpar, wt, turb, wo)
+                nwz_st[j] = -s * wo[0] - c * wo[1]
+        for k in range(ns):
             xk = strips[0, k]
             if spatial:
-                wind_point(t, xo - c * xk, zo + s * xk, wpar, wt, turb, wo)
-                wl = w + s * wo[0] + c * wo[1] - q * xk
+                sj = min(max((xk - x_lo) / dxs, 0.0), N_STATIONS - 1.0)
+                j0 = min(int(sj), N_STATIONS - 2)
+                fj = sj - j0
+                wl = w - (nwz_st[j0] * (1.0 - fj) + nwz_st[j0 + 1] * fj) - q * xk
             else:
                 wl = wr - q * xk
             dn = kc * strips[1, k] * wl * abs(wl)

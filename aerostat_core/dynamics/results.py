@@ -263,13 +263,110 @@ class SimulationResult:
             out.append(row)
         return out
 
-    def to_csv(self, names=None) -> str:
-        """CSV text of the time histories (one row per sample, units in the header)."""
+    def to_csv(self, names=None, header: dict | None = None) -> str:
+        """CSV text of the time histories (one row per sample, units in the column names),
+        preceded by ``# key = value`` lines: ``header`` (scenario and parameters), the status
+        and the slack events."""
         names = names or self.signal_names()
         cols = ["t_s"] + [f"{k}_{SIGNALS[k][1].replace('/', '_')}" for k in names]
         data = np.column_stack([self.t] + [self.signal(k) for k in names])
-        lines = [",".join(cols)]
+        meta = dict(header or {})
+        meta["status"] = self.message
+        meta["slack_events"] = "; ".join(
+            f"segment {e['segment']} slack {e['start_s']:.1f}-{e['end_s']:.1f} s"
+            for e in self.slack_events()) or "none"
+        lines = [f"# {k} = {_csv_text(v)}" for k, v in meta.items()]
+        lines.append(",".join(cols))
         lines += [",".join(f"{v:.6g}" for v in row) for row in data]
         return "\n".join(lines) + "\n"
 
+    def slack_events(self) -> list[dict]:
+        """Intervals with a slack tether segment (tension <= 0 somewhere), from the samples:
+        dicts with start_s, end_s [s] and segment (the slackest one, 1 = at the winch)."""
+        slack = self.d("tension_min") <= 0.0
+        seg = self.d("tension_min_segment")
+        out = []
+        i = 0
+        n = slack.size
+        while i < n:
+            if slack[i]:
+                j = i
+                while j + 1 < n and slack[j + 1]:
+                    j += 1
+                k = i + int(np.argmin(self.d("tension_min")[i:j + 1]))
+                out.append({"start_s": float(self.t[i]), "end_s": float(self.t[j]),
+                            "segment": int(seg[k])})
+                i = j + 1
+            else:
+                i += 1
+        return out
 
+
+def _csv_text(v) -> str:
+    """One header value as CSV-safe plain text (no newlines, no leading formula characters)."""
+    txt = str(v).replace("\n", " ").replace("\r", " ")
+    return "'" + txt if txt[:1] in ("=", "+", "-", "@") and not _is_number(txt) else txt
+
+
+def _is_number(txt: str) -> bool:
+    try:
+        float(txt)
+    except ValueError:
+        return False
+    return True
+
+
+@dataclass(frozen=True)
+class Limits:
+    """Operating limits a run is checked against.
+
+    fin_stall_deg [deg]: fin stall angle; safe_working_load [N]: breaking strength / required
+    safety factor; min_height [m]: lowest accepted height of the confluence point (the static
+    height at the design wind, where the blow-by reaches the requirement's limit, unless the
+    requirement states an altitude-loss limit)."""
+
+    fin_stall_deg: float
+    safe_working_load: float
+    min_height: float
+
+    @classmethod
+    def from_design(cls, design) -> Limits:
+        """The limits of a static-engine design (fins, tether, requirement)."""
+        req = design.requirement
+        cfg = design.configuration
+        swl = cfg.tether.breaking_strength / req.min_tether_safety_factor
+        loss = getattr(req, "altitude_loss_limit", None)
+        length = float(design.airframe.tether_length)
+        if loss is not None:
+            zmin = length - float(loss)
+        else:
+            rows = design.performance.rows()
+            row = min(rows, key=lambda r: abs(r["wind_speed_m_s"] - req.design_wind))
+            zmin = float(row["flying_height_m"])
+        return cls(float(cfg.aero.fin_stall_angle_deg), float(swl), zmin)
+
+
+def limit_flags(res: SimulationResult, limits: Limits) -> list[dict]:
+    """One row per limit: limit, value, unit, worst (the run's extreme), exceeded (bool),
+    first_s (first time it was exceeded, or None) and the fraction of samples beyond it."""
+    t = res.t
+    rows = []
+
+    def row(name, unit, limit, series, above=True):
+        bad = series > limit if above else series < limit
+        worst = float(np.max(series) if above else np.min(series))
+        rows.append({"limit": name, "unit": unit, "value": float(limit), "worst": worst,
+                     "exceeded": bool(np.any(bad)),
+                     "first_s": float(t[np.argmax(bad)]) if np.any(bad) else None,
+                     "fraction": float(np.mean(bad)) if bad.size else 0.0})
+
+    if res.system.is_hull:
+        row("|alpha| at the fins beyond stall", "deg", limits.fin_stall_deg,
+            np.abs(res.signal("alpha_fin")))
+    row("tension above the safe working load", "N", limits.safe_working_load,
+        res.signal("tension_max"))
+    row("a slack tether segment (tension at zero)", "N", 1e-9, res.d("tension_min"), above=False)
+    rows[-1]["value"] = 0.0
+    row("altitude below the requirement's lowest height", "m", limits.min_height,
+        res.signal("z_C"), above=False)
+    return rows
