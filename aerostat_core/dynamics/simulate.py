@@ -58,7 +58,7 @@ from .wind import WindField, WindScenario
 __all__ = ["METHODS", "SIGNALS", "STATUS_DRIVER", "EquilibriumInfo", "ResponseMetrics",
            "SignalStats", "SimulationResult", "SolverOptions", "engine_guess", "equilibrium",
            "index_sets", "response_metrics", "signal_stats", "simulate", "straight_guess",
-           "straight_state", "warm_kernels"]
+           "straight_state", "kernels_warm", "warm_kernels"]
 
 
 # --------------------------------------------------------------------------------------------
@@ -373,6 +373,11 @@ CHUNK_WALL = 0.2
 _WARM: list[bool] = []
 
 
+def kernels_warm() -> bool:
+    """True when :func:`warm_kernels` has run in this process."""
+    return bool(_WARM)
+
+
 def warm_kernels() -> float:
     """Load (or compile, the first time on a machine) every kernel of a run; returns the seconds
     it took (0 after the first call in a process). :func:`simulate` calls it before starting its
@@ -397,6 +402,9 @@ def warm_kernels() -> float:
     integrate_chunk(fs, y, f, 1e-3, data, o, np.full(n, 1e-5), np.zeros(0), out_t,
                     np.empty((1, n)), np.empty((1, ND)), stats, np.zeros((n, n)),
                     np.zeros((n, n)), np.zeros(n, np.int64), np.ones(n), kl, ku)
+    band_jacobian(0.0, y, f, data, kl, ku, np.zeros((n, n)), np.ones(n))
+    system.nodes(y)
+    WindScenario.steady(5.0).realise(319.5, 1.0).at(0.0, 100.0)
     _WARM.append(True)
     return time.perf_counter() - t0
 
