@@ -10,7 +10,7 @@ circle [-180, 180] deg, so a reversed relative wind (a gust or turbulence that o
 from behind) stays inside the model: the axial drag takes the sign of cos(alpha) (it pushes
 forward when the wind comes from the tail), and past the fin stall angle the fins follow a
 Viterna & Corrigan (1982) flat-plate extension (lift C_L,s sin 2a / sin 2a_s, extra drag
-C_D,max (sin^2 a - sin^2 a_s), C_D,max = 1.11 + 0.018 AR), continuous at the stall angle.
+C_D,max (sin^2 a - sin^2 a_s)_+, C_D,max = 1.11 + 0.018 AR), continuous at the stall angle.
 """
 
 from __future__ import annotations
@@ -415,7 +415,7 @@ def fin_post_stall(alpha, lift, drag, stall_angle: float, lifting_area: float,
     """Extend per-unit-q fin lift and drag [m2] beyond stall to +-180 deg (module docstring).
 
     For |alpha| <= alpha_s the inputs are kept. Beyond: L = L_s sin(2 alpha)/sin(2 alpha_s) (flat-
-    plate shape, the sign of alpha kept), D = D(alpha) + S C_D,max (sin^2 alpha - sin^2 alpha_s),
+    plate shape, the sign of alpha kept), D = D_s + S C_D,max (sin^2 alpha - sin^2 alpha_s)_+,
     C_D,max = 1.11 + 0.018 AR. Source: Viterna & Corrigan (1982), NASA CP-2230.
 
     Parameters
@@ -439,8 +439,8 @@ def fin_post_stall(alpha, lift, drag, stall_angle: float, lifting_area: float,
     lift = np.where(beyond, l_s * np.sin(2.0 * np.abs(alpha)) / s2s * np.sign(alpha), lift)
     cdmax = 1.11 + 0.018 * aspect_ratio
     d_s = np.interp(a_s, alpha, drag)
-    drag = np.where(beyond, d_s + lifting_area * cdmax * (np.sin(alpha) ** 2 - math.sin(a_s) ** 2),
-                    drag)
+    extra = np.maximum(np.sin(alpha) ** 2 - math.sin(a_s) ** 2, 0.0)
+    drag = np.where(beyond, d_s + lifting_area * cdmax * extra, drag)
     return lift, drag
 
 
