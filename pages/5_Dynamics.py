@@ -240,7 +240,8 @@ r3 = st.columns(2)
 swl = lim.get("safe_working_load")
 r3[0].plotly_chart(view.time_figure(
     out, ["tension_C", "tension_winch"], "Tether tension", "Tension [N]",
-    hlines=[(swl, "safe working load")] if swl else []), key="dyn_tension")
+    hlines=([(swl, "safe working load")] if swl else [])
+    + ([(0.0, "slack")] if out.get("slack_events") else [])), key="dyn_tension")
 r3[1].plotly_chart(view.time_figure(out, ["wind_x", "wind_z"], "Wind input at the hull",
                                     "Wind [m/s]"), key="dyn_wind")
 

@@ -92,7 +92,7 @@ from .layout import (
     T_N_INV,
 )
 from .tether import air_density, tether_loads
-from .wind import NT, NW, W_GUST_CONV, W_GUST_ON, W_TURB_ON, wind_point, wind_time_terms
+from .wind import NT, W_GUST_CONV, W_GUST_ON, W_TURB_ON, wind_point, wind_time_terms
 
 #: Diagnostic outputs written by the right-hand side.
 DIAG_NAMES = (
@@ -191,7 +191,7 @@ def rhs_kernel(t, y, dy, data, diag):  # pragma: no cover - numba
     prm, wpar, sched, turb, tab, strips, rho_tab, cdv = data
     wt = np.empty(NT)
     wind_time_terms(t, wpar, sched, wt)
-    wo = np.empty(NW)
+
     n = int(prm[P_NSEG])
     pos = np.empty((n + 1, 2))
     vel = np.empty((n + 1, 2))
@@ -233,9 +233,7 @@ def rhs_kernel(t, y, dy, data, diag):  # pragma: no cover - numba
         # ---- point aerostat -------------------------------------------------------------
         z = pos[n, 1]
         rho = air_density(z, prm, rho_tab)
-        wind_point(t, pos[n, 0], z, wpar, wt, turb, wo)
-        ux = wo[0]
-        uz = wo[1]
+        ux, uz, _dux, _duz, axw, azw = wind_point(t, pos[n, 0], z, wpar, wt, turb)
         rx = ux - vel[n, 0]
         rz = uz - vel[n, 1]
         vr = math.sqrt(rx * rx + rz * rz)
@@ -246,8 +244,8 @@ def rhs_kernel(t, y, dy, data, diag):  # pragma: no cover - numba
         ca = prm[P_PCA] * prm[P_RHO_REF] * vol
         if prm[P_POINT_FK] > 0.0:
             kf = ca + rho * vol
-            fx += kf * wo[4]
-            fz += kf * wo[5]
+            fx += kf * axw
+            fz += kf * azw
         meff = prm[P_PM] + ca + 0.5 * m_node
         dy[b] = vel[n, 0]
         dy[b + 1] = vel[n, 1]
@@ -262,7 +260,7 @@ def rhs_kernel(t, y, dy, data, diag):  # pragma: no cover - numba
         diag[15] = 0.0
         diag[16] = 0.0
         diag[17] = 0.0
-        diag[19] = wo[4]
+        diag[19] = axw
         return
     # ---- rigid hull ---------------------------------------------------------------------
     zo = y[b + 1]
@@ -274,11 +272,7 @@ def rhs_kernel(t, y, dy, data, diag):  # pragma: no cover - numba
     s = math.sin(th)
     xo = y[b]
     rho = air_density(zo, prm, rho_tab)
-    wind_point(t, xo, zo, wpar, wt, turb, wo)
-    ux = wo[0]
-    uz = wo[1]
-    axw = wo[4]
-    azw = wo[5]
+    ux, uz, _dux, _duz, axw, azw = wind_point(t, xo, zo, wpar, wt, turb)
     # inputs that vary along the wind: every strip and the fins see their own wind
     spatial = wpar[W_TURB_ON] > 0.0 or (wpar[W_GUST_ON] > 0.0 and wpar[W_GUST_CONV] > 0.0)
     nwz_st = np.empty(N_STATIONS)
@@ -326,8 +320,9 @@ def rhs_kernel(t, y, dy, data, diag):  # pragma: no cover - numba
             # 0.3 m apart; the stations ~2 m, a quarter of a 1 Hz wavelength at 10 m/s)
             for j in range(N_STATIONS):
                 xj = x_lo + j * dxs
-                wind_point(t, xo - c * xj, zo + s * xj, wpar, wt, turb, wo)
-                nwz_st[j] = -s * wo[0] - c * wo[1]
+                wsx, wsz, _d1, _d2, _a1, _a2 = wind_point(t, xo - c * xj, zo + s * xj, wpar, wt,
+                                                          turb)
+                nwz_st[j] = -s * wsx - c * wsz
         for k in range(ns):
             xk = strips[0, k]
             if spatial:
@@ -346,9 +341,10 @@ def rhs_kernel(t, y, dy, data, diag):  # pragma: no cover - numba
     zf = prm[P_ZF]
     if prm[P_AERO_FIN] > 0.0:
         if spatial:
-            wind_point(t, xo - c * xf - s * zf, zo + s * xf - c * zf, wpar, wt, turb, wo)
-            uf = u + c * wo[0] - s * wo[1] + q * zf
-            wf = w + s * wo[0] + c * wo[1] - q * xf
+            wfx, wfz, _d1, _d2, _a1, _a2 = wind_point(t, xo - c * xf - s * zf,
+                                                      zo + s * xf - c * zf, wpar, wt, turb)
+            uf = u + c * wfx - s * wfz + q * zf
+            wf = w + s * wfx + c * wfz - q * xf
         else:
             uf = ur + q * zf
             wf = wr - q * xf

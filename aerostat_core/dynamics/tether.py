@@ -52,7 +52,7 @@ from .layout import (
     P_TPUSH,
     P_W,
 )
-from .wind import NW, wind_point
+from .wind import W_GUST_ON, W_TURB_ON, profile_factor, wind_point
 
 #: Largest axial stiffness used for an "inextensible" (EA = inf) tether [N].
 EA_INEXTENSIBLE = 1.0e8
@@ -233,6 +233,7 @@ def tether_loads(pos, vel, t_now, prm, wpar, wt, turb, rho_tab, force, tension, 
     d = prm[P_D]
     area = 0.25 * math.pi * d * d
     no_push = prm[P_TPUSH] == 0.0
+    mean_only = wpar[W_TURB_ON] == 0.0 and wpar[W_GUST_ON] == 0.0
     for i in range(n + 1):
         force[i, 0] = 0.0
         force[i, 1] = 0.0
@@ -260,7 +261,6 @@ def tether_loads(pos, vel, t_now, prm, wpar, wt, turb, rho_tab, force, tension, 
     buoy = prm[P_TBUOY] > 0.0
     cdn = prm[P_CDN]
     cdt = prm[P_CDT] * math.pi
-    wloc = np.empty(NW)
     for i in range(n + 1):
         z = pos[i, 1]
         rho = air_density(z, prm, rho_tab)
@@ -282,9 +282,13 @@ def tether_loads(pos, vel, t_now, prm, wpar, wt, turb, rho_tab, force, tension, 
                 tn = math.sqrt(tx * tx + tz * tz)
                 tx /= tn
                 tz /= tn
-            wind_point(t_now, pos[i, 0], z, wpar, wt, turb, wloc)
-            ux = wloc[0] - vel[i, 0]
-            uz = wloc[1] - vel[i, 1]
+            if mean_only:  # the mean profile alone: no need for the full point evaluation
+                ux = wt[0] * profile_factor(z, wpar) - vel[i, 0]
+                uz = -vel[i, 1]
+            else:
+                wx, wz, _d1, _d2, _a1, _a2 = wind_point(t_now, pos[i, 0], z, wpar, wt, turb)
+                ux = wx - vel[i, 0]
+                uz = wz - vel[i, 1]
             vq = ux * tx + uz * tz
             qx = vq * tx
             qz = vq * tz

@@ -52,7 +52,7 @@ from .turbulence import (
 __all__ = ["DRYDEN_W20", "FOOT", "KNOT", "NT", "NW", "DrydenParameters", "DrydenTurbulence",
            "Gust", "MeanProfile", "SpeedSchedule", "TurbulenceField", "WindField",
            "WindScenario", "dryden_parameters", "dryden_psd_u", "dryden_psd_w", "profile_factor",
-           "wind_point", "wind_points", "wind_time_terms"]
+           "turbulence_at", "wind_point", "wind_points", "wind_time_terms"]
 
 PROFILE_KINDS = ("uniform", "power", "log")
 RAMP_SHAPES = ("linear", "cosine")
@@ -494,20 +494,61 @@ def wind_time_terms(t, wpar, sched, out):  # pragma: no cover - numba
 
 
 @njit(cache=True)
-def _hermite_level(turb, row, k0, k1, h00, h10, h01, h11, d00, d10, d01, d11, h):
-    # pragma: no cover - numba
-    a0 = turb[row, k0]
-    a1 = turb[row, k1]
-    b0 = turb[row + 1, k0]
-    b1 = turb[row + 1, k1]
-    return (h00 * a0 + h10 * h * b0 + h01 * a1 + h11 * h * b1,
-            d00 * a0 + d10 * b0 + d01 * a1 + d11 * b1)
+def turbulence_at(tau, z, wpar, turb):  # pragma: no cover - numba
+    """u', w' [m/s] and their tau-derivatives [m/s2] of the frozen field at frozen time tau [s]
+    and height z [m] (cubic Hermite in tau, linear between height levels; unfaded)."""
+    n = turb.shape[1]
+    h = wpar[W_TURB_DT]
+    sx = tau / h
+    fl = math.floor(sx)
+    f = sx - fl
+    k0 = int(fl) % n
+    k1 = k0 + 1
+    if k1 == n:
+        k1 = 0
+    f2 = f * f
+    f3 = f2 * f
+    h00 = 2.0 * f3 - 3.0 * f2 + 1.0
+    h10 = (f3 - 2.0 * f2 + f) * h
+    h01 = -2.0 * f3 + 3.0 * f2
+    h11 = (f3 - f2) * h
+    d00 = (6.0 * f2 - 6.0 * f) / h
+    d10 = 3.0 * f2 - 4.0 * f + 1.0
+    d01 = -d00
+    d11 = 3.0 * f2 - 2.0 * f
+    nl = int(wpar[W_TURB_NL])
+    sz = (z - wpar[W_TURB_Z0]) / wpar[W_TURB_DZ]
+    if nl == 1 or sz <= 0.0:
+        la, fz = 0, 0.0
+    elif sz >= nl - 1:
+        la, fz = nl - 1, 0.0
+    else:
+        la = int(sz)
+        fz = sz - la
+    r = 4 * la
+    u = h00 * turb[r, k0] + h10 * turb[r + 1, k0] + h01 * turb[r, k1] + h11 * turb[r + 1, k1]
+    du = d00 * turb[r, k0] + d10 * turb[r + 1, k0] + d01 * turb[r, k1] + d11 * turb[r + 1, k1]
+    w = h00 * turb[r + 2, k0] + h10 * turb[r + 3, k0] + h01 * turb[r + 2, k1] + h11 * turb[r + 3, k1]
+    dw = d00 * turb[r + 2, k0] + d10 * turb[r + 3, k0] + d01 * turb[r + 2, k1] + d11 * turb[r + 3, k1]
+    if fz > 0.0:
+        r += 4
+        u2 = h00 * turb[r, k0] + h10 * turb[r + 1, k0] + h01 * turb[r, k1] + h11 * turb[r + 1, k1]
+        du2 = d00 * turb[r, k0] + d10 * turb[r + 1, k0] + d01 * turb[r, k1] + d11 * turb[r + 1, k1]
+        w2 = (h00 * turb[r + 2, k0] + h10 * turb[r + 3, k0] + h01 * turb[r + 2, k1]
+              + h11 * turb[r + 3, k1])
+        dw2 = (d00 * turb[r + 2, k0] + d10 * turb[r + 3, k0] + d01 * turb[r + 2, k1]
+               + d11 * turb[r + 3, k1])
+        u += fz * (u2 - u)
+        du += fz * (du2 - du)
+        w += fz * (w2 - w)
+        dw += fz * (dw2 - dw)
+    return u, w, du, dw
 
 
-@njit(cache=True)
-def wind_point(t, x, z, wpar, wt, turb, out):  # pragma: no cover - numba
-    """Wind at (x, z) [m] and time t [s] (module docstring), written to ``out`` (``NW``):
-    U_x, U_z [m/s], dU_x/dt, dU_z/dt (local) [m/s2], DU_x/Dt, DU_z/Dt (fluid acceleration) [m/s2].
+@njit(cache=True, inline="always")
+def wind_point(t, x, z, wpar, wt, turb):  # pragma: no cover - numba
+    """Wind at (x, z) [m] and time t [s] (module docstring): the tuple (U_x, U_z [m/s],
+    dU_x/dt, dU_z/dt (local) [m/s2], DU_x/Dt, DU_z/Dt (fluid acceleration) [m/s2]).
     ``wt``: :func:`wind_time_terms` at t."""
     pf = profile_factor(z, wpar)
     ux = wt[0] * pf
@@ -528,69 +569,24 @@ def wind_point(t, x, z, wpar, wt, turb, out):  # pragma: no cover - numba
             ax += wpar[W_GUST_U] * dg
             az += wpar[W_GUST_W] * dg
     if wpar[W_TURB_ON] > 0.0:
-        n = turb.shape[1]
-        h = wpar[W_TURB_DT]
-        tau = t - (x - wpar[W_XREF]) / wpar[W_UC]
-        sx = tau / h
-        fl = math.floor(sx)
-        f = sx - fl
-        k0 = int(fl) % n
-        k1 = (k0 + 1) % n
-        f2 = f * f
-        f3 = f2 * f
-        h00 = 2.0 * f3 - 3.0 * f2 + 1.0
-        h10 = f3 - 2.0 * f2 + f
-        h01 = -2.0 * f3 + 3.0 * f2
-        h11 = f3 - f2
-        d00 = (6.0 * f2 - 6.0 * f) / h
-        d10 = 3.0 * f2 - 4.0 * f + 1.0
-        d01 = (-6.0 * f2 + 6.0 * f) / h
-        d11 = 3.0 * f2 - 2.0 * f
-        nl = int(wpar[W_TURB_NL])
-        sz = (z - wpar[W_TURB_Z0]) / wpar[W_TURB_DZ]
-        if nl == 1 or sz <= 0.0:
-            la, lb, fz = 0, 0, 0.0
-        elif sz >= nl - 1:
-            la, lb, fz = nl - 1, nl - 1, 0.0
-        else:
-            la = int(sz)
-            lb = la + 1
-            fz = sz - la
-        ua, dua = _hermite_level(turb, 4 * la, k0, k1, h00, h10, h01, h11, d00, d10, d01, d11, h)
-        wa, dwa = _hermite_level(turb, 4 * la + 2, k0, k1, h00, h10, h01, h11, d00, d10, d01,
-                                 d11, h)
-        if fz > 0.0:
-            ub, dub = _hermite_level(turb, 4 * lb, k0, k1, h00, h10, h01, h11, d00, d10, d01,
-                                     d11, h)
-            wb, dwb = _hermite_level(turb, 4 * lb + 2, k0, k1, h00, h10, h01, h11, d00, d10, d01,
-                                     d11, h)
-            ua += fz * (ub - ua)
-            dua += fz * (dub - dua)
-            wa += fz * (wb - wa)
-            dwa += fz * (dwb - dwa)
+        u, w, du, dw = turbulence_at(t - (x - wpar[W_XREF]) / wpar[W_UC], z, wpar, turb)
         fd = wt[2]
         dfd = wt[3]
-        ux += fd * ua
-        uz += fd * wa
-        dux += fd * dua + dfd * ua
-        duz += fd * dwa + dfd * wa
-        ax += dfd * ua  # frozen field: only the fade-in's own slope accelerates the air
-        az += dfd * wa
-    out[0] = ux
-    out[1] = uz
-    out[2] = dux
-    out[3] = duz
-    out[4] = ax
-    out[5] = az
+        ux += fd * u
+        uz += fd * w
+        dux += fd * du + dfd * u
+        duz += fd * dw + dfd * w
+        ax += dfd * u  # frozen field: only the fade-in's own slope accelerates the air
+        az += dfd * w
+    return ux, uz, dux, duz, ax, az
 
 
 @njit(cache=True)
 def wind_points(ts, xs, zs, wpar, sched, turb, out):  # pragma: no cover - numba
     """:func:`wind_point` at many (t, x, z) (rows of ``out``)."""
     wt = np.empty(NT)
-    res = np.empty(NW)
     for i in range(ts.size):
         wind_time_terms(ts[i], wpar, sched, wt)
-        wind_point(ts[i], xs[i], zs[i], wpar, wt, turb, res)
+        res = wind_point(ts[i], xs[i], zs[i], wpar, wt, turb)
         for k in range(NW):
             out[i, k] = res[k]
