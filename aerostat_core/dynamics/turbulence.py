@@ -25,7 +25,7 @@ run's own mean profile (physically consistent with the mean wind); the named lev
 moderate / severe (W20 = 15 / 30 / 45 kt) are MIL-HDBK-1797's exceedance levels and are
 independent of the run's mean wind (so a severe level at a 10 m/s mean is 23 % intensity).
 
-Sources: MIL-HDBK-1797 (1997) §4.9.1 / MIL-F-8785C §3.7.2 (low altitude, 8785C length form here);
+Sources: MIL-HDBK-1797 (1997) low-altitude model = MIL-F-8785C §3.7.2 (8785C length form here);
 IEC 61400-1 Ed. 3 (2005) Annex B (coherence); Veers (1988) three-dimensional wind simulation.
 """
 
