@@ -25,9 +25,15 @@ MAX_DESIGN_BYTES = 1_000_000
 
 def add_parser(subparsers) -> argparse.ArgumentParser:
     """Register the ``simulate`` subcommand on an argparse ``subparsers`` object."""
-    p = subparsers.add_parser("simulate", help="simulate the aerostat in gusts, ramps or turbulence")
-    p.add_argument("--scenario", choices=("steady", "varying", "gust", "turbulence"),
-                   default="gust", help="wind scenario (thesis comparison settings)")
+    p = subparsers.add_parser(
+        "simulate", help="simulate the aerostat in gusts, ramps or turbulence"
+    )
+    p.add_argument(
+        "--scenario",
+        choices=("steady", "varying", "gust", "turbulence"),
+        default="gust",
+        help="wind scenario (thesis comparison settings)",
+    )
     p.add_argument("--design", type=Path, help="JSON design file (default: thesis optimised)")
     p.add_argument("--duration", type=float, help="simulated time [s] (default per scenario)")
     p.add_argument("--seed", type=int, default=1, help="turbulence seed [-]")
@@ -57,8 +63,9 @@ def run(args: argparse.Namespace) -> int:
 
     try:
         if args.duration is not None and not 0 < args.duration <= 3600:
-            raise ValueError(f"--duration = {args.duration:g} s is outside the valid range "
-                             "(0, 3600] s")
+            raise ValueError(
+                f"--duration = {args.duration:g} s is outside the valid range (0, 3600] s"
+            )
         if not 0 <= args.seed <= 2**32 - 1:
             raise ValueError(f"--seed = {args.seed} is outside the valid range [0, 4294967295]")
         req = thesis_request(args.scenario, args.seed, args.duration)
@@ -107,9 +114,12 @@ def _print(m: dict, args: argparse.Namespace) -> None:
             f"{m['w_rms_mps']:.2f}",
             f"  tension at C      {m['tension_range_N'][0]:.0f} .. {m['tension_range_N'][1]:.0f} N",
         ]
-        lines += [f"  LIMIT EXCEEDED: {r['limit']} ({r['worst']:.3g} vs {r['value']:.3g} "
-                  f"{r['unit']}, first at {r['first_s']:.1f} s)" for r in m["limits"]
-                  if r["exceeded"]]
+        lines += [
+            f"  LIMIT EXCEEDED: {r['limit']} ({r['worst']:.3g} vs {r['value']:.3g} "
+            f"{r['unit']}, first at {r['first_s']:.1f} s)"
+            for r in m["limits"]
+            if r["exceeded"]
+        ]
         if args.csv is not None:
             lines.append(f"  CSV written to {args.csv}")
         print("\n".join(lines))

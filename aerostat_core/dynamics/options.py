@@ -62,14 +62,20 @@ class SolverOptions:
     def __post_init__(self) -> None:
         if self.method not in METHODS:
             raise ValueError(f"SolverOptions.method = {self.method!r}; valid options {METHODS}")
-        for name, lo, hi in (("rtol", 1e-10, 1e-2), ("atol_position", 1e-12, 1.0),
-                             ("atol_velocity", 1e-12, 1.0), ("atol_angle", 1e-12, 1.0),
-                             ("initial_step", 1e-9, 10.0), ("max_step", 1e-6, 100.0),
-                             ("output_interval", 1e-3, 10.0), ("max_steps", 10, 1e8),
-                             ("wall_time_limit", 1e-3, 1e5), ("jacobian_refresh", 1, 1e4)):
+        for name, lo, hi in (
+            ("rtol", 1e-10, 1e-2),
+            ("atol_position", 1e-12, 1.0),
+            ("atol_velocity", 1e-12, 1.0),
+            ("atol_angle", 1e-12, 1.0),
+            ("initial_step", 1e-9, 10.0),
+            ("max_step", 1e-6, 100.0),
+            ("output_interval", 1e-3, 10.0),
+            ("max_steps", 10, 1e8),
+            ("wall_time_limit", 1e-3, 1e5),
+            ("jacobian_refresh", 1, 1e4),
+        ):
             v = getattr(self, name)
             if not isinstance(v, (int, float)) or not math.isfinite(v) or v < lo or v > hi:
-                raise ValueError(f"SolverOptions.{name} = {v!r} is outside the valid range "
-                                 f"[{lo:g}, {hi:g}]")
-
-
+                raise ValueError(
+                    f"SolverOptions.{name} = {v!r} is outside the valid range [{lo:g}, {hi:g}]"
+                )

@@ -70,8 +70,9 @@ def thesis_request(scenario: str, seed: int = 1, duration: float | None = None) 
     elif scenario == "steady":
         req = default_request("steady", duration=60.0)
     else:
-        raise ValueError(f"scenario = {scenario!r}; valid options "
-                         "('steady', 'varying', 'gust', 'turbulence')")
+        raise ValueError(
+            f"scenario = {scenario!r}; valid options ('steady', 'varying', 'gust', 'turbulence')"
+        )
     if duration is not None:
         req["duration"] = float(duration)
     req["wall"] = 120.0
@@ -92,8 +93,12 @@ def metrics(res: SimulationResult, req: Mapping[str, Any]) -> dict:
     """The CLI's and the comparison's figures of one run (module docstring), plain numbers."""
     t0 = min(window_start(req), float(res.t[-1]))
     sel = res.t >= t0
-    out: dict[str, Any] = {"status": res.message, "ok": bool(res.ok), "window_start_s": t0,
-                           "window_end_s": float(res.t[-1])}
+    out: dict[str, Any] = {
+        "status": res.message,
+        "ok": bool(res.ok),
+        "window_start_s": t0,
+        "window_end_s": float(res.t[-1]),
+    }
     te = event_time(req)
     settle = None
     if te is not None and res.t[-1] > te + 5.0:
@@ -134,20 +139,35 @@ def comparison_rows(runs: Mapping[str, Mapping[str, Any]]) -> list[dict]:
         for key, claim in claims.items():
             ours = m.get(key)
             ratio = None if ours is None else ours / claim
-            rms_key = {"pitch_peak_deg": "pitch_rms_deg", "u_peak_mps": "u_rms_mps",
-                       "w_peak_mps": "w_rms_mps"}.get(key)
+            rms_key = {
+                "pitch_peak_deg": "pitch_rms_deg",
+                "u_peak_mps": "u_rms_mps",
+                "w_peak_mps": "w_rms_mps",
+            }.get(key)
             rms = m.get(rms_key) if rms_key and sc == "turbulence" else None
             label, unit = METRIC_LABELS[key]
-            rows.append({
-                "scenario": sc, "metric": label, "unit": unit, "thesis": claim, "ours": ours,
-                "ratio": ratio, "our_rms": rms,
-                "match": bool(ratio is not None and 1 / MATCH_FACTOR <= ratio <= MATCH_FACTOR),
-                # "settles within 40 s" is an upper bound: a shorter settling time satisfies it
-                "claim_holds": bool(ours is not None and (
-                    ours <= claim * MATCH_FACTOR if key == "settling_time_s"
-                    else 1 / MATCH_FACTOR <= ratio <= MATCH_FACTOR)),
-                "window": f"{m['window_start_s']:.0f}-{m['window_end_s']:.0f} s",
-            })
+            rows.append(
+                {
+                    "scenario": sc,
+                    "metric": label,
+                    "unit": unit,
+                    "thesis": claim,
+                    "ours": ours,
+                    "ratio": ratio,
+                    "our_rms": rms,
+                    "match": bool(ratio is not None and 1 / MATCH_FACTOR <= ratio <= MATCH_FACTOR),
+                    # "settles within 40 s" is an upper bound: a shorter settling time satisfies it
+                    "claim_holds": bool(
+                        ours is not None
+                        and (
+                            ours <= claim * MATCH_FACTOR
+                            if key == "settling_time_s"
+                            else 1 / MATCH_FACTOR <= ratio <= MATCH_FACTOR
+                        )
+                    ),
+                    "window": f"{m['window_start_s']:.0f}-{m['window_end_s']:.0f} s",
+                }
+            )
     return rows
 
 
@@ -155,10 +175,10 @@ def thesis_settings_text() -> dict:
     """One line per scenario describing its settings (page, README, CLI)."""
     return {
         "varying": "10 -> 15 m/s at the aerostat, 5 s linear ramp at t = 20 s, uniform in space "
-                   "(Froude-Krylov and added mass of the accelerating air on), 150 s",
+        "(Froude-Krylov and added mass of the accelerating air on), 150 s",
         "gust": "10 m/s + frozen convected 1 - cos gust, 5 m/s, d_m = 60 m (6 s rise) at "
-                "t = 20 s, 150 s",
+        "t = 20 s, 150 s",
         "turbulence": "15 m/s at the aerostat (the design wind), power law 1/7, MIL-HDBK-1797 "
-                      "Dryden u' + w' with W20 from the profile, spatially varying with IEC "
-                      "61400-1 coherence, seed 1, 20 s fade-in, 600 s (window 60-600 s)",
+        "Dryden u' + w' with W20 from the profile, spatially varying with IEC "
+        "61400-1 coherence, seed 1, 20 s fade-in, 600 s (window 60-600 s)",
     }

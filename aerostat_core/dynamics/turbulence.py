@@ -157,10 +157,9 @@ def cumulative_psd_w(omega, sigma, length, speed):
     return sigma**2 / np.pi * (2.0 * np.arctan(x) - x / (1.0 + x**2))
 
 
-
-
-def iec_coherence(dz, frequency, speed, decay: float = IEC_COHERENCE_DECAY,
-                  length: float = IEC_COHERENCE_LENGTH):
+def iec_coherence(
+    dz, frequency, speed, decay: float = IEC_COHERENCE_DECAY, length: float = IEC_COHERENCE_LENGTH
+):
     """IEC 61400-1 Ed. 3 (Annex B) coherence between two points dz [m] apart.
 
     Coh = exp(-a sqrt((f dz/U)^2 + (0.12 dz/L_c)^2)), f [Hz], U [m/s] the convection speed,
@@ -233,15 +232,19 @@ class DrydenTurbulence:
         if intensity == "profile":
             return cls(w20=None, **kw)
         if intensity not in DRYDEN_W20:
-            raise ValueError(f"intensity = {intensity!r}; valid options "
-                             f"{('profile',) + tuple(DRYDEN_W20)}")
+            raise ValueError(
+                f"intensity = {intensity!r}; valid options {('profile',) + tuple(DRYDEN_W20)}"
+            )
         return cls(w20=DRYDEN_W20[intensity], **kw)
 
     def model_name(self) -> str:
         """One line naming the model in use (for the page and the CSV header)."""
-        space = ("frozen field convected with the mean wind (Taylor), varying along the tether "
-                 "and over the hull, IEC 61400-1 vertical coherence" if self.spatial
-                 else "one record, the same along the tether")
+        space = (
+            "frozen field convected with the mean wind (Taylor), varying along the tether "
+            "and over the hull, IEC 61400-1 vertical coherence"
+            if self.spatial
+            else "one record, the same along the tether"
+        )
         return f"MIL-HDBK-1797 low-altitude Dryden (u', w'), {space}"
 
     def parameters(self, height: float, w20: float | None = None) -> DrydenParameters:
@@ -254,8 +257,14 @@ class DrydenTurbulence:
         sw = p.sigma_w if self.sigma_w is None else float(self.sigma_w)
         return DrydenParameters(p.length_u, p.length_w, su, sw, p.height_used, p.clamped)
 
-    def realise(self, height: float, speed: float, duration: float, w20: float | None = None,
-                x_ref: float = 0.0) -> TurbulenceField:
+    def realise(
+        self,
+        height: float,
+        speed: float,
+        duration: float,
+        w20: float | None = None,
+        x_ref: float = 0.0,
+    ) -> TurbulenceField:
         """Synthesise the field for a hull at ``height`` [m] in a mean wind ``speed`` [m/s] (the
         convection speed) for a run of ``duration`` [s]; ``w20`` [m/s] is the profile's wind at
         20 ft (used when ``self.w20`` is None); ``x_ref`` [m] is the hull's initial x.
@@ -272,9 +281,11 @@ class DrydenTurbulence:
         dw = 2.0 * np.pi / period
         k_max = max(int(np.floor(2.0 * np.pi * self.max_frequency / dw)), 1)
         if k_max > 200_000:
-            raise ValueError(f"turbulence needs {k_max} frequencies: duration x max_frequency is "
-                             "too large (the limit is 200000); shorten duration or lower "
-                             "max_frequency")
+            raise ValueError(
+                f"turbulence needs {k_max} frequencies: duration x max_frequency is "
+                "too large (the limit is 200000); shorten duration or lower "
+                "max_frequency"
+            )
         omega = np.arange(1, k_max + 1) * dw
         edges = np.concatenate([[0.0], (np.arange(1, k_max + 1) + 0.5) * dw])
         dz = float(self.level_spacing)
@@ -295,8 +306,9 @@ class DrydenTurbulence:
                 base = dryden_parameters(max(z, 0.0), self._w(w20) or 0.0)
                 ref = dryden_parameters(height, self._w(w20) or 0.0)
                 su = self.sigma_u * (base.sigma_u / ref.sigma_u if ref.sigma_u > 0 else 1.0)
-            params.append(DrydenParameters(p.length_u, p.length_w, su, sw, p.height_used,
-                                           p.clamped))
+            params.append(
+                DrydenParameters(p.length_u, p.length_w, su, sw, p.height_used, p.clamped)
+            )
             var_u[i] = np.diff(cumulative_psd_u(edges, su, p.length_u, speed))
             var_w[i] = np.diff(cumulative_psd_w(edges, sw, p.length_w, speed))
         if not self.vertical:
@@ -308,10 +320,20 @@ class DrydenTurbulence:
         coef_u = _coherent_amplitudes(var_u, ph_u, z_levels, omega, speed, order)
         coef_w = _coherent_amplitudes(var_w, ph_w, z_levels, omega, speed, order)
         return TurbulenceField(
-            omega=omega, coef_u=coef_u, coef_w=coef_w, z_levels=z_levels, hull_level=hull_k,
-            period=period, speed=float(speed), params=p_hull, level_params=tuple(params),
-            fade_in=self.fade_in, seed=self.seed, x_ref=float(x_ref),
-            target_var_u=var_u.sum(axis=1), target_var_w=var_w.sum(axis=1),
+            omega=omega,
+            coef_u=coef_u,
+            coef_w=coef_w,
+            z_levels=z_levels,
+            hull_level=hull_k,
+            period=period,
+            speed=float(speed),
+            params=p_hull,
+            level_params=tuple(params),
+            fade_in=self.fade_in,
+            seed=self.seed,
+            x_ref=float(x_ref),
+            target_var_u=var_u.sum(axis=1),
+            target_var_w=var_w.sum(axis=1),
             model=self.model_name(),
         )
 
@@ -325,8 +347,9 @@ def _coherent_amplitudes(var, phases, z, omega, speed, order):
     if n_lev == 1:
         return np.sqrt(2.0 * var[0])[None, :] * np.exp(1j * phases[:1])
     zo = z[order]
-    coh = iec_coherence(zo[:, None, None] - zo[None, :, None], omega[None, None, :] / (2 * np.pi),
-                        speed)  # (L, L, K)
+    coh = iec_coherence(
+        zo[:, None, None] - zo[None, :, None], omega[None, None, :] / (2 * np.pi), speed
+    )  # (L, L, K)
     a = np.sqrt(2.0 * var[order])  # amplitude of each level's own cosine
     cov = coh * a[:, None, :] * a[None, :, :]
     cov = np.moveaxis(cov, 2, 0) + 1e-14 * np.eye(n_lev)[None]  # (K, L, L)
@@ -385,7 +408,7 @@ class TurbulenceField:
         out = []
         for coef in (self.coef_u[lev], self.coef_w[lev]):
             c = np.zeros(n // 2 + 1, complex)
-            c[1:k + 1] = 0.5 * coef * n
+            c[1 : k + 1] = 0.5 * coef * n
             out.append(np.fft.irfft(c, n))
         return np.arange(n) * self.period / n, out[0], out[1]
 
@@ -396,10 +419,10 @@ class TurbulenceField:
         lev = self.hull_level if level is None else level
         out = np.empty((4, t.size))
         for i0 in range(0, t.size, 2048):
-            e = np.exp(1j * self.omega * t[i0:i0 + 2048, None])
+            e = np.exp(1j * self.omega * t[i0 : i0 + 2048, None])
             for row, coef in ((0, self.coef_u[lev]), (2, self.coef_w[lev])):
-                out[row, i0:i0 + 2048] = np.real(e @ coef)
-                out[row + 1, i0:i0 + 2048] = np.real(e @ (1j * self.omega * coef))
+                out[row, i0 : i0 + 2048] = np.real(e @ coef)
+                out[row + 1, i0 : i0 + 2048] = np.real(e @ (1j * self.omega * coef))
         if faded and self.fade_in > 0:
             f, df = fade_window(t, self.fade_in)
             out[1] = out[1] * f + out[0] * df
@@ -423,14 +446,15 @@ class TurbulenceField:
             raise ValueError(
                 f"the turbulence table would take {4 * n_lev * n * 8 / 2**20:.0f} MiB (limit "
                 f"{MAX_TABLE_BYTES / 2**20:.0f} MiB): shorten duration, lower max_frequency or "
-                "widen level_spacing")
+                "widen level_spacing"
+            )
         out = np.empty((4 * n_lev, n))
         for lev in range(n_lev):
             for row, coef in ((0, self.coef_u[lev]), (2, self.coef_w[lev])):
                 c = np.zeros(n // 2 + 1, complex)
-                c[1:k + 1] = 0.5 * coef * n
+                c[1 : k + 1] = 0.5 * coef * n
                 out[4 * lev + row] = np.fft.irfft(c, n)
-                c[1:k + 1] *= 1j * self.omega
+                c[1 : k + 1] *= 1j * self.omega
                 out[4 * lev + row + 1] = np.fft.irfft(c, n)
         return self.period / n, out
 

@@ -26,8 +26,13 @@ def design():
 
 
 def _point_system(unsteady: bool) -> DynamicSystem:
-    p = PointAerostat(mass=71.6, volume=120.0, drag_area=1.0, added_mass_coefficient=0.5,
-                      unsteady_wind_inertia=unsteady)
+    p = PointAerostat(
+        mass=71.6,
+        volume=120.0,
+        drag_area=1.0,
+        added_mass_coefficient=0.5,
+        unsteady_wind_inertia=unsteady,
+    )
     return DynamicSystem(p, cases.case_p_tether(8), g=9.81, atmosphere=Atmosphere(1.225))
 
 
@@ -36,8 +41,9 @@ def test_frozen_gust_gives_no_froude_krylov_force_on_a_body_carried_with_the_flo
     """A body moving with the air (v = U at its position) in the steepest part of a gust: the
     Froude-Krylov + added-mass force (1 + C_a) rho V DU/Dt is zero for a frozen convected gust
     (the air carrying it does not accelerate) and (1 + C_a) rho V dg/dt for a uniform one."""
-    sc = WindScenario(SpeedSchedule.constant(10.0),
-                      gust=Gust(5.0, 0.0, 60.0, 20.0, "full", convected=convected))
+    sc = WindScenario(
+        SpeedSchedule.constant(10.0), gust=Gust(5.0, 0.0, 60.0, 20.0, "full", convected=convected)
+    )
     on, off = _point_system(True), _point_system(False)
     field = sc.realise(319.5, 100.0, x_ref=0.0)
     y = straight_state(on, (0.0, 319.5))
@@ -139,24 +145,36 @@ def test_aero_tables_are_valid_over_the_whole_circle(design):
 def test_output_grid_beyond_the_memory_cap_is_refused():
     system = cases.case_p_system(8)
     with pytest.raises(ValueError, match="duration = 100000 s.*output_interval = 0.001 s"):
-        simulate(system, WindScenario.steady(5.0), 1e5, SolverOptions(output_interval=1e-3),
-                 initial_state=straight_state(system, cases.R3_TOP0))
+        simulate(
+            system,
+            WindScenario.steady(5.0),
+            1e5,
+            SolverOptions(output_interval=1e-3),
+            initial_state=straight_state(system, cases.R3_TOP0),
+        )
 
 
 def test_wall_clock_budget_stops_a_long_run(design):
     system = system_from_design(design, segments=20)
     sc = WindScenario(SpeedSchedule.constant(10.0), turbulence=DrydenTurbulence(seed=1))
-    res = simulate(system, sc, 600.0, SolverOptions(wall_time_limit=0.05),
-                   guess=engine_guess(system, design, 10.0))
+    res = simulate(
+        system,
+        sc,
+        600.0,
+        SolverOptions(wall_time_limit=0.05),
+        guess=engine_guess(system, design, 10.0),
+    )
     assert res.status == 8 and "wall-clock" in res.message
     assert res.stats["t_end"] < 600.0 and res.t.size > 1
 
 
 # --- structure (issue 10) --------------------------------------------------------------------
 def test_importing_the_package_has_no_side_effects():
-    code = ("import sys, aerostat_core.dynamics as d; from aerostat_core.dynamics import "
-            "kernel_cache as k; assert 'numba' not in sys.modules, 'numba imported'; "
-            "assert not k._DONE, 'cache touched'")
+    code = (
+        "import sys, aerostat_core.dynamics as d; from aerostat_core.dynamics import "
+        "kernel_cache as k; assert 'numba' not in sys.modules, 'numba imported'; "
+        "assert not k._DONE, 'cache touched'"
+    )
     subprocess.run([sys.executable, "-c", code], check=True, cwd=PKG.parents[1])
 
 

@@ -19,8 +19,15 @@ from aerostat_core.dynamics.thesis import (
 from aerostat_core.optimize import OptimisationProblem, solve
 from aerostat_core.presets import THESIS_OPTIMUM, thesis_optimised_label
 
-CLI_KEYS = {"settling_time_s", "pitch_range_deg", "u_peak_mps", "w_peak_mps", "pitch_peak_deg",
-            "tension_range_N", "status"}
+CLI_KEYS = {
+    "settling_time_s",
+    "pitch_range_deg",
+    "u_peak_mps",
+    "w_peak_mps",
+    "pitch_peak_deg",
+    "tension_range_N",
+    "status",
+}
 
 
 def test_one_thesis_optimised_design_matches_the_optimiser():
@@ -33,8 +40,9 @@ def test_one_thesis_optimised_design_matches_the_optimiser():
     assert float(d.volume) == pytest.approx(r.design["volume_m3"], rel=0.01)
     for other in (cases.thesis_design(), design_of(default_request())):
         assert float(other.volume) == pytest.approx(float(d.volume))
-        assert float(np.asarray(other.airframe.hull.fineness_ratio).reshape(-1)[0]) == \
-            pytest.approx(THESIS_OPTIMUM["fineness_ratio"])
+        assert float(
+            np.asarray(other.airframe.hull.fineness_ratio).reshape(-1)[0]
+        ) == pytest.approx(THESIS_OPTIMUM["fineness_ratio"])
     assert f"f = {THESIS_OPTIMUM['fineness_ratio']:g}" in thesis_optimised_label()
 
 
@@ -60,7 +68,8 @@ def test_thesis_runs_finish_and_metrics_are_consistent(thesis_runs):
 def test_thesis_comparison_rows(thesis_runs):
     rows = comparison_rows({sc: v[1] for sc, v in thesis_runs.items()})
     assert [(r["scenario"], r["thesis"]) for r in rows] == [
-        (sc, v) for sc, claims in THESIS_CLAIMS.items() for v in claims.values()]
+        (sc, v) for sc, claims in THESIS_CLAIMS.items() for v in claims.values()
+    ]
     for r in rows:
         assert r["ratio"] == pytest.approx(r["ours"] / r["thesis"])
         assert r["match"] == (1 / MATCH_FACTOR <= r["ratio"] <= MATCH_FACTOR)
@@ -71,8 +80,10 @@ def test_thesis_comparison_rows(thesis_runs):
 
 def test_cli_json_and_csv(tmp_path, capsys):
     out = tmp_path / "gust.csv"
-    assert main(["simulate", "--scenario", "gust", "--duration", "80", "--json",
-                 "--csv", str(out)]) == 0
+    assert (
+        main(["simulate", "--scenario", "gust", "--duration", "80", "--json", "--csv", str(out)])
+        == 0
+    )
     m = json.loads(capsys.readouterr().out)
     assert CLI_KEYS <= set(m) and m["status"] == "finished"
     assert len(m["pitch_range_deg"]) == 2 and m["pitch_range_deg"][0] < m["pitch_range_deg"][1]
@@ -84,8 +95,10 @@ def test_cli_json_and_csv(tmp_path, capsys):
 
 
 def test_cli_turbulence_seed_and_bad_input(tmp_path, capsys):
-    assert main(["simulate", "--scenario", "turbulence", "--duration", "90", "--seed", "3",
-                 "--json"]) == 0
+    assert (
+        main(["simulate", "--scenario", "turbulence", "--duration", "90", "--seed", "3", "--json"])
+        == 0
+    )
     m = json.loads(capsys.readouterr().out)
     assert "MIL-HDBK-1797" in m["settings"] and m["w_peak_mps"] > 0
     assert main(["simulate", "--duration", "-1"]) == 2
