@@ -348,6 +348,12 @@ def turbulence_caption(tb: Mapping[str, Any]) -> str:
             "of σ_u² / σ_w² at the hull (the rest lies above the highest frequency).")
 
 
+def one_decimal(v: float) -> str:
+    """``v`` with one decimal, never "-0.0"."""
+    txt = f"{v:.1f}"
+    return "0.0" if txt == "-0.0" else txt
+
+
 def limits_frame_rows(out: Mapping[str, Any]) -> list[dict]:
     """Rows of the limits table (limit, value, worst, exceeded, first time)."""
     return [{"limit": r["limit"], "unit": r["unit"], "limit_value": r["value"],
@@ -429,10 +435,24 @@ def _hline(y: float, yref: str = "y") -> dict:
                 line=dict(color=LIMIT, dash="dash", width=1))
 
 
+def limit_lines(out: Mapping[str, Any], names, limits) -> tuple[list, str]:
+    """Limit lines worth drawing: [(value, label)] for the limits the signals come within half
+    of (farther ones would flatten the curves), and a note naming the others."""
+    peak = max((max(abs(v) for v in out["signals"][k]) for k in names if k in out["signals"]),
+               default=0.0)
+    lines, far = [], []
+    for value, label in limits:
+        if value is None:
+            continue
+        (lines if abs(value) == 0.0 or peak >= 0.5 * abs(value) else far).append((value, label))
+    note = ", ".join(sorted({f"{lab} {abs(v):.4g}" for v, lab in far}))
+    return lines, (f"; not reached: {note}" if note else "")
+
+
 def time_figure(out: Mapping[str, Any], names, title: str, ytitle: str, key_names=None,
-                hlines=()) -> go.Figure:
+                hlines=(), note: str = "") -> go.Figure:
     """Signals versus time on one axis (a dotted marker at the event time, dashed red limit
-    lines at ``hlines`` = [(value, label)], labelled in the title)."""
+    lines at ``hlines`` = [(value, label)], labelled in the title with ``note``)."""
     cols = (ACCENT, SECOND, THIRD)
     data = [_line(out["t"], out["signals"][k], (key_names or {}).get(k, SIGNALS[k][0]),
                   cols[i % 3]) for i, k in enumerate(names) if k in out["signals"]]
@@ -442,7 +462,9 @@ def time_figure(out: Mapping[str, Any], names, title: str, ytitle: str, key_name
                            x1=out["event_time"], y0=0, y1=1,
                            line=dict(color="#7f7f7f", dash="dot", width=1)))
     if hlines:
-        title = f"{title} (dashed red: {', '.join(sorted({lab for _, lab in hlines}))})"
+        title = f"{title} (red: {', '.join(sorted({lab for _, lab in hlines}))}{note})"
+    elif note:
+        title = f"{title} ({note[2:]})"
     return _fig(data, title, "Time t [s]", ytitle, shapes=shapes)
 
 
@@ -457,7 +479,7 @@ def position_figure(out: Mapping[str, Any]) -> go.Figure:
     lim = out.get("limit_values")
     if lim:
         shapes.append(_hline(lim["min_height"], "y2"))
-        title += " (dashed red: lowest accepted height)"
+        title += " (red: lowest height)"
     return _fig(data, title, "Time t [s]", "Blow-by x_C [m]", shapes=shapes,
                 yaxis2=dict(title=dict(text="Altitude z_C [m]"), overlaying="y", side="right"))
 

@@ -217,7 +217,8 @@ k = st.columns(5)
 k[0].metric("Peak blow-by x_C [m]", f"{max(sig['x_C']):.1f}")
 k[1].metric("Lowest altitude z_C [m]", f"{min(sig['z_C']):.1f}")
 if out["is_hull"]:
-    k[2].metric("Pitch range θ [deg]", f"{min(sig['theta']):.1f} … {max(sig['theta']):.1f}")
+    k[2].metric("Pitch range θ [deg]",
+                f"{view.one_decimal(min(sig['theta']))} … {view.one_decimal(max(sig['theta']))}")
 rms = {r["signal"]: r for r in out["stats"]}
 k[3].metric("RMS fluctuation of v_x [m/s]",
             f"{rms[view.SIGNALS['vx'][0]]['rms_fluctuation']:.2f}")
@@ -233,15 +234,18 @@ r2[0].plotly_chart(view.time_figure(out, ["vx", "vz"], "Hull velocity", "Velocit
                    key="dyn_velocity")
 if out["is_hull"]:
     stall = lim.get("fin_stall_deg")
-    r2[1].plotly_chart(view.time_figure(
-        out, ["theta", "alpha", "alpha_fin"], "Pitch and angle of attack", "Angle [deg]",
-        hlines=[(v, "fin stall") for v in ((stall, -stall) if stall else ())]), key="dyn_pitch")
+    names = ["theta", "alpha", "alpha_fin"]
+    lines, note = view.limit_lines(out, names, [(stall, "fin stall"), (-stall, "fin stall")]
+                                   if stall else [])
+    r2[1].plotly_chart(view.time_figure(out, names, "Pitch and angle of attack", "Angle [deg]",
+                                        hlines=lines, note=note), key="dyn_pitch")
 r3 = st.columns(2)
-swl = lim.get("safe_working_load")
-r3[0].plotly_chart(view.time_figure(
-    out, ["tension_C", "tension_winch"], "Tether tension", "Tension [N]",
-    hlines=([(swl, "safe working load")] if swl else [])
-    + ([(0.0, "slack")] if out.get("slack_events") else [])), key="dyn_tension")
+names = ["tension_C", "tension_winch"]
+lines, note = view.limit_lines(
+    out, names, [(lim.get("safe_working_load"), "safe working load")]
+    + ([(0.0, "slack")] if out.get("slack_events") else []))
+r3[0].plotly_chart(view.time_figure(out, names, "Tether tension", "Tension [N]", hlines=lines,
+                                    note=note), key="dyn_tension")
 r3[1].plotly_chart(view.time_figure(out, ["wind_x", "wind_z"], "Wind input at the hull",
                                     "Wind [m/s]"), key="dyn_wind")
 
