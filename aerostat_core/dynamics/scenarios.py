@@ -12,6 +12,7 @@ spatial}. :func:`default_request` fills every key.
 
 from __future__ import annotations
 
+import json
 from collections.abc import Callable, Mapping
 from typing import Any
 
@@ -205,6 +206,13 @@ def request_header(req: Mapping[str, Any], res: SimulationResult) -> dict:
             f"convected at {rec.speed:.2f} m/s"
         )
     h["tether_segments"] = res.system.tether.segments
+    o = res.options
+    h["solver"] = (
+        f"{o.method}, rtol {o.rtol:g}, output_interval {o.output_interval:g} s, "
+        f"wall_time_limit {o.wall_time_limit:g} s"
+    )
+    if req.get("inputs") is not None:
+        h["design_inputs"] = json.dumps(req["inputs"], sort_keys=True, separators=(",", ":"))
     return h
 
 

@@ -105,3 +105,34 @@ def test_cli_turbulence_seed_and_bad_input(tmp_path, capsys):
     assert "--duration" in capsys.readouterr().err
     assert main(["simulate", "--design", str(tmp_path)]) == 2
     assert "not a regular file" in capsys.readouterr().err
+
+
+def test_cli_with_a_design_file_records_its_inputs(tmp_path, capsys):
+    from aerostat_core import Configuration, HullSpec, Requirement
+    from aerostat_core.io import design_to_json
+
+    path = tmp_path / "d.json"
+    req, cfg = Requirement(), Configuration(hull=HullSpec(volume=150.0, fineness_ratio=3.5))
+    path.write_text(design_to_json(req, cfg))
+    out = tmp_path / "s.csv"
+    code = main(
+        [
+            "simulate",
+            "--scenario",
+            "steady",
+            "--design",
+            str(path),
+            "--duration",
+            "20",
+            "--csv",
+            str(out),
+        ]
+    )
+    assert code == 0
+    text = out.read_text()
+    assert "# design = given inputs" in text and '# design_inputs = {"configuration"' in text
+    d = design(req, cfg)
+    row = next(r for r in d.performance.rows() if r["wind_speed_m_s"] == 10.0)
+    first = [ln for ln in text.splitlines() if not ln.startswith("#")][1].split(",")
+    assert float(first[1]) == pytest.approx(row["blow_by_m"], abs=0.01)
+    assert "steady" in capsys.readouterr().out
