@@ -16,7 +16,9 @@ in Python overhead (~40 s for a 300 s case). Here:
 * the Jacobian is banded (each node couples to its neighbours, the hull to the top node): it is
   built by finite differences with column colouring (kl + ku + 1 kernel calls, not n) and
   factorised by a banded LU with partial pivoting, all in numba; the Jacobian is reused across
-  steps and refreshed only when Newton slows down;
+  steps and refreshed only when Newton slows down, and a step that could grow by less than 20 %
+  keeps its size so that the factorised Newton matrix is reused (Hairer & Wanner, Solving ODEs
+  II, §IV.8);
 * wind inputs are analytic in time and ramp corners are step boundaries ("stops").
 
 Tableau (gamma = 2 - sqrt 2, d = gamma/2, w = sqrt(2)/4):
@@ -375,8 +377,10 @@ def integrate_chunk(fs, y, f, t_end, data, opts, atol, stops, out_t, out_y, out_
             break
         if its > 2 or rate > 0.3 or fs[F_AGE] >= jac_every:
             fs[F_STALE] = 1.0
-        fac = 0.9 * max(en, 1e-10) ** (-1.0 / 3.0)
-        h = h * min(5.0, max(0.2, fac))
+        fac = min(5.0, max(0.2, 0.9 * max(en, 1e-10) ** (-1.0 / 3.0)))
+        if 1.0 <= fac <= 1.2 and not hit:
+            fac = 1.0  # keep h: the factorised Newton matrix stays valid (Hairer & Wanner IV.8)
+        h = h * fac
     fs[F_T] = t
     fs[F_H] = h
     fs[F_ETA] = eta
