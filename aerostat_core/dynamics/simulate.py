@@ -50,6 +50,7 @@ from .solver import (
     S_STEPS,
     STATUS,
     band_jacobian,
+    band_width,
     integrate_chunk,
 )
 from .system import DynamicSystem
@@ -322,7 +323,7 @@ def simulate(
     stops = field_.breakpoints()
     stops = stops[(stops > 0) & (stops < duration)]
     jac = np.zeros((n, n))
-    wmat = np.zeros((n, n))
+    wmat = np.zeros((n, band_width(kl, ku)))
     piv = np.zeros(n, np.int64)
     scale = _scale(system)
     status = 0
@@ -401,7 +402,7 @@ def warm_kernels() -> float:
     out_t = np.array([0.0])
     integrate_chunk(fs, y, f, 1e-3, data, o, np.full(n, 1e-5), np.zeros(0), out_t,
                     np.empty((1, n)), np.empty((1, ND)), stats, np.zeros((n, n)),
-                    np.zeros((n, n)), np.zeros(n, np.int64), np.ones(n), kl, ku)
+                    np.zeros((n, band_width(kl, ku))), np.zeros(n, np.int64), np.ones(n), kl, ku)
     band_jacobian(0.0, y, f, data, kl, ku, np.zeros((n, n)), np.ones(n))
     system.nodes(y)
     WindScenario.steady(5.0).realise(319.5, 1.0).at(0.0, 100.0)

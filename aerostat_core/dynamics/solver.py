@@ -68,21 +68,41 @@ STATUS = {
 }
 
 
-@njit(cache=True)
-def band_lu(a, n, kl, ku, piv):  # pragma: no cover - numba
-    """In-place LU with partial pivoting of a band matrix held in dense storage.
+def band_width(kl: int, ku: int) -> int:
+    """Columns of the compact band storage of :func:`band_lu`: 2 kl + ku + 1."""
+    return 2 * kl + ku + 1
 
-    Only entries with -kl <= j - i <= ku + kl are touched (the fill-in band above the diagonal
-    must be zero on entry). Returns False if a pivot is exactly zero.
+
+def band_pack(a: np.ndarray, kl: int, ku: int) -> np.ndarray:
+    """Compact row storage of a band matrix: w[i, j - i + kl] = a[i, j] for -kl <= j - i <= ku,
+    with kl more zero columns on the right for the LU's fill-in."""
+    n = a.shape[0]
+    w = np.zeros((n, band_width(kl, ku)))
+    for i in range(n):
+        for j in range(max(0, i - kl), min(n, i + ku + 1)):
+            w[i, j - i + kl] = a[i, j]
+    return w
+
+
+@njit(cache=True)
+def band_lu(w, n, kl, ku, piv):  # pragma: no cover - numba
+    """In-place LU with partial pivoting of a band matrix in compact row storage
+    (:func:`band_pack`: w[i, j - i + kl] holds a[i, j]; columns beyond kl + ku, the fill-in,
+    must be zero on entry). Row swaps are applied to the trailing columns only, as LAPACK's
+    gbtrf does; :func:`band_solve` replays them. Returns False if a pivot is exactly zero.
+
+    The compact storage (n x (2 kl + ku + 1)) keeps the factors in a few tens of kB, in cache,
+    where a dense n x n matrix would not be.
     """
     uw = ku + kl
     for k in range(n):
         p = k
-        amax = abs(a[k, k])
+        amax = abs(w[k, kl])
         iend = min(n, k + kl + 1)
         for i in range(k + 1, iend):
-            if abs(a[i, k]) > amax:
-                amax = abs(a[i, k])
+            v = abs(w[i, k - i + kl])
+            if v > amax:
+                amax = v
                 p = i
         piv[k] = p
         if amax == 0.0:
@@ -90,21 +110,21 @@ def band_lu(a, n, kl, ku, piv):  # pragma: no cover - numba
         jend = min(n, k + uw + 1)
         if p != k:
             for j in range(k, jend):
-                tmp = a[k, j]
-                a[k, j] = a[p, j]
-                a[p, j] = tmp
-        inv = 1.0 / a[k, k]
+                tmp = w[k, j - k + kl]
+                w[k, j - k + kl] = w[p, j - p + kl]
+                w[p, j - p + kl] = tmp
+        inv = 1.0 / w[k, kl]
         for i in range(k + 1, iend):
-            lik = a[i, k] * inv
-            a[i, k] = lik
+            lik = w[i, k - i + kl] * inv
+            w[i, k - i + kl] = lik
             if lik != 0.0:
                 for j in range(k + 1, jend):
-                    a[i, j] -= lik * a[k, j]
+                    w[i, j - i + kl] -= lik * w[k, j - k + kl]
     return True
 
 
 @njit(cache=True)
-def band_solve(a, n, kl, ku, piv, b):  # pragma: no cover - numba
+def band_solve(w, n, kl, ku, piv, b):  # pragma: no cover - numba
     """Solve with the factors of :func:`band_lu` (``b`` overwritten by the solution)."""
     uw = ku + kl
     for k in range(n):
@@ -116,12 +136,12 @@ def band_solve(a, n, kl, ku, piv, b):  # pragma: no cover - numba
         bk = b[k]
         if bk != 0.0:
             for i in range(k + 1, min(n, k + kl + 1)):
-                b[i] -= a[i, k] * bk
+                b[i] -= w[i, k - i + kl] * bk
     for k in range(n - 1, -1, -1):
         s = b[k]
         for j in range(k + 1, min(n, k + uw + 1)):
-            s -= a[k, j] * b[j]
-        b[k] = s / a[k, k]
+            s -= w[k, j - k + kl] * b[j]
+        b[k] = s / w[k, kl]
 
 
 @njit(cache=True)
@@ -164,14 +184,14 @@ def _wnorm(v, y0, y1, atol, rtol):  # pragma: no cover - numba
 
 @njit(cache=True)
 def _build_w(jac, wmat, n, kl, ku, hd):  # pragma: no cover - numba
-    uw = ku + kl
+    """Newton matrix W = I - hd J in compact band storage (fill-in columns zeroed)."""
+    width = wmat.shape[1]
     for i in range(n):
-        for j in range(max(0, i - kl), min(n, i + uw + 1)):
-            if j - i <= ku:
-                wmat[i, j] = -hd * jac[i, j]
-            else:
-                wmat[i, j] = 0.0
-        wmat[i, i] += 1.0
+        for o in range(width):
+            wmat[i, o] = 0.0
+        for j in range(max(0, i - kl), min(n, i + ku + 1)):
+            wmat[i, j - i + kl] = -hd * jac[i, j]
+        wmat[i, kl] += 1.0
 
 
 @njit(cache=True)
@@ -231,8 +251,10 @@ def integrate_chunk(fs, y, f, t_end, data, opts, atol, stops, out_t, out_y, out_
     stats : int64 ndarray (S_SIZE,), in/out
         Counters (steps, rejected, kernel calls, Jacobians, LU, next output index, status,
         Newton failures).
-    jac, wmat : ndarray (n, n)
-        Work storage for the Jacobian and the factorised Newton matrix.
+    jac : ndarray (n, n)
+        Work storage for the Jacobian (band entries only are used).
+    wmat : ndarray (n, 2 kl + ku + 1)
+        Work storage for the factorised Newton matrix, compact band storage (:func:`band_pack`).
     piv : int64 ndarray (n,)
     scale : ndarray
         Typical state sizes for the Jacobian increments.

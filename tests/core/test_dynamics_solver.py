@@ -15,7 +15,7 @@ from aerostat_core.dynamics.simulate import (
     simulate,
     straight_guess,
 )
-from aerostat_core.dynamics.solver import band_lu, band_solve
+from aerostat_core.dynamics.solver import band_lu, band_pack, band_solve
 from aerostat_core.dynamics.system import dense_jacobian, system_from_design
 from aerostat_core.dynamics.wind import Gust, SpeedSchedule, WindScenario
 
@@ -50,7 +50,8 @@ def test_band_lu_matches_dense_solve():
         for j in range(max(0, i - kl), min(n, i + ku + 1)):
             a[i, j] = rng.normal()
     b = rng.normal(size=n)
-    work = a.copy()  # the fill-in band above the diagonal starts at zero
+    work = band_pack(a, kl, ku)  # compact storage; the fill-in columns start at zero
+    assert work.shape == (n, 2 * kl + ku + 1)
     piv = np.zeros(n, np.int64)
     assert band_lu(work, n, kl, ku, piv)
     x = b.copy()
