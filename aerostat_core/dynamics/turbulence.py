@@ -347,15 +347,17 @@ def _coherent_amplitudes(var, phases, z, omega, speed, order):
     if n_lev == 1:
         return np.sqrt(2.0 * var[0])[None, :] * np.exp(1j * phases[:1])
     zo = z[order]
-    coh = iec_coherence(
-        zo[:, None, None] - zo[None, :, None], omega[None, None, :] / (2 * np.pi), speed
-    )  # (L, L, K)
+    dz = zo[:, None] - zo[None, :]
     a = np.sqrt(2.0 * var[order])  # amplitude of each level's own cosine
-    cov = coh * a[:, None, :] * a[None, :, :]
-    cov = np.moveaxis(cov, 2, 0) + 1e-14 * np.eye(n_lev)[None]  # (K, L, L)
-    h = np.linalg.cholesky(cov)
     xi = np.exp(1j * phases[order]).T  # (K, L)
-    c = np.einsum("kij,kj->ki", h, xi).T  # (L, K), ordered
+    c = np.empty((n_lev, k_max), complex)
+    for k0 in range(0, k_max, 1024):  # in blocks: (K, L, L) arrays stay small
+        ks = slice(k0, min(k0 + 1024, k_max))
+        coh = iec_coherence(dz[None], omega[ks, None, None] / (2 * np.pi), speed)  # (k, L, L)
+        ak = a[:, ks].T  # (k, L)
+        cov = coh * ak[:, :, None] * ak[:, None, :] + 1e-14 * np.eye(n_lev)[None]
+        h = np.linalg.cholesky(cov)
+        c[:, ks] = np.einsum("kij,kj->ki", h, xi[ks]).T  # ordered levels
     out = np.empty_like(c)
     out[order] = c
     return out

@@ -421,7 +421,15 @@ class WindField:
     x_ref: float = 0.0
 
     def pack(self):
-        """Arrays for the numba kernels: (wpar, sched, turb)."""
+        """Arrays for the numba kernels: (wpar, sched, turb), built once per field (the
+        turbulence table takes tens of ms); the kernels only read them."""
+        cached = self.__dict__.get("_packed")
+        if cached is None:
+            cached = self._pack()
+            self.__dict__["_packed"] = cached  # frozen dataclass: a cache, not state
+        return cached
+
+    def _pack(self):
         sc = self.scenario
         wpar = sc.profile.kernel_parameters()
         wpar[W_RAMP] = RAMP_CODE[sc.schedule.shape]
