@@ -16,6 +16,7 @@ from dataclasses import replace
 from pathlib import Path
 
 from .design import Design, design
+from .dynamics import cli as simulate_cli
 from .inputs import Requirement
 from .io import design_from_json, rows_to_csv
 from .presets import rules_configuration
@@ -128,6 +129,7 @@ def _parser() -> argparse.ArgumentParser:
     d.add_argument("--gores-dxf", type=Path, help="write gore and fin patterns as DXF here")
     d.add_argument("--gores-svg", type=Path, help="write gore and fin patterns as SVG here")
     d.add_argument("--gores-csv", type=Path, help="write the gore half-widths CSV here")
+    simulate_cli.add_parser(sub)  # python -m aerostat_core simulate (aerostat_core.dynamics.cli)
     return p
 
 
@@ -188,6 +190,8 @@ def main(argv: list[str] | None = None) -> int:
 
 def _main(argv: list[str] | None) -> int:
     args = _parser().parse_args(argv)
+    if args.command == "simulate":
+        return args.handler(args)
     try:
         if args.config is not None:
             req, cfg = design_from_json(_read_config(args.config))

@@ -111,6 +111,13 @@ def thesis_baseline() -> tuple[Requirement, Configuration]:
 THESIS_OPTIMUM = {"fineness_ratio": 2.5, "area_change": -32.51, "position": 0.686}
 
 
+def thesis_optimised_label() -> str:
+    """Short name of the thesis optimised design, from ``THESIS_OPTIMUM`` (its one definition,
+    shared by the Dynamics and Optimise pages and the ``simulate`` CLI)."""
+    return (f"Thesis optimised design (f = {THESIS_OPTIMUM['fineness_ratio']:g}, volume sized to "
+            "the blow-by limit: about 120 m³)")
+
+
 def thesis_optimised() -> tuple[Requirement, Configuration]:
     """(Requirement, Configuration) of the optimised design (volume sized to the blow-by limit)."""
     req, cfg = thesis_baseline()

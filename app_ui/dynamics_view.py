@@ -1,18 +1,26 @@
-"""UI layer of the Dynamics page: request validation, the cached simulation, figures and tables.
+"""UI layer of the Dynamics page: the form's request, the result store, figures and tables.
 
-Physics lives in :mod:`aerostat_core.dynamics`; this module turns the page's form into a request
-(plain JSON: the cache key), runs it through :func:`cached_run` (``st.cache_data``; the progress
-callback is an underscore argument, so it is not part of the key), and draws the plain result.
+Physics lives in :mod:`aerostat_core.dynamics` (:mod:`~aerostat_core.dynamics.scenarios` turns a
+request into a run, :mod:`~aerostat_core.dynamics.thesis` holds the thesis comparison); this
+module validates the page's form into a request (plain JSON: the store key), runs it through
+:func:`run_cached` and draws the plain result.
+
+Caching: results live in one process-wide store (``st.cache_resource``, a dict behind a lock),
+filled by :func:`run_cached` *outside* any ``st.cache_data`` function, so the page's progress bar
+is drawn by the page itself and a replay (a second click, coming back to the page, a second
+session hitting the same case) never re-runs a UI element (no ``CacheReplayClosureError``).
 
 Figures mirror the thesis (Figs 4.36-4.41): tether profile at t = 0 and t_end, x_C(t) and z_C(t),
-hull velocities, pitch and angle of attack, tensions at C and at the winch, wind input; plus the
-tether and hull at any time (slider).
+hull velocities, pitch and angle of attack, tensions at C and at the winch, wind input; limits
+(fin stall, safe working load, lowest height) are drawn on them.
 """
 
 from __future__ import annotations
 
 import json
 import math
+import threading
+from collections import OrderedDict
 from collections.abc import Callable, Mapping
 from typing import Any
 
@@ -20,53 +28,46 @@ import numpy as np
 import plotly.graph_objects as go
 import streamlit as st
 
-from aerostat_core import design as run_design
-from aerostat_core.dynamics import cases
 from aerostat_core.dynamics.linearise import linearise
-from aerostat_core.dynamics.model import (
-    Atmosphere,
-    DynamicSystem,
-    PointAerostat,
-    system_from_design,
+from aerostat_core.dynamics.results import SIGNALS, limit_flags, response_metrics
+from aerostat_core.dynamics.scenarios import (
+    default_request,
+    event_time,
+    limits_of,
+    request_header,
+    run_request,
 )
-from aerostat_core.dynamics.simulate import (
-    SIGNALS,
-    SolverOptions,
-    engine_guess,
-    response_metrics,
-    simulate,
+from aerostat_core.dynamics.simulate import kernels_warm, warm_kernels
+from aerostat_core.dynamics.thesis import (
+    MATCH_FACTOR,
+    THESIS_CLAIMS,
+    WHY_NOT,
+    comparison_rows,
+    run_thesis_case,
+    thesis_settings_text,
 )
-from aerostat_core.dynamics.tether import TetherModel
-from aerostat_core.dynamics.wind import (
-    DRYDEN_W20,
-    DrydenTurbulence,
-    Gust,
-    MeanProfile,
-    SpeedSchedule,
-    WindScenario,
-)
+from aerostat_core.dynamics.turbulence import DRYDEN_W20
 from aerostat_core.io import inputs_from_dict, inputs_to_dict
+from aerostat_core.presets import thesis_optimised_label
 
 ACCENT = "#1f5fa8"
 SECOND = "#e69f00"
 THIRD = "#009e73"
+LIMIT = "#c0392b"
 _FONT = dict(family="sans-serif", size=13)
 _MARGIN = dict(l=60, r=20, t=50, b=50)
 
 CURRENT = "Current design"
-THESIS = "Thesis optimised design (120 m³, f = 4)"
+THESIS = thesis_optimised_label()
 SCENARIOS = {
     "steady": "Steady wind",
     "varying": "Varying wind (ramps)",
     "gust": "Discrete gust (1 − cos)",
     "turbulence": "Dryden turbulence",
 }
-INTENSITIES = {
-    "light": "Light (W20 = 15 kt)",
-    "moderate": "Moderate (W20 = 30 kt)",
-    "severe": "Severe (W20 = 45 kt)",
-    "custom": "Custom W20",
-}
+INTENSITIES = {"profile": "From the wind profile (W20 = wind at 20 ft)",
+               "light": "Light (W20 = 15 kt)", "moderate": "Moderate (W20 = 30 kt)",
+               "severe": "Severe (W20 = 45 kt)", "custom": "Custom W20"}
 PROFILES = {"uniform": "Uniform", "power": "Power law", "log": "Log law"}
 BODIES = {"hull": "3-DOF hull (surge, heave, pitch)", "point": "Point aerostat (no pitch)"}
 #: Valid ranges of the form's numbers: key -> (label, lo, hi, unit).
@@ -102,9 +103,8 @@ def _num(form: Mapping[str, Any], key: str, integer: bool = False) -> float:
     try:
         x = float(v)
     except (TypeError, ValueError):
-        raise ValueError(
-            f"{label} = {v!r} is not a number; valid range [{lo:g}, {hi:g}]{u}"
-        ) from None
+        raise ValueError(f"{label} = {v!r} is not a number; valid range [{lo:g}, {hi:g}]{u}") \
+            from None
     if not math.isfinite(x) or x < lo or x > hi:
         raise ValueError(f"{label} = {x:g}{u} is outside the valid range [{lo:g}, {hi:g}]{u}")
     if integer:
@@ -119,12 +119,10 @@ def design_sources(cases_state: Mapping[str, Any] | None) -> list[str]:
     return [CURRENT, THESIS] + [f"Case: {n}" for n in (cases_state or {})]
 
 
-def build_request(
-    form: Mapping[str, Any],
-    design_inputs: Mapping[str, Any] | None,
-    cases_state: Mapping[str, Any] | None,
-) -> dict:
-    """Validate the form and return the run request (plain JSON-able data, the cache key).
+def build_request(form: Mapping[str, Any], design_inputs: Mapping[str, Any] | None,
+                  cases_state: Mapping[str, Any] | None) -> dict:
+    """Validate the form and return the run request (plain JSON-able data, the store key;
+    the keys of :func:`aerostat_core.dynamics.scenarios.default_request`).
 
     Raises ``ValueError`` naming the field, the value and its valid range.
     """
@@ -133,12 +131,8 @@ def build_request(
         inputs = None
     elif source == CURRENT:
         inputs = dict(design_inputs) if design_inputs else None
-    elif (
-        isinstance(source, str)
-        and source.startswith("Case: ")
-        and cases_state
-        and source[6:] in cases_state
-    ):
+    elif isinstance(source, str) and source.startswith("Case: ") and cases_state and \
+            source[6:] in cases_state:
         inputs = dict(cases_state[source[6:]])
     else:
         raise ValueError(f"Design = {source!r} is not available; choose one of the list")
@@ -153,153 +147,103 @@ def build_request(
     body = form.get("body", "hull")
     if body not in BODIES:
         raise ValueError(f"Body model = {body!r}; valid options {list(BODIES)}")
-    req = {
-        "source": source,
-        "inputs": inputs,
-        "scenario": scenario,
-        "profile": profile,
-        "body": body,
-        "speed": _num(form, "speed"),
-        "duration": _num(form, "duration"),
-        "exponent": _num(form, "exponent"),
-        "roughness": _num(form, "roughness"),
-        "segments": _num(form, "segments", integer=True),
-        "damping": _num(form, "damping"),
-        "unsteady": bool(form.get("unsteady", True)),
-        "wall": _num(form, "wall"),
-        "modes": bool(form.get("modes", False)),
-    }
+    req = default_request(
+        scenario, source=source, inputs=inputs, profile=profile, body=body,
+        speed=_num(form, "speed"), duration=_num(form, "duration"),
+        exponent=_num(form, "exponent"), roughness=_num(form, "roughness"),
+        segments=_num(form, "segments", integer=True), damping=_num(form, "damping"),
+        unsteady=bool(form.get("unsteady", True)), wall=_num(form, "wall"),
+        modes=bool(form.get("modes", False)))
     if scenario == "varying":
         req["changes"] = [(_num(form, "t_change"), _num(form, "u_new"), _num(form, "ramp"))]
         if form.get("second_change"):
             t2 = _num(form, "t_change2")
             if t2 < req["changes"][0][0] + req["changes"][0][2]:
-                raise ValueError(
-                    f"Second change starts at = {t2:g} s: it must start after the "
-                    f"first ramp ends ({req['changes'][0][0] + req['changes'][0][2]:g}"
-                    " s)"
-                )
+                raise ValueError(f"Second change starts at = {t2:g} s: it must start after the "
+                                 f"first ramp ends ({req['changes'][0][0] + req['changes'][0][2]:g}"
+                                 " s)")
             req["changes"].append((t2, _num(form, "u_new2"), _num(form, "ramp")))
     elif scenario == "gust":
-        req["gust"] = {
-            "u": _num(form, "gust_u"),
-            "w": _num(form, "gust_w"),
-            "length": _num(form, "gust_length"),
-            "start": _num(form, "gust_start"),
-            "shape": "ramp-hold" if form.get("gust_hold") else "full",
-        }
+        req["gust"] = {"u": _num(form, "gust_u"), "w": _num(form, "gust_w"),
+                       "length": _num(form, "gust_length"), "start": _num(form, "gust_start"),
+                       "shape": "ramp-hold" if form.get("gust_hold") else "full",
+                       "convected": not form.get("gust_uniform", False)}
         if req["gust"]["u"] == 0 and req["gust"]["w"] == 0:
-            raise ValueError(
-                "Gust amplitudes are both 0 m/s: give a horizontal or vertical "
-                "amplitude in [-15, 15] / [-10, 10] m/s"
-            )
+            raise ValueError("Gust amplitudes are both 0 m/s: give a horizontal or vertical "
+                             "amplitude in [-15, 15] / [-10, 10] m/s")
     elif scenario == "turbulence":
-        inten = form.get("intensity", "moderate")
+        inten = form.get("intensity", "profile")
         if inten not in INTENSITIES:
-            raise ValueError(f"Turbulence intensity = {inten!r}; valid options {list(INTENSITIES)}")
-        w20 = _num(form, "w20") if inten == "custom" else DRYDEN_W20[inten]
-        req["turbulence"] = {
-            "intensity": inten,
-            "w20": w20,
-            "seed": _num(form, "seed", integer=True),
-            "max_frequency": _num(form, "max_frequency"),
-            "fade_in": _num(form, "fade_in"),
-            "vertical": bool(form.get("vertical", True)),
-        }
+            raise ValueError(f"Turbulence intensity = {inten!r}; valid options "
+                             f"{list(INTENSITIES)}")
+        w20 = (_num(form, "w20") if inten == "custom" else DRYDEN_W20.get(inten))
+        req["turbulence"] = {"intensity": inten, "w20": w20,
+                             "seed": _num(form, "seed", integer=True),
+                             "max_frequency": _num(form, "max_frequency"),
+                             "fade_in": _num(form, "fade_in"),
+                             "vertical": bool(form.get("vertical", True)),
+                             "spatial": bool(form.get("spatial", True))}
     if scenario in ("gust", "turbulence") and req["speed"] < 0.5:
-        raise ValueError(
-            f"Mean wind at the aerostat = {req['speed']:g} m/s: a gust or turbulence "
-            "needs at least 0.5 m/s to be convected; valid range [0.5, 30] m/s"
-        )
+        raise ValueError(f"Mean wind at the aerostat = {req['speed']:g} m/s: a gust or turbulence "
+                         "needs at least 0.5 m/s to be convected; valid range [0.5, 30] m/s")
     return req
 
 
 def request_key(req: Mapping[str, Any]) -> str:
-    """Canonical JSON of a request (cache key)."""
+    """Canonical JSON of a request (store key)."""
     return json.dumps(req, sort_keys=True, separators=(",", ":"))
 
 
-def _design_of(req: Mapping[str, Any]):
-    if req["inputs"] is None:
-        return cases.thesis_design()
-    return run_design(*inputs_from_dict(req["inputs"]))
-
-
-def _wind(req: Mapping[str, Any], top_height: float) -> WindScenario:
-    profile = MeanProfile(req["profile"], max(top_height, 1.0), req["exponent"], req["roughness"])
-    u0 = req["speed"]
-    gust = turb = None
-    if req["scenario"] == "varying":
-        sched = SpeedSchedule.ramps(u0, req["changes"])
-    else:
-        sched = SpeedSchedule.constant(u0)
-    if req["scenario"] == "gust":
-        g = req["gust"]
-        gust = Gust(g["u"], g["w"], g["length"], g["start"], g["shape"])
-    if req["scenario"] == "turbulence":
-        t = req["turbulence"]
-        turb = DrydenTurbulence(
-            w20=t["w20"],
-            seed=t["seed"],
-            max_frequency=t["max_frequency"],
-            fade_in=t["fade_in"],
-            vertical=t["vertical"],
-        )
-    return WindScenario(sched, profile, gust, turb)
-
-
-def _event_time(req: Mapping[str, Any]) -> float | None:
-    if req["scenario"] == "varying":
-        return float(req["changes"][0][0])
-    if req["scenario"] == "gust":
-        return float(req["gust"]["start"])
-    return None
-
-
-def _point_from_design(d, speed: float) -> PointAerostat:
-    af = d.airframe
-    row = min(d.performance.rows(), key=lambda r: abs(r["wind_speed_m_s"] - max(speed, 1.0)))
-    q = 0.5 * float(af.air_density) * max(row["wind_speed_m_s"], 1.0) ** 2
-    return PointAerostat(
-        mass=float(af.mass.aerostat),
-        volume=float(af.hull.volume),
-        drag_area=row["drag_N"] / q,
-        added_mass_coefficient=0.5,
-    )
-
-
 def run(req: Mapping[str, Any], progress: Callable[[float], None] | None = None) -> dict:
-    """Build the system, simulate, and collect plain results (arrays as lists for caching)."""
-    d = _design_of(req)
-    if req["body"] == "hull":
-        system = system_from_design(
-            d,
-            segments=req["segments"],
-            damping_ratio=req["damping"],
-            unsteady_wind_inertia=req["unsteady"],
-        )
-        guess = engine_guess(system, d, req["speed"])
-    else:
-        af = d.airframe
-        teth = TetherModel.from_spec(
-            d.configuration.tether, af.tether_length, req["segments"], req["damping"]
-        )
-        point = _point_from_design(d, req["speed"])
-        point = PointAerostat(point.mass, point.volume, point.drag_area, 0.5, req["unsteady"])
-        system = DynamicSystem(
-            point, teth, g=float(af.g), atmosphere=Atmosphere(float(np.asarray(af.air_density)))
-        )
-        guess = engine_guess(system, d, req["speed"])
-    b = system.hull_index
-    top_height = float(guess[b + 1])
-    if system.is_hull:
-        top_height = float(system.nodes(guess)[0][-1, 1])
-    wind = _wind(req, top_height)
-    opt = SolverOptions(
-        wall_time_limit=req["wall"], output_interval=0.1 if req["duration"] <= 900 else 0.5
-    )
-    res = simulate(system, wind, req["duration"], opt, guess=guess, progress=progress)
+    """Simulate a request and collect plain results (:func:`collect`)."""
+    res, d = run_request(req, progress)
     return collect(res, req, d)
+
+
+# --- result store (no UI element inside: see the module docstring) -----------------------------
+_STORE_SIZE = 16
+
+
+@st.cache_resource
+def _store() -> tuple[OrderedDict, threading.Lock]:
+    return OrderedDict(), threading.Lock()
+
+
+def stored(key: str) -> dict | None:
+    """The stored result of a request key, or None."""
+    store, lock = _store()
+    with lock:
+        out = store.get(key)
+        if out is not None:
+            store.move_to_end(key)
+        return out
+
+
+def run_cached(key: str, progress: Callable[[float], None] | None = None) -> dict:
+    """The result of the request in ``key`` (JSON from :func:`request_key`): from the store, or
+    run now (``progress`` is called with the fraction done) and stored. The caller draws any
+    progress element; nothing here touches the page."""
+    out = stored(key)
+    if out is not None:
+        return out
+    out = run(json.loads(key), progress)
+    store, lock = _store()
+    with lock:
+        store[key] = out
+        while len(store) > _STORE_SIZE:
+            store.popitem(last=False)
+    return out
+
+
+def kernels_ready() -> bool:
+    """True when the simulation kernels are loaded in this process."""
+    return kernels_warm()
+
+
+@st.cache_resource(show_spinner=False)
+def warm() -> float:
+    """Load (compile the first time) the simulation kernels once per server process; seconds."""
+    return warm_kernels()
 
 
 def collect(res, req: Mapping[str, Any], d=None) -> dict:
@@ -333,19 +277,11 @@ def collect(res, req: Mapping[str, Any], d=None) -> dict:
     for k in names:
         label, unit = SIGNALS[k]
         s = stats[k]
-        stat_rows.append(
-            {
-                "signal": label,
-                "unit": unit,
-                "mean": s.mean,
-                "rms_fluctuation": s.std,
-                "peak_excursion": s.peak,
-                "min": s.min,
-                "max": s.max,
-            }
-        )
+        stat_rows.append({"signal": label, "unit": unit, "mean": s.mean,
+                          "rms_fluctuation": s.std, "peak_excursion": s.peak, "min": s.min,
+                          "max": s.max})
     metrics = []
-    te = _event_time(req)
+    te = event_time(req)
     if te is not None and t[-1] > te + 5.0:
         final = None
         for k in ("x_C", "z_C", "theta", "vx", "tension_C"):
@@ -353,89 +289,120 @@ def collect(res, req: Mapping[str, Any], d=None) -> dict:
                 continue
             m = response_metrics(t, res.signal(k), te, 0.05, final=final)
             m2 = response_metrics(t, res.signal(k), te, 0.02, final=final)
-            metrics.append(
-                {
-                    "signal": SIGNALS[k][0],
-                    "unit": SIGNALS[k][1],
-                    "settling_5pct_s": m.settling_time,
-                    "settling_2pct_s": m2.settling_time,
-                    "band_5pct": m.band,
-                    "overshoot_pct": m.overshoot,
-                    "peak_excursion": m.peak_excursion,
-                    "final": m.final,
-                }
-            )
+            metrics.append({"signal": SIGNALS[k][0], "unit": SIGNALS[k][1],
+                            "settling_5pct_s": m.settling_time, "settling_2pct_s": m2.settling_time,
+                            "band_5pct": m.band, "overshoot_pct": m.overshoot,
+                            "peak_excursion": m.peak_excursion, "final": m.final})
     out = {
-        "ok": bool(res.ok),
-        "status": int(res.status),
-        "message": res.message,
-        "t": t.tolist(),
-        "signals": sig,
-        "snapshots": snaps,
-        "stats": stat_rows,
-        "stats_from": t_from,
-        "metrics": metrics,
-        "event_time": te,
+        "ok": bool(res.ok), "status": int(res.status), "message": res.message,
+        "t": t.tolist(), "signals": sig, "snapshots": snaps, "stats": stat_rows,
+        "stats_from": t_from, "metrics": metrics, "event_time": te,
         "solver": {k: (float(v) if isinstance(v, float) else v) for k, v in res.stats.items()},
         "is_hull": bool(res.system.is_hull),
-        "csv": res.to_csv(),
+        "csv": res.to_csv(header=request_header(req, res)),
+        "csv_name": f"aerostat_dynamics_{req.get('scenario', 'run')}.csv",
+        "slack_events": res.slack_events(), "limits": None,
         "equilibrium_shift_mm": (1e3 * res.equilibrium.shift if res.equilibrium else None),
-        "tether_segments": res.system.tether.segments,
-        "modes": None,
-        "turbulence": None,
+        "tether_segments": res.system.tether.segments, "modes": None, "turbulence": None,
     }
     rec = res.wind.turbulence
     if rec is not None:
         p = rec.params
         fu, fw = rec.variance_fraction
-        out["turbulence"] = {
-            "sigma_u": p.sigma_u,
-            "sigma_w": p.sigma_w,
-            "length_u": p.length_u,
-            "length_w": p.length_w,
-            "height": p.height_used,
-            "clamped": bool(p.clamped),
-            "speed": rec.speed,
-            "seed": rec.seed,
-            "variance_fraction_u": fu,
-            "variance_fraction_w": fw,
-        }
+        out["turbulence"] = {"sigma_u": p.sigma_u, "sigma_w": p.sigma_w, "length_u": p.length_u,
+                             "length_w": p.length_w, "height": p.height_used,
+                             "clamped": bool(p.clamped), "speed": rec.speed, "seed": rec.seed,
+                             "variance_fraction_u": fu, "variance_fraction_w": fw,
+                             "model": rec.model, "levels": int(rec.z_levels.size),
+                             "intensity": req["turbulence"].get("intensity")}
+    if d is not None:
+        lim = limits_of(d)
+        out["limits"] = limit_flags(res, lim)
+        out["limit_values"] = {"fin_stall_deg": lim.fin_stall_deg,
+                               "safe_working_load": lim.safe_working_load,
+                               "min_height": lim.min_height}
     if req.get("modes") and res.system.is_hull is not None:
         try:
             lin = linearise(res.system, wind=res.wind, state=res.y[0])
-            out["modes"] = [
-                {k: (float(v) if isinstance(v, float) else v) for k, v in r.items()}
-                for r in lin.rows()
-            ]
+            out["modes"] = [{k: (float(v) if isinstance(v, float) else v) for k, v in r.items()}
+                            for r in lin.rows()]
             out["stable"] = bool(lin.stable)
         except Exception as exc:  # noqa: BLE001 - shown to the user, never a traceback
             out["modes_error"] = str(exc)
     return out
 
 
-@st.cache_data(max_entries=16, show_spinner=False)
-def cached_run(request_json: str, _progress: Callable[[float], None] | None = None) -> dict:
-    """:func:`run` of a request (JSON text from :func:`request_key`); the progress callback is
-    not part of the cache key."""
-    return run(json.loads(request_json), _progress)
-
-
 def turbulence_caption(tb: Mapping[str, Any]) -> str:
-    """One line describing the realised Dryden turbulence."""
-    clamp = (
-        " (the hull is above 1000 ft: the low-altitude values at 1000 ft are used)"
-        if tb["clamped"]
-        else ""
-    )
-    return (
-        f"Dryden turbulence (MIL-F-8785C low altitude, 8785C length convention) at "
-        f"h = {tb['height']:.0f} m{clamp}: σ_u = {tb['sigma_u']:.2f} m/s, "
-        f"σ_w = {tb['sigma_w']:.2f} m/s, L_u = {tb['length_u']:.0f} m, "
-        f"L_w = {tb['length_w']:.0f} m, convected at V = {tb['speed']:.1f} m/s (frozen "
-        f"turbulence, same u′, w′ along the tether), seed {tb['seed']}; the synthesised record "
-        f"holds {100 * tb['variance_fraction_u']:.1f} % / {100 * tb['variance_fraction_w']:.1f} % "
-        "of σ_u² / σ_w² (the rest lies above the highest frequency)."
-    )
+    """One line naming the turbulence model in use and its realised values at the hull."""
+    clamp = (" (the hull is above 1000 ft: the low-altitude values at 1000 ft are used)"
+             if tb["clamped"] else "")
+    src = ("W20 from the run's wind profile" if tb.get("intensity") == "profile"
+           else "W20 set by the intensity level")
+    return (f"Turbulence model: {tb.get('model', 'Dryden')}; {src}. At the hull "
+            f"(h = {tb['height']:.0f} m{clamp}): σ_u = {tb['sigma_u']:.2f} m/s, "
+            f"σ_w = {tb['sigma_w']:.2f} m/s, L_u = {tb['length_u']:.0f} m, "
+            f"L_w = {tb['length_w']:.0f} m, convected at V = {tb['speed']:.1f} m/s "
+            f"(σ_u/V = {100 * tb['sigma_u'] / max(tb['speed'], 1e-9):.0f} %), "
+            f"{tb.get('levels', 1)} height levels, seed {tb['seed']}; the synthesised record "
+            f"holds {100 * tb['variance_fraction_u']:.1f} % / {100 * tb['variance_fraction_w']:.1f} % "
+            "of σ_u² / σ_w² at the hull (the rest lies above the highest frequency).")
+
+
+def one_decimal(v: float) -> str:
+    """``v`` with one decimal, never "-0.0"."""
+    txt = f"{v:.1f}"
+    return "0.0" if txt == "-0.0" else txt
+
+
+def limits_frame_rows(out: Mapping[str, Any]) -> list[dict]:
+    """Rows of the limits table (limit, value, worst, exceeded, first time)."""
+    return [{"limit": r["limit"], "unit": r["unit"], "limit_value": r["value"],
+             "worst": r["worst"], "exceeded": "yes" if r["exceeded"] else "no",
+             "first_s": r["first_s"]} for r in (out.get("limits") or [])]
+
+
+# --- thesis comparison --------------------------------------------------------------------------
+@st.cache_data(max_entries=4, show_spinner=False)
+def thesis_comparison(seed: int = 1) -> dict:
+    """The thesis comparison computed live (no UI element inside): table rows, the settings, and
+    the time histories of pitch and hull velocities per scenario (plain data)."""
+    from aerostat_core.dynamics.scenarios import default_request, design_of
+
+    d = design_of(default_request())
+    runs, series = {}, {}
+    for sc in THESIS_CLAIMS:
+        res, m, _req, _ = run_thesis_case(sc, seed=seed, design=d)
+        runs[sc] = m
+        series[sc] = {"t": res.t.tolist(), "theta": res.signal("theta").tolist(),
+                      "vx": res.signal("vx").tolist(), "vz": res.signal("vz").tolist(),
+                      "x_C": res.signal("x_C").tolist(), "window_start": m["window_start_s"],
+                      "status": m["status"]}
+    return {"rows": comparison_rows(runs), "settings": thesis_settings_text(), "series": series,
+            "factor": MATCH_FACTOR, "why": WHY_NOT, "volume": float(d.volume),
+            "fineness": float(np.asarray(d.airframe.hull.fineness_ratio).reshape(-1)[0])}
+
+
+def thesis_figure(cmp: Mapping[str, Any], scenario: str) -> go.Figure:
+    """Pitch and hull velocities of one thesis scenario, with the thesis' ± bands about the mean
+    over the metrics window."""
+    s = cmp["series"][scenario]
+    t = np.asarray(s["t"])
+    sel = t >= s["window_start"]
+    data = [_line(s["t"], s["theta"], "pitch θ [deg]", ACCENT),
+            _line(s["t"], s["vx"], "hull v_x [m/s]", SECOND, yaxis="y2"),
+            _line(s["t"], s["vz"], "hull v_z [m/s]", THIRD, yaxis="y2")]
+    claims = THESIS_CLAIMS[scenario]
+    shapes = []
+    th = np.asarray(s["theta"])[sel]
+    if "pitch_peak_deg" in claims and th.size:
+        m = float(th.mean())
+        for sgn in (-1, 1):
+            y = m + sgn * claims["pitch_peak_deg"]
+            shapes.append(dict(type="line", xref="paper", x0=0, x1=1, yref="y", y0=y, y1=y,
+                               line=dict(color=ACCENT, dash="dot", width=1)))
+    return _fig(data, f"Thesis case: {SCENARIOS[scenario]} (dotted: thesis ± pitch)",
+                "Time t [s]", "Pitch [deg]", shapes=shapes,
+                yaxis2=dict(title=dict(text="Velocity [m/s]"), overlaying="y", side="right"))
 
 
 def current_inputs_or_none(state: Mapping[str, Any]) -> dict | None:
@@ -451,73 +418,70 @@ def current_inputs_or_none(state: Mapping[str, Any]) -> dict | None:
 
 # --- figures ------------------------------------------------------------------------------------
 def _fig(data: list, title: str, xt: str, yt: str, **layout: Any) -> go.Figure:
-    lay = dict(
-        title=dict(text=title),
-        font=_FONT,
-        margin=_MARGIN,
-        template="plotly_white",
-        xaxis=dict(title=dict(text=xt)),
-        yaxis=dict(title=dict(text=yt)),
-        legend=dict(orientation="h", y=-0.2),
-        height=360,
-    )
+    lay = dict(title=dict(text=title), font=_FONT, margin=_MARGIN, template="plotly_white",
+               xaxis=dict(title=dict(text=xt)), yaxis=dict(title=dict(text=yt)),
+               legend=dict(orientation="h", y=-0.2), height=360)
     lay.update(layout)
     return go.Figure(dict(data=data, layout=lay))
 
 
 def _line(x, y, name, colour=ACCENT, **kw) -> dict:
-    return dict(
-        type="scatter",
-        mode="lines",
-        x=x,
-        y=y,
-        name=name,
-        line=dict(color=colour, width=kw.pop("width", 2), dash=kw.pop("dash", None)),
-        **kw,
-    )
+    return dict(type="scatter", mode="lines", x=x, y=y, name=name,
+                line=dict(color=colour, width=kw.pop("width", 2), dash=kw.pop("dash", None)), **kw)
 
 
-def time_figure(
-    out: Mapping[str, Any], names, title: str, ytitle: str, key_names=None
-) -> go.Figure:
-    """Signals versus time on one axis (a dashed marker at the event time)."""
+def _hline(y: float, yref: str = "y") -> dict:
+    return dict(type="line", xref="paper", x0=0, x1=1, yref=yref, y0=y, y1=y,
+                line=dict(color=LIMIT, dash="dash", width=1))
+
+
+def limit_lines(out: Mapping[str, Any], names, limits) -> tuple[list, str]:
+    """Limit lines worth drawing: [(value, label)] for the limits the signals come within half
+    of (farther ones would flatten the curves), and a note naming the others."""
+    peak = max((max(abs(v) for v in out["signals"][k]) for k in names if k in out["signals"]),
+               default=0.0)
+    lines, far = [], []
+    for value, label in limits:
+        if value is None:
+            continue
+        (lines if abs(value) == 0.0 or peak >= 0.5 * abs(value) else far).append((value, label))
+    note = ", ".join(sorted({f"{lab} {abs(v):.4g}" for v, lab in far}))
+    return lines, (f"; not reached: {note}" if note else "")
+
+
+def time_figure(out: Mapping[str, Any], names, title: str, ytitle: str, key_names=None,
+                hlines=(), note: str = "") -> go.Figure:
+    """Signals versus time on one axis (a dotted marker at the event time, dashed red limit
+    lines at ``hlines`` = [(value, label)], labelled in the title with ``note``)."""
     cols = (ACCENT, SECOND, THIRD)
-    data = [
-        _line(out["t"], out["signals"][k], (key_names or {}).get(k, SIGNALS[k][0]), cols[i % 3])
-        for i, k in enumerate(names)
-        if k in out["signals"]
-    ]
-    shapes = []
+    data = [_line(out["t"], out["signals"][k], (key_names or {}).get(k, SIGNALS[k][0]),
+                  cols[i % 3]) for i, k in enumerate(names) if k in out["signals"]]
+    shapes = [_hline(y) for y, _ in hlines]
     if out.get("event_time") is not None:
-        shapes.append(
-            dict(
-                type="line",
-                xref="x",
-                yref="paper",
-                x0=out["event_time"],
-                x1=out["event_time"],
-                y0=0,
-                y1=1,
-                line=dict(color="#7f7f7f", dash="dot", width=1),
-            )
-        )
+        shapes.append(dict(type="line", xref="x", yref="paper", x0=out["event_time"],
+                           x1=out["event_time"], y0=0, y1=1,
+                           line=dict(color="#7f7f7f", dash="dot", width=1)))
+    if hlines:
+        title = f"{title} (red: {', '.join(sorted({lab for _, lab in hlines}))}{note})"
+    elif note:
+        title = f"{title} ({note[2:]})"
     return _fig(data, title, "Time t [s]", ytitle, shapes=shapes)
 
 
 def position_figure(out: Mapping[str, Any]) -> go.Figure:
-    """x_C(t) and z_C(t) (two y axes), as thesis Figs 4.37/4.39/4.41."""
+    """x_C(t) and z_C(t) (two y axes), as thesis Figs 4.37/4.39/4.41, with the lowest accepted
+    height (dashed red)."""
     t = out["t"]
-    data = [
-        _line(t, out["signals"]["x_C"], "blow-by x_C [m]", ACCENT),
-        _line(t, out["signals"]["z_C"], "altitude z_C [m]", SECOND, yaxis="y2"),
-    ]
-    return _fig(
-        data,
-        "Position of the confluence point",
-        "Time t [s]",
-        "Blow-by x_C [m]",
-        yaxis2=dict(title=dict(text="Altitude z_C [m]"), overlaying="y", side="right"),
-    )
+    data = [_line(t, out["signals"]["x_C"], "blow-by x_C [m]", ACCENT),
+            _line(t, out["signals"]["z_C"], "altitude z_C [m]", SECOND, yaxis="y2")]
+    shapes = []
+    title = "Position of the confluence point"
+    lim = out.get("limit_values")
+    if lim:
+        shapes.append(_hline(lim["min_height"], "y2"))
+        title += " (red: lowest height)"
+    return _fig(data, title, "Time t [s]", "Blow-by x_C [m]", shapes=shapes,
+                yaxis2=dict(title=dict(text="Altitude z_C [m]"), overlaying="y", side="right"))
 
 
 def tether_figure(out: Mapping[str, Any], indices=None, title="Tether profile") -> go.Figure:
@@ -531,62 +495,29 @@ def tether_figure(out: Mapping[str, Any], indices=None, title="Tether profile") 
         c = cols[j % 3]
         data.append(_line(s["x"], s["z"], f"tether, t = {s['t']:.1f} s", c))
         if "hull_x" in s:
-            data.append(
-                dict(
-                    type="scatter",
-                    mode="lines",
-                    x=s["hull_x"],
-                    y=s["hull_z"],
-                    name=f"hull, t = {s['t']:.1f} s",
-                    fill="toself",
-                    line=dict(color=c, width=1),
-                    opacity=0.6,
-                )
-            )
-    return _fig(
-        data,
-        title,
-        "Downwind distance x [m]",
-        "Height z [m]",
-        yaxis=dict(title=dict(text="Height z [m]"), scaleanchor="x", scaleratio=1),
-        height=520,
-    )
+            data.append(dict(type="scatter", mode="lines", x=s["hull_x"], y=s["hull_z"],
+                             name=f"hull, t = {s['t']:.1f} s", fill="toself",
+                             line=dict(color=c, width=1), opacity=0.6))
+    return _fig(data, title, "Downwind distance x [m]", "Height z [m]",
+                yaxis=dict(title=dict(text="Height z [m]"), scaleanchor="x", scaleratio=1),
+                height=520)
 
 
 def hull_zoom_figure(out: Mapping[str, Any], i: int) -> go.Figure:
     """The hull and the top of the tether at snapshot ``i`` (zoomed, to scale), with the path of
     the confluence point."""
     s = out["snapshots"][i]
-    data = [
-        _line(out["signals"]["x_C"], out["signals"]["z_C"], "path of C", "#b0b0b0", width=1),
-        _line(s["x"][-4:], s["z"][-4:], "tether (top)", ACCENT),
-    ]
+    data = [_line(out["signals"]["x_C"], out["signals"]["z_C"], "path of C", "#b0b0b0", width=1),
+            _line(s["x"][-4:], s["z"][-4:], "tether (top)", ACCENT)]
     if "hull_x" in s:
-        data.append(
-            dict(
-                type="scatter",
-                mode="lines",
-                x=s["hull_x"],
-                y=s["hull_z"],
-                name="hull",
-                fill="toself",
-                line=dict(color=SECOND, width=1),
-            )
-        )
+        data.append(dict(type="scatter", mode="lines", x=s["hull_x"], y=s["hull_z"],
+                         name="hull", fill="toself", line=dict(color=SECOND, width=1)))
         data.append(_line(s["rig_x"], s["rig_z"], "confluence lines", "#7f7f7f", width=1))
     xc, zc = s["x"][-1], s["z"][-1]
     half = 20.0 if "hull_x" not in s else max(20.0, 1.3 * (max(s["hull_x"]) - min(s["hull_x"])))
-    return _fig(
-        data,
-        f"Hull at t = {s['t']:.1f} s",
-        "Downwind distance x [m]",
-        "Height z [m]",
-        xaxis=dict(title=dict(text="Downwind distance x [m]"), range=[xc - half, xc + half]),
-        yaxis=dict(
-            title=dict(text="Height z [m]"),
-            scaleanchor="x",
-            scaleratio=1,
-            range=[zc - 0.8 * half, zc + 0.8 * half],
-        ),
-        height=520,
-    )
+    return _fig(data, f"Hull at t = {s['t']:.1f} s", "Downwind distance x [m]", "Height z [m]",
+                xaxis=dict(title=dict(text="Downwind distance x [m]"),
+                           range=[xc - half, xc + half]),
+                yaxis=dict(title=dict(text="Height z [m]"), scaleanchor="x", scaleratio=1,
+                           range=[zc - 0.8 * half, zc + 0.8 * half]),
+                height=520)

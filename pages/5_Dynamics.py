@@ -13,8 +13,14 @@ st.caption(
     "static equilibrium of the design. Hull aerodynamics are the design engine's (Jones & "
     "DeLaurier hull, fins) fed with the local relative wind, so pitch damping follows from the "
     "geometry; Lamb added mass, buoyancy, gravity; wind from a profile, ramps, a 1 − cos gust or "
-    "MIL-F-8785C Dryden turbulence."
+    "MIL-HDBK-1797 Dryden turbulence, a frozen field convected with the mean wind that varies "
+    "along the tether and over the hull (IEC 61400-1 vertical coherence). The tether carries no "
+    "compression; the aerodynamics hold over ±180°."
 )
+
+if not view.kernels_ready():
+    with st.spinner("Compiling the simulation kernels, once (up to a minute on a fresh server)…"):
+        view.warm()
 
 cases_state = st.session_state.get("cases") or {}
 sources = view.design_sources(cases_state)
@@ -63,9 +69,14 @@ with st.form("dyn_form"):
         form["gust_hold"] = g[4].checkbox("Ramp and hold", key="dyn_ghold",
                                           persist_state="session",
                                           help="Off: the full 1 − cos gust returns to zero.")
+        form["gust_uniform"] = g[4].checkbox(
+            "Uniform in space", key="dyn_guni", persist_state="session",
+            help="Off (default): a frozen gust travelling with the mean wind (it reaches the "
+                 "winch, the tether and the hull in turn; the air carrying it does not "
+                 "accelerate, so no Froude–Krylov force). On: the whole air mass changes at once.")
     elif scenario == "turbulence":
         tb = st.columns(5)
-        form["intensity"] = tb[0].selectbox("Intensity", list(view.INTENSITIES), index=1,
+        form["intensity"] = tb[0].selectbox("Intensity", list(view.INTENSITIES), index=0,
                                             format_func=view.INTENSITIES.get, key="dyn_int",
                                             persist_state="session")
         form["w20"] = tb[1].number_input("Custom W20 [m/s]", value=15.4, key="dyn_w20",
@@ -78,8 +89,14 @@ with st.form("dyn_form"):
                                              help="Statistics skip the fade-in.")
         form["max_frequency"] = tb[4].number_input("Highest frequency [Hz]", value=1.0,
                                                    key="dyn_fmax", persist_state="session")
-        form["vertical"] = st.checkbox("Vertical turbulence w′", value=True, key="dyn_vert",
-                                       persist_state="session")
+        tc = st.columns(2)
+        form["vertical"] = tc[0].checkbox("Vertical turbulence w′", value=True, key="dyn_vert",
+                                          persist_state="session")
+        form["spatial"] = tc[1].checkbox(
+            "Varies along the tether and over the hull", value=True, key="dyn_spatial",
+            persist_state="session",
+            help="A frozen field convected with the mean wind, on height levels with IEC "
+                 "61400-1 coherence. Off: one record, the same everywhere.")
     with st.expander("Wind profile and model options"):
         p = st.columns(3)
         form["profile"] = p[0].selectbox("Wind profile", list(view.PROFILES),
@@ -98,9 +115,11 @@ with st.form("dyn_form"):
                                             key="dyn_zeta", persist_state="session")
         form["wall"] = m[3].number_input("Wall-clock budget [s]", value=60.0, key="dyn_wall",
                                          persist_state="session")
-        form["unsteady"] = st.checkbox("Unsteady-wind inertia (added mass × fluid acceleration "
-                                       "+ Froude–Krylov)", value=True, key="dyn_unsteady",
-                                       persist_state="session")
+        form["unsteady"] = st.checkbox(
+            "Unsteady-wind inertia (added mass × fluid acceleration + Froude–Krylov)", value=True,
+            key="dyn_unsteady", persist_state="session",
+            help="Driven by the acceleration of the air itself (the material derivative): it acts "
+                 "in a uniform speed change and is zero for frozen convected gusts and turbulence.")
         form["modes"] = st.checkbox("Linearised modes about the initial equilibrium",
                                     value=False, key="dyn_modes", persist_state="session")
     submitted = st.form_submit_button("Run simulation", type="primary", key="dyn_run",
@@ -116,28 +135,79 @@ if submitted:
     else:
         st.session_state["dyn_request"] = view.request_key(req)
 
+def thesis_section() -> None:
+    """The thesis comparison (its own button; independent of the run above)."""
+    st.subheader("Thesis comparison (computed live)")
+    st.caption(
+        "The thesis' optimised design under its three wind scenarios. Thesis claims: after a varying "
+        "wind or a gust it is steady within 40 s with ±3° pitch; in high-intensity turbulence ±1.2 m/s "
+        "horizontal, ±0.2 m/s vertical and ±3.5° pitch. Each figure below is a peak deviation from "
+        "the mean over the stated window (the settling time: x_C within 5 % of its change); a match "
+        "is within a factor of 1.5. The settings are physical ones, not tuned to the claims.")
+    if st.button("Run the thesis comparison (3 runs)", key="dyn_thesis_run",
+                 icon=":material/compare_arrows:"):
+        st.session_state["dyn_thesis"] = True
+    if st.session_state.get("dyn_thesis"):
+        with st.spinner("Simulating the three thesis scenarios…"):
+            cmp = view.thesis_comparison(1)
+        st.markdown("\n".join(f"- **{view.SCENARIOS[k]}**: {v}" for k, v in cmp["settings"].items()))
+        st.dataframe(pd.DataFrame(cmp["rows"]), hide_index=True, key="dyn_thesis_table",
+                     column_config={
+                         "scenario": "Scenario", "metric": "Metric", "unit": "Unit",
+                         "thesis": st.column_config.NumberColumn("Thesis", format="%.2f"),
+                         "ours": st.column_config.NumberColumn("Ours (peak)", format="%.2f"),
+                         "ratio": st.column_config.NumberColumn("Ours / thesis", format="%.2f"),
+                         "our_rms": st.column_config.NumberColumn("Ours (RMS)", format="%.2f"),
+                         "match": st.column_config.CheckboxColumn("Within ×1.5"),
+                         "claim_holds": st.column_config.CheckboxColumn("Claim holds"),
+                         "window": "Window"})
+        misses = [r for r in cmp["rows"] if not r["match"]]
+        if misses:
+            st.info("Not matched within ×1.5: " + "; ".join(
+                f"{r['scenario']} {r['metric']} ({r['ours']:.2f} vs {r['thesis']:.2f} {r['unit']})"
+                for r in misses) + ". Why: " + cmp["why"], icon=":material/info:")
+        tc = st.columns(3)
+        for i, sc in enumerate(cmp["series"]):
+            tc[i].plotly_chart(view.thesis_figure(cmp, sc), key=f"dyn_thesis_{sc}")
+
+
 key = st.session_state.get("dyn_request")
 if key is None:
     st.info("Choose the design and the wind, then press **Run simulation**.",
             icon=":material/info:")
+    thesis_section()
     st.stop()
 
-bar = st.progress(0.0, text="Simulating…")
-try:
-    out = view.cached_run(key, _progress=lambda f: bar.progress(
-        min(max(f, 0.0), 1.0), text=f"Simulating… {100 * f:.0f} %"))
-except (ValueError, RuntimeError) as exc:
+out = view.stored(key)
+if out is None:
+    bar = st.progress(0.0, text="Simulating…")
+    try:
+        out = view.run_cached(key, progress=lambda f: bar.progress(
+            min(max(f, 0.0), 1.0), text=f"Simulating… {100 * f:.0f} %"))
+    except (ValueError, RuntimeError) as exc:
+        bar.empty()
+        st.error(f"Cannot simulate this case: {exc}", icon=":material/error:")
+        st.stop()
     bar.empty()
-    st.error(f"Cannot simulate this case: {exc}", icon=":material/error:")
-    st.stop()
-bar.empty()
 
 if out["ok"]:
     st.success(f"Finished: {out['t'][-1]:.0f} s simulated in {out['solver']['wall_time']:.2f} s "
-               f"({out['solver']['steps']} steps).", icon=":material/check_circle:")
+               f"({out['solver']['steps']} steps; kernel compilation excluded).",
+               icon=":material/check_circle:")
 else:
     st.error(f"The simulation {out['message']}. The time histories up to that point are shown.",
              icon=":material/warning:")
+
+exceeded = [r for r in (out.get("limits") or []) if r["exceeded"]]
+if exceeded:
+    st.warning("Limits exceeded: " + "; ".join(
+        f"{r['limit']} (worst {r['worst']:.3g} {r['unit']} vs {r['value']:.3g} {r['unit']}, "
+        f"first at t = {r['first_s']:.1f} s)" for r in exceeded), icon=":material/report:")
+if out.get("slack_events"):
+    ev = out["slack_events"]
+    st.caption(f"Slack tether ({len(ev)} events): " + "; ".join(
+        f"segment {e['segment']} at {e['start_s']:.1f}–{e['end_s']:.1f} s" for e in ev[:10])
+        + (" …" if len(ev) > 10 else ""))
 
 if out.get("turbulence"):
     st.caption(view.turbulence_caption(out["turbulence"]))
@@ -147,7 +217,8 @@ k = st.columns(5)
 k[0].metric("Peak blow-by x_C [m]", f"{max(sig['x_C']):.1f}")
 k[1].metric("Lowest altitude z_C [m]", f"{min(sig['z_C']):.1f}")
 if out["is_hull"]:
-    k[2].metric("Pitch range θ [deg]", f"{min(sig['theta']):.1f} … {max(sig['theta']):.1f}")
+    k[2].metric("Pitch range θ [deg]",
+                f"{view.one_decimal(min(sig['theta']))} … {view.one_decimal(max(sig['theta']))}")
 rms = {r["signal"]: r for r in out["stats"]}
 k[3].metric("RMS fluctuation of v_x [m/s]",
             f"{rms[view.SIGNALS['vx'][0]]['rms_fluctuation']:.2f}")
@@ -158,14 +229,23 @@ r1[0].plotly_chart(view.tether_figure(out, title="Tether profile at t = 0 and at
                    key="dyn_tether")
 r1[1].plotly_chart(view.position_figure(out), key="dyn_position")
 r2 = st.columns(2)
+lim = out.get("limit_values") or {}
 r2[0].plotly_chart(view.time_figure(out, ["vx", "vz"], "Hull velocity", "Velocity [m/s]"),
                    key="dyn_velocity")
 if out["is_hull"]:
-    r2[1].plotly_chart(view.time_figure(out, ["theta", "alpha"], "Pitch and angle of attack",
-                                        "Angle [deg]"), key="dyn_pitch")
+    stall = lim.get("fin_stall_deg")
+    names = ["theta", "alpha", "alpha_fin"]
+    lines, note = view.limit_lines(out, names, [(stall, "fin stall"), (-stall, "fin stall")]
+                                   if stall else [])
+    r2[1].plotly_chart(view.time_figure(out, names, "Pitch and angle of attack", "Angle [deg]",
+                                        hlines=lines, note=note), key="dyn_pitch")
 r3 = st.columns(2)
-r3[0].plotly_chart(view.time_figure(out, ["tension_C", "tension_winch"], "Tether tension",
-                                    "Tension [N]"), key="dyn_tension")
+names = ["tension_C", "tension_winch"]
+lines, note = view.limit_lines(
+    out, names, [(lim.get("safe_working_load"), "safe working load")]
+    + ([(0.0, "slack")] if out.get("slack_events") else []))
+r3[0].plotly_chart(view.time_figure(out, names, "Tether tension", "Tension [N]", hlines=lines,
+                                    note=note), key="dyn_tension")
 r3[1].plotly_chart(view.time_figure(out, ["wind_x", "wind_z"], "Wind input at the hull",
                                     "Wind [m/s]"), key="dyn_wind")
 
@@ -211,6 +291,17 @@ if out["metrics"]:
         "overshoot_pct": st.column_config.NumberColumn("Overshoot [%]", format="%.1f"),
         "peak_excursion": st.column_config.NumberColumn("Peak excursion", format="%.3f"),
         "final": st.column_config.NumberColumn("Final value", format="%.3f")})
+if out.get("limits"):
+    st.caption("Limits: fin stall angle, the tether's safe working load (breaking strength / "
+               "required safety factor), a slack segment, and the lowest accepted height (the "
+               "static height at the design wind, where the blow-by reaches the requirement).")
+    st.dataframe(pd.DataFrame(view.limits_frame_rows(out)), hide_index=True, key="dyn_limits",
+                 column_config={
+                     "limit": "Limit", "unit": "Unit",
+                     "limit_value": st.column_config.NumberColumn("Limit value", format="%.1f"),
+                     "worst": st.column_config.NumberColumn("Worst in the run", format="%.1f"),
+                     "exceeded": "Exceeded",
+                     "first_s": st.column_config.NumberColumn("First at [s]", format="%.1f")})
 if out.get("modes"):
     st.subheader("Linearised modes about the initial equilibrium")
     st.caption("Eigenvalues of the finite-difference Jacobian of the full model; modes with at "
@@ -231,8 +322,9 @@ elif out.get("modes_error"):
     st.warning(f"Linearisation failed: {out['modes_error']}")
 
 st.download_button("Time histories (CSV)", out["csv"].encode("utf-8"),
-                   file_name="aerostat_dynamics.csv", mime="text/csv", on_click="ignore",
-                   key="dyn_csv", icon=":material/download:")
+                   file_name=out["csv_name"], mime="text/csv", on_click="ignore",
+                   key="dyn_csv", icon=":material/download:",
+                   help="The header lines (# key = value) record the scenario and every parameter.")
 st.caption(
     f"Solver: adaptive L-stable TR-BDF2, {out['solver']['steps']} steps, "
     f"{out['solver']['rhs_calls']} right-hand-side calls, {out['solver']['wall_time']:.2f} s; "
@@ -240,3 +332,5 @@ st.caption(
     + (f" (lumped-mass polish moved the nodes by {out['equilibrium_shift_mm']:.1f} mm)."
        if out.get("equilibrium_shift_mm") is not None else ".")
 )
+
+thesis_section()

@@ -11,55 +11,59 @@ Typical use::
     res = simulate(system, wind, 150.0, guess=engine_guess(system, d, 10.0))
     res.signal("x_C"), res.signal("theta"), res.stats_table()
 
-Modules: :mod:`.wind` (profiles, ramps, gusts, Dryden), :mod:`.tether` (lumped-mass line),
-:mod:`.model` (point aerostat, rigid hull, system assembly), :mod:`.solver` (TR-BDF2, banded
-Jacobian), :mod:`.simulate` (equilibrium, runs, results, summaries), :mod:`.linearise` (modes),
-:mod:`.cases` (reference cases R1-R4 and the thesis design), :mod:`.moordyn_check` (optional
-cross-check). The numba kernels compile on first use and are cached on disk (``cache=True``);
-:func:`warm_up` compiles them ahead (e.g. when building a container image).
+Modules: :mod:`.wind` (profiles, ramps, gusts, the wind kernels), :mod:`.turbulence` (MIL-HDBK-1797
+Dryden field with IEC 61400-1 coherence), :mod:`.tether` (lumped-mass line), :mod:`.bodies`
+(point aerostat, rigid hull), :mod:`.kernel` (equations of motion), :mod:`.system` (assembly),
+:mod:`.solver` (TR-BDF2, banded Jacobian), :mod:`.simulate` (equilibrium, runs), :mod:`.results`
+(time histories, statistics, events, limits), :mod:`.linearise` (modes), :mod:`.cases`
+(reference cases R1-R4), :mod:`.thesis` (the thesis comparison), :mod:`.scenarios` (runs from
+plain settings: the app and the CLI), :mod:`.moordyn_check` (live MoorDyn cross-check).
+
+Importing the package has no side effects. The numba kernels compile on first use and are cached
+on disk (``cache=True``); the first :class:`DynamicSystem` of a process drops stale cache files
+(:mod:`.kernel_cache`), and :func:`warm_up` compiles everything ahead (server start, image build).
 """
 
-from ._cache import ensure_fresh_cache
+from importlib import import_module
 
-ensure_fresh_cache()
-
-from .linearise import Linearisation, Mode, linearise  # noqa: E402
-from .model import (  # noqa: E402
-    Atmosphere,
-    DynamicSystem,
-    HullModel,
-    PointAerostat,
-    ellipsoid_hull,
-    hull_from_airframe,
-    system_from_design,
-)
-from .simulate import (  # noqa: E402
-    SIGNALS,
-    SimulationResult,
-    SolverOptions,
-    engine_guess,
-    equilibrium,
-    response_metrics,
-    signal_stats,
-    simulate,
-    straight_guess,
-    straight_state,
-)
-from .tether import TetherModel  # noqa: E402
-from .wind import (  # noqa: E402
-    DrydenTurbulence,
-    Gust,
-    MeanProfile,
-    SpeedSchedule,
-    WindScenario,
-    dryden_parameters,
-)
+#: Public names -> the module that defines them (imported on first use: ``import
+#: aerostat_core.dynamics`` loads neither numba nor a kernel).
+_EXPORTS = {
+    "HullModel": "bodies", "PointAerostat": "bodies", "ellipsoid_hull": "bodies",
+    "hull_from_airframe": "bodies", "point_from_design": "bodies",
+    "Linearisation": "linearise", "Mode": "linearise", "linearise": "linearise",
+    "SIGNALS": "results", "SimulationResult": "results", "response_metrics": "results",
+    "signal_stats": "results", "Limits": "results", "limit_flags": "results",
+    "SolverOptions": "options",
+    "engine_guess": "simulate", "equilibrium": "simulate", "simulate": "simulate",
+    "straight_guess": "simulate", "straight_state": "simulate", "warm_kernels": "simulate",
+    "Atmosphere": "system", "DynamicSystem": "system", "system_from_design": "system",
+    "TetherModel": "tether",
+    "DrydenTurbulence": "wind", "Gust": "wind", "MeanProfile": "wind", "SpeedSchedule": "wind",
+    "WindScenario": "wind", "dryden_parameters": "wind",
+}
 
 
-def warm_up() -> None:
-    """Compile (or load from the disk cache) every numba kernel with two tiny runs."""
+def __getattr__(name: str):
+    if name in _EXPORTS:
+        return getattr(import_module(f".{_EXPORTS[name]}", __name__), name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
+def warm_up() -> float:
+    """Compile (or load from the disk cache) every numba kernel with tiny runs (a point case, a
+    hull in spatial turbulence, a linearisation); returns the seconds it took."""
+    import time
+
     from . import cases
+    from .bodies import ellipsoid_hull
+    from .linearise import linearise
+    from .simulate import simulate, straight_state
+    from .system import Atmosphere, DynamicSystem
+    from .tether import TetherModel
+    from .wind import DrydenTurbulence, SpeedSchedule, WindScenario
 
+    t0 = time.perf_counter()
     system = cases.case_p_system(4)
     simulate(system, cases.r3_wind(), 1.0, initial_state=straight_state(system, (0.0, 319.5)))
     hull = ellipsoid_hull()
@@ -68,13 +72,7 @@ def warm_up() -> None:
     turb = WindScenario(SpeedSchedule.constant(5.0), turbulence=DrydenTurbulence(fade_in=0.0))
     simulate(hs, turb, 1.0, initial_state=straight_state(hs, (0.0, 300.3)))
     linearise(system, 5.0)
+    return time.perf_counter() - t0
 
 
-__all__ = [
-    "SIGNALS", "Atmosphere", "DrydenTurbulence", "DynamicSystem", "Gust", "HullModel",
-    "Linearisation", "MeanProfile", "Mode", "PointAerostat", "SimulationResult", "SolverOptions",
-    "SpeedSchedule", "TetherModel", "WindScenario", "dryden_parameters", "ellipsoid_hull",
-    "engine_guess", "equilibrium", "hull_from_airframe", "linearise", "response_metrics",
-    "signal_stats", "simulate", "straight_guess", "straight_state", "system_from_design",
-    "warm_up",
-]
+__all__ = sorted([*_EXPORTS, "warm_up"])

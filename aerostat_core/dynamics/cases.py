@@ -7,7 +7,8 @@ the benchmark and the app use these definitions so that all of them run the same
 
 from __future__ import annotations
 
-from .model import Atmosphere, DynamicSystem, PointAerostat
+from .bodies import PointAerostat
+from .system import Atmosphere, DynamicSystem
 from .tether import TetherModel
 from .wind import MeanProfile, SpeedSchedule, WindScenario
 
@@ -34,10 +35,12 @@ def case_p_point() -> PointAerostat:
 
 
 def case_p_tether(segments: int = 32) -> TetherModel:
-    """L = 320 m, d = 4 mm, w = 0.02 kg/m, EA = 1 MN, C_dn = 1.2, C_dt = 0.01, zeta = 1."""
+    """L = 320 m, d = 4 mm, w = 0.02 kg/m, EA = 1 MN, C_dn = 1.2, C_dt = 0.01, zeta = 1, in
+    MoorDyn's convention (the damper may push while a segment shortens: the R3 start from a
+    straight, unstretched line has brief slack moments)."""
     return TetherModel(length=320.0, segments=segments, linear_density=0.02, diameter=0.004,
                        axial_stiffness=1.0e6, damping_ratio=1.0, normal_drag_coefficient=1.2,
-                       tangential_drag_coefficient=0.01)
+                       tangential_drag_coefficient=0.01, damper_compression=True)
 
 
 def case_p_system(segments: int = 32) -> DynamicSystem:

@@ -14,9 +14,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .model import ND, DynamicSystem, rhs_kernel
-from .simulate import _index_sets, equilibrium, straight_guess
-from .wind import NT, WindField, WindScenario, wind_time_terms
+from .kernel import ND, rhs_kernel
+from .simulate import equilibrium, index_sets, straight_guess
+from .system import DynamicSystem
+from .wind import WindField, WindScenario
 
 
 @dataclass(frozen=True)
@@ -61,8 +62,6 @@ def jacobian(system: DynamicSystem, y: np.ndarray, wind: WindField, t: float = 0
              rel: float = 1e-6) -> np.ndarray:
     """Dense Jacobian df/dy by central differences (step ``rel`` x max(|y|, 1))."""
     data = system.data(wind)
-    wt = np.empty(NT)
-    wind_time_terms(t, data[1], data[2], data[3], wt)
     n = y.size
     jac = np.empty((n, n))
     fp = np.empty(n)
@@ -74,8 +73,8 @@ def jacobian(system: DynamicSystem, y: np.ndarray, wind: WindField, t: float = 0
         ym = y.copy()
         yp[j] += h
         ym[j] -= h
-        rhs_kernel(yp, fp, data, wt, diag)
-        rhs_kernel(ym, fm, data, wt, diag)
+        rhs_kernel(t, yp, fp, data, diag)
+        rhs_kernel(t, ym, fm, data, diag)
         jac[:, j] = (fp - fm) / (2.0 * h)
     return jac
 
@@ -107,7 +106,7 @@ def linearise(system: DynamicSystem, speed: float | None = None, wind: WindField
         state, _ = equilibrium(system, wind, g0)
     a = jacobian(system, state, wind)
     lam, vec = np.linalg.eig(a)
-    pos, _acc, vel = _index_sets(system)
+    pos, _acc, vel = index_sets(system)
     b = system.hull_index
     # kinetic-energy weights of the velocity components
     wts = np.zeros(system.n_state)

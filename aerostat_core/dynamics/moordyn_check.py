@@ -4,8 +4,9 @@ MoorDyn has no aerostat aerodynamics, so only the point-aerostat mode (the R cas
 docs/dynamics.md §3.1) can be compared. The air is MoorDyn's "water" (``rho 1.225``), the wind its
 current (``Currents 2``: a time table on a height grid), and the whole system sits below its free
 surface (winch at z = -1000 m, ``WtrDpth 1001``, no seabed stiffness) because MoorDyn switches off
-buoyancy and drag above z = 0 (docs/dynamics.md §4.3). ``moordyn`` is not a dependency: call
-:func:`moordyn_available` first (tests skip without it).
+buoyancy and drag above z = 0 (docs/dynamics.md §4.3). ``moordyn`` (PyPI, 2.7.2) is a pinned
+test dependency (requirements-dev.txt), not a runtime one: :func:`moordyn_available` says whether
+it is importable.
 """
 
 from __future__ import annotations
@@ -17,7 +18,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .model import PointAerostat
+from .bodies import PointAerostat
 from .tether import TetherModel
 from .wind import MeanProfile, SpeedSchedule
 

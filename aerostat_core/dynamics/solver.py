@@ -6,7 +6,9 @@ the surge mode has a period of ~60 s). Explicit schemes (MoorDyn's RK2 at dt = 2
 that stiffness with millions of steps; scipy's Radau/BDF with a finite-difference Jacobian pay
 in Python overhead (~40 s for a 300 s case). Here:
 
-* the right-hand side is a numba kernel (:func:`.model.rhs_kernel`);
+* the right-hand side is a numba kernel; the integrator sees the model only through
+  ``rhs_kernel(t, y, dy, data, diag)`` and ``check_kernel(t, y, data, diag)`` (:mod:`.kernel`):
+  ``data`` and ``diag`` are opaque, no index of the aerostat model appears here;
 * TR-BDF2 (Bank et al. 1985; Hosea & Shampine 1996, MATLAB's ode23tb): a one-step, L-stable,
   second-order ESDIRK with an embedded third-order error estimate. One Newton matrix
   W = I - h d J serves both implicit stages, L-stability damps the axial ringing in one step,
@@ -14,7 +16,9 @@ in Python overhead (~40 s for a 300 s case). Here:
 * the Jacobian is banded (each node couples to its neighbours, the hull to the top node): it is
   built by finite differences with column colouring (kl + ku + 1 kernel calls, not n) and
   factorised by a banded LU with partial pivoting, all in numba; the Jacobian is reused across
-  steps and refreshed only when Newton slows down;
+  steps and refreshed only when Newton slows down, and a step that could grow by less than 20 %
+  keeps its size so that the factorised Newton matrix is reused (Hairer & Wanner, Solving ODEs
+  II, §IV.8);
 * wind inputs are analytic in time and ramp corners are step boundaries ("stops").
 
 Tableau (gamma = 2 - sqrt 2, d = gamma/2, w = sqrt(2)/4):
@@ -31,17 +35,9 @@ import math
 import numpy as np
 from numba import njit
 
-from ._layout import (
-    P_AERO_AX,
-    P_AERO_CF,
-    P_AERO_FIN,
-    P_AERO_INV,
-    P_MODE,
-    P_NSEG,
-    P_THETA_MAX,
-)
-from .model import ND, rhs_kernel
-from .wind import NT, wind_time_terms
+# The only two model functions the integrator calls; bound statically so numba can cache the
+# compiled integrator (a function passed as an argument would be recompiled in every process).
+from .kernel import ND, check_kernel, rhs_kernel
 
 GAMMA = 2.0 - math.sqrt(2.0)
 D_COEF = GAMMA / 2.0
@@ -69,25 +65,44 @@ STATUS = {
     4: "pitch beyond the model's limit: the aerostat diverged",
     5: "the aerostat or a tether node went below the winch level (ground not modelled)",
     6: "singular Newton matrix",
-    7: "the relative wind reversed on the hull (outside the aerodynamic model)",
 }
 
 
-@njit(cache=True)
-def band_lu(a, n, kl, ku, piv):  # pragma: no cover - numba
-    """In-place LU with partial pivoting of a band matrix held in dense storage.
+def band_width(kl: int, ku: int) -> int:
+    """Columns of the compact band storage of :func:`band_lu`: 2 kl + ku + 1."""
+    return 2 * kl + ku + 1
 
-    Only entries with -kl <= j - i <= ku + kl are touched (the fill-in band above the diagonal
-    must be zero on entry). Returns False if a pivot is exactly zero.
+
+def band_pack(a: np.ndarray, kl: int, ku: int) -> np.ndarray:
+    """Compact row storage of a band matrix: w[i, j - i + kl] = a[i, j] for -kl <= j - i <= ku,
+    with kl more zero columns on the right for the LU's fill-in."""
+    n = a.shape[0]
+    w = np.zeros((n, band_width(kl, ku)))
+    for i in range(n):
+        for j in range(max(0, i - kl), min(n, i + ku + 1)):
+            w[i, j - i + kl] = a[i, j]
+    return w
+
+
+@njit(cache=True)
+def band_lu(w, n, kl, ku, piv):  # pragma: no cover - numba
+    """In-place LU with partial pivoting of a band matrix in compact row storage
+    (:func:`band_pack`: w[i, j - i + kl] holds a[i, j]; columns beyond kl + ku, the fill-in,
+    must be zero on entry). Row swaps are applied to the trailing columns only, as LAPACK's
+    gbtrf does; :func:`band_solve` replays them. Returns False if a pivot is exactly zero.
+
+    The compact storage (n x (2 kl + ku + 1)) keeps the factors in a few tens of kB, in cache,
+    where a dense n x n matrix would not be.
     """
     uw = ku + kl
     for k in range(n):
         p = k
-        amax = abs(a[k, k])
+        amax = abs(w[k, kl])
         iend = min(n, k + kl + 1)
         for i in range(k + 1, iend):
-            if abs(a[i, k]) > amax:
-                amax = abs(a[i, k])
+            v = abs(w[i, k - i + kl])
+            if v > amax:
+                amax = v
                 p = i
         piv[k] = p
         if amax == 0.0:
@@ -95,21 +110,21 @@ def band_lu(a, n, kl, ku, piv):  # pragma: no cover - numba
         jend = min(n, k + uw + 1)
         if p != k:
             for j in range(k, jend):
-                tmp = a[k, j]
-                a[k, j] = a[p, j]
-                a[p, j] = tmp
-        inv = 1.0 / a[k, k]
+                tmp = w[k, j - k + kl]
+                w[k, j - k + kl] = w[p, j - p + kl]
+                w[p, j - p + kl] = tmp
+        inv = 1.0 / w[k, kl]
         for i in range(k + 1, iend):
-            lik = a[i, k] * inv
-            a[i, k] = lik
+            lik = w[i, k - i + kl] * inv
+            w[i, k - i + kl] = lik
             if lik != 0.0:
                 for j in range(k + 1, jend):
-                    a[i, j] -= lik * a[k, j]
+                    w[i, j - i + kl] -= lik * w[k, j - k + kl]
     return True
 
 
 @njit(cache=True)
-def band_solve(a, n, kl, ku, piv, b):  # pragma: no cover - numba
+def band_solve(w, n, kl, ku, piv, b):  # pragma: no cover - numba
     """Solve with the factors of :func:`band_lu` (``b`` overwritten by the solution)."""
     uw = ku + kl
     for k in range(n):
@@ -121,16 +136,16 @@ def band_solve(a, n, kl, ku, piv, b):  # pragma: no cover - numba
         bk = b[k]
         if bk != 0.0:
             for i in range(k + 1, min(n, k + kl + 1)):
-                b[i] -= a[i, k] * bk
+                b[i] -= w[i, k - i + kl] * bk
     for k in range(n - 1, -1, -1):
         s = b[k]
         for j in range(k + 1, min(n, k + uw + 1)):
-            s -= a[k, j] * b[j]
-        b[k] = s / a[k, k]
+            s -= w[k, j - k + kl] * b[j]
+        b[k] = s / w[k, kl]
 
 
 @njit(cache=True)
-def band_jacobian(y, f0, data, wt, kl, ku, jac, scale):  # pragma: no cover - numba
+def band_jacobian(t, y, f0, data, kl, ku, jac, scale):  # pragma: no cover - numba
     """Banded Jacobian df/dy by forward differences with column colouring.
 
     Columns j and j' share a kernel call when |j - j'| >= kl + ku + 1 (their row supports cannot
@@ -148,7 +163,7 @@ def band_jacobian(y, f0, data, wt, kl, ku, jac, scale):  # pragma: no cover - nu
             h = 1.4901161193847656e-08 * max(abs(y[j]), scale[j])
             yp[j] = y[j] + h
             hs[j] = yp[j] - y[j]
-        rhs_kernel(yp, fp, data, wt, diag)
+        rhs_kernel(t, yp, fp, data, diag)
         for j in range(gi, n, ng):
             yp[j] = y[j]
             for i in range(max(0, j - ku), min(n, j + kl + 1)):
@@ -168,52 +183,26 @@ def _wnorm(v, y0, y1, atol, rtol):  # pragma: no cover - numba
 
 
 @njit(cache=True)
-def check_state(y, data, diag):  # pragma: no cover - numba
-    """0 if the state is physical, else a ``STATUS`` code (3, 4, 5, 7)."""
-    prm = data[0]
-    for i in range(y.size):
-        if not math.isfinite(y[i]):
-            return 3
-    n = int(prm[P_NSEG])
-    for i in range(1, n):
-        if y[4 * (i - 1) + 1] < -1.0:
-            return 5
-    b = 4 * (n - 1)
-    if prm[P_MODE] > 0.0:
-        if abs(y[b + 2]) > prm[P_THETA_MAX]:
-            return 4
-        if diag[10] < 0.0:
-            return 5
-        aero = prm[P_AERO_INV] + prm[P_AERO_AX] + prm[P_AERO_CF] + prm[P_AERO_FIN]
-        if aero > 0.0 and diag[1] > 2.0 and abs(diag[0]) > 0.5 * math.pi:
-            return 7
-    else:
-        if y[b + 1] < 0.0:
-            return 5
-    return 0
-
-
-@njit(cache=True)
 def _build_w(jac, wmat, n, kl, ku, hd):  # pragma: no cover - numba
-    uw = ku + kl
+    """Newton matrix W = I - hd J in compact band storage (fill-in columns zeroed)."""
+    width = wmat.shape[1]
     for i in range(n):
-        for j in range(max(0, i - kl), min(n, i + uw + 1)):
-            if j - i <= ku:
-                wmat[i, j] = -hd * jac[i, j]
-            else:
-                wmat[i, j] = 0.0
-        wmat[i, i] += 1.0
+        for o in range(width):
+            wmat[i, o] = 0.0
+        for j in range(max(0, i - kl), min(n, i + ku + 1)):
+            wmat[i, j - i + kl] = -hd * jac[i, j]
+        wmat[i, kl] += 1.0
 
 
 @njit(cache=True)
-def _newton(z, base, hd, tt, data, wt, wmat, n, kl, ku, piv, yref, atol, rtol, kappa, maxit,
+def _newton(z, base, hd, tt, data, wmat, n, kl, ku, piv, yref, atol, rtol, kappa, maxit,
             eta0, fz, res, diag):  # pragma: no cover - numba
     """Solve z = base + hd f(tt, z) by simplified Newton. Returns (ok, iterations, eta, rate)."""
     dn_old = 0.0
     eta = max(eta0, 1e-16) ** 0.8
     rate = 0.0
     for it in range(maxit):
-        rhs_kernel(z, fz, data, wt, diag)
+        rhs_kernel(tt, z, fz, data, diag)
         for i in range(n):
             res[i] = base[i] + hd * fz[i] - z[i]
         band_solve(wmat, n, kl, ku, piv, res)
@@ -249,7 +238,7 @@ def integrate_chunk(fs, y, f, t_end, data, opts, atol, stops, out_t, out_y, out_
     t_end : float
         Stop time of this call [s].
     data : tuple
-        Kernel data (:meth:`.model.DynamicSystem.data`).
+        Model data, passed through to the model functions unread.
     opts : ndarray (O_SIZE,)
         rtol, h_max, h_min, step budget of this call, Newton tolerance kappa, Jacobian refresh
         interval (accepted steps), max Newton iterations.
@@ -262,8 +251,10 @@ def integrate_chunk(fs, y, f, t_end, data, opts, atol, stops, out_t, out_y, out_
     stats : int64 ndarray (S_SIZE,), in/out
         Counters (steps, rejected, kernel calls, Jacobians, LU, next output index, status,
         Newton failures).
-    jac, wmat : ndarray (n, n)
-        Work storage for the Jacobian and the factorised Newton matrix.
+    jac : ndarray (n, n)
+        Work storage for the Jacobian (band entries only are used).
+    wmat : ndarray (n, 2 kl + ku + 1)
+        Work storage for the factorised Newton matrix, compact band storage (:func:`band_pack`).
     piv : int64 ndarray (n,)
     scale : ndarray
         Typical state sizes for the Jacobian increments.
@@ -281,8 +272,6 @@ def integrate_chunk(fs, y, f, t_end, data, opts, atol, stops, out_t, out_y, out_
     t = fs[F_T]
     h = fs[F_H]
     eta = fs[F_ETA]
-    wt = np.empty(NT)
-    wt2 = np.empty(NT)
     z2 = np.empty(n)
     z3 = np.empty(n)
     base = np.empty(n)
@@ -292,9 +281,6 @@ def integrate_chunk(fs, y, f, t_end, data, opts, atol, stops, out_t, out_y, out_
     k3 = np.empty(n)
     err = np.empty(n)
     diag = np.empty(ND)
-    wpar = data[1]
-    sched = data[2]
-    turb = data[3]
     nsteps = 0
     hd = 0.0
     w_ok = False
@@ -323,8 +309,7 @@ def integrate_chunk(fs, y, f, t_end, data, opts, atol, stops, out_t, out_y, out_
             break
         # Jacobian and Newton matrix
         if fs[F_STALE] > 0.0:
-            wind_time_terms(t, wpar, sched, turb, wt)
-            stats[S_FEVAL] += band_jacobian(y, f, data, wt, kl, ku, jac, scale)
+            stats[S_FEVAL] += band_jacobian(t, y, f, data, kl, ku, jac, scale)
             stats[S_JAC] += 1
             fs[F_STALE] = 0.0
             fs[F_AGE] = 0.0
@@ -339,22 +324,20 @@ def integrate_chunk(fs, y, f, t_end, data, opts, atol, stops, out_t, out_y, out_
             w_ok = True
             h_w = h
         # stage 2: trapezoidal rule to t + gamma h
-        wind_time_terms(t + GAMMA * h, wpar, sched, turb, wt)
         for i in range(n):
             base[i] = y[i] + hd * f[i]
             z2[i] = y[i] + GAMMA * h * f[i]
-        ok, its, eta2, rate = _newton(z2, base, hd, t + GAMMA * h, data, wt, wmat, n, kl, ku,
+        ok, its, eta2, rate = _newton(z2, base, hd, t + GAMMA * h, data, wmat, n, kl, ku,
                                       piv, y, atol, rtol, kappa, maxit, eta, fz, res, diag)
         stats[S_FEVAL] += its
         if ok:
             for i in range(n):
                 k2[i] = (z2[i] - base[i]) / hd
             # stage 3: BDF2 to t + h
-            wind_time_terms(t + h, wpar, sched, turb, wt2)
             for i in range(n):
                 base[i] = y[i] + h * W_COEF * (f[i] + k2[i])
                 z3[i] = base[i] + hd * k2[i]
-            ok, its3, eta, rate3 = _newton(z3, base, hd, t + h, data, wt2, wmat, n, kl, ku, piv,
+            ok, its3, eta, rate3 = _newton(z3, base, hd, t + h, data, wmat, n, kl, ku, piv,
                                            y, atol, rtol, kappa, maxit, eta2, fz, res, diag)
             stats[S_FEVAL] += its3
             its = max(its, its3)
@@ -390,8 +373,7 @@ def integrate_chunk(fs, y, f, t_end, data, opts, atol, stops, out_t, out_y, out_
                 h11 = s * s * (s - 1.0)
                 for i in range(n):
                     out_y[io, i] = h00 * y[i] + h10 * h * f[i] + h01 * z3[i] + h11 * h * k3[i]
-                wind_time_terms(to, wpar, sched, turb, wt2)
-                rhs_kernel(out_y[io], fz, data, wt2, out_d[io])
+                rhs_kernel(to, out_y[io], fz, data, out_d[io])
             io += 1
         stats[S_IOUT] = io
         t = t + h
@@ -404,23 +386,23 @@ def integrate_chunk(fs, y, f, t_end, data, opts, atol, stops, out_t, out_y, out_
         fs[F_AGE] += 1.0
         if hit and target != t_end:
             # the input's slope jumps here: restart with the right-hand derivative
-            wind_time_terms(t + 1e-9 * max(1.0, abs(t)), wpar, sched, turb, wt)
-            rhs_kernel(y, f, data, wt, diag)
+            rhs_kernel(t + 1e-9 * max(1.0, abs(t)), y, f, data, diag)
             stats[S_FEVAL] += 1
             fs[F_STALE] = 1.0
         else:
             # a fresh derivative, not the algebraic k3: the latter carries the Newton error / hd
-            wind_time_terms(t, wpar, sched, turb, wt)
-            rhs_kernel(y, f, data, wt, diag)
+            rhs_kernel(t, y, f, data, diag)
             stats[S_FEVAL] += 1
-        code = check_state(y, data, diag)
+        code = check_kernel(t, y, data, diag)
         if code != 0:
             stats[S_STATUS] = code
             break
         if its > 2 or rate > 0.3 or fs[F_AGE] >= jac_every:
             fs[F_STALE] = 1.0
-        fac = 0.9 * max(en, 1e-10) ** (-1.0 / 3.0)
-        h = h * min(5.0, max(0.2, fac))
+        fac = min(5.0, max(0.2, 0.9 * max(en, 1e-10) ** (-1.0 / 3.0)))
+        if 1.0 <= fac <= 1.2 and not hit:
+            fac = 1.0  # keep h: the factorised Newton matrix stays valid (Hairer & Wanner IV.8)
+        h = h * fac
     fs[F_T] = t
     fs[F_H] = h
     fs[F_ETA] = eta

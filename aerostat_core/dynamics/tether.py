@@ -7,7 +7,12 @@ w l0, node N is the top (the confluence point of the hull, or the point aerostat
 Segment j joins nodes j-1 and j, length l_j, unit vector e_j (from j-1 to j), strain rate
 ldot_j/l0 with ldot_j = e_j . (v_j - v_j-1). Tension (Kelvin-Voigt, no compression in the spring)
 
-    T_j = EA (l_j/l0 - 1)_+ + c ldot_j / l0,      c = zeta l0 sqrt(EA w)   (MoorDyn's BA = -zeta)
+    T_j = max(EA (l_j/l0 - 1)_+ + c ldot_j / l0, 0),      c = zeta l0 sqrt(EA w)
+
+(MoorDyn's BA = -zeta). A line carries no compression: when the damper would push (a slack or
+fast-shortening segment) the tension is zero, and the segment is reported slack. MoorDyn lets
+the damper push (T < 0) while a segment shortens; ``TetherModel.damper_compression=True``
+reproduces that convention for the MoorDyn cross-checks (cases R1-R4) only.
 
 Node i carries weight and air buoyancy (w - rho A) g l0_i (l0_i = l0, halved at the ends) and drag
 on the relative wind v_r = U(z_i, t) - v_i split along the node tangent t_i (direction of
@@ -30,7 +35,8 @@ from dataclasses import dataclass
 import numpy as np
 from numba import njit
 
-from ._layout import (
+from .checks import check_number
+from .layout import (
     P_CD,
     P_CDN,
     P_CDT,
@@ -43,25 +49,17 @@ from ._layout import (
     P_RHO_Z0,
     P_TBUOY,
     P_TDRAG,
+    P_TPUSH,
     P_W,
 )
-from .wind import profile_factor
+from .wind import W_GUST_ON, W_TURB_ON, profile_factor, wind_point
 
 #: Largest axial stiffness used for an "inextensible" (EA = inf) tether [N].
 EA_INEXTENSIBLE = 1.0e8
 
 
 def _check(name: str, value, lo: float, hi: float, unit: str = "", lo_open=False) -> float:
-    try:
-        v = float(value)
-    except (TypeError, ValueError):
-        raise ValueError(f"TetherModel.{name} = {value!r} is not a number") from None
-    bad = not math.isfinite(v) or v > hi or (v <= lo if lo_open else v < lo)
-    if bad:
-        left = "(" if lo_open else "["
-        raise ValueError(f"TetherModel.{name} = {value!r} is outside the valid range "
-                         f"{left}{lo:g}, {hi:g}] {unit}".rstrip())
-    return v
+    return check_number("TetherModel", name, value, lo, hi, unit, lo_open)
 
 
 @dataclass(frozen=True)
@@ -92,6 +90,9 @@ class TetherModel:
         Include the air buoyancy rho A g of the line (MoorDyn parity; ~0.1 % of the weight).
     drag : bool
         Include tether drag (switched off for the energy check V4).
+    damper_compression : bool
+        Let the internal damper push (T < 0) in a shortening segment, as MoorDyn does (MoorDyn
+        parity of the R cases). Default False: the line carries no compression.
 
     Examples
     --------
@@ -110,6 +111,7 @@ class TetherModel:
     tangential_drag_coefficient: float = 0.01
     air_buoyancy: bool = True
     drag: bool = True
+    damper_compression: bool = False
 
     def __post_init__(self) -> None:
         _check("length", self.length, 1.0, 20000.0, "m", lo_open=True)
@@ -174,6 +176,7 @@ class TetherModel:
         prm[P_CDT] = self.tangential_drag_coefficient
         prm[P_TBUOY] = 1.0 if self.air_buoyancy else 0.0
         prm[P_TDRAG] = 1.0 if self.drag else 0.0
+        prm[P_TPUSH] = 1.0 if self.damper_compression else 0.0
 
 
 @njit(cache=True)
@@ -193,7 +196,7 @@ def air_density(z, prm, rho_tab):  # pragma: no cover - numba
 
 
 @njit(cache=True)
-def tether_loads(pos, vel, prm, wpar, wt, rho_tab, force, tension, seg_len, seg_dir):
+def tether_loads(pos, vel, t_now, prm, wpar, wt, turb, rho_tab, force, tension, seg_len, seg_dir):
     # pragma: no cover - numba
     """Forces on every node of the lumped-mass tether (see the module docstring).
 
@@ -202,12 +205,14 @@ def tether_loads(pos, vel, prm, wpar, wt, rho_tab, force, tension, seg_len, seg_
     pos, vel : ndarray (N+1, 2)
         Node positions [m] and velocities [m/s] in the earth frame (x downwind, z up), node 0 at
         the winch, node N at the top.
+    t_now : float
+        Time [s].
     prm : ndarray
-        Kernel parameters (``_layout``).
-    wpar : ndarray
-        Wind parameters (:mod:`.wind`).
+        Kernel parameters (:mod:`.layout`).
+    wpar, turb : ndarray
+        Wind parameters and turbulence table (:meth:`.wind.WindField.pack`).
     wt : ndarray
-        Wind time terms at the current time (:func:`.wind.wind_time_terms`).
+        Wind time terms at ``t_now`` (:func:`.wind.wind_time_terms`).
     rho_tab : ndarray
         Air-density table [kg/m3].
     force : ndarray (N+1, 2), out
@@ -227,6 +232,8 @@ def tether_loads(pos, vel, prm, wpar, wt, rho_tab, force, tension, seg_len, seg_
     w = prm[P_W]
     d = prm[P_D]
     area = 0.25 * math.pi * d * d
+    no_push = prm[P_TPUSH] == 0.0
+    mean_only = wpar[W_TURB_ON] == 0.0 and wpar[W_GUST_ON] == 0.0
     for i in range(n + 1):
         force[i, 0] = 0.0
         force[i, 1] = 0.0
@@ -240,6 +247,8 @@ def tether_loads(pos, vel, prm, wpar, wt, rho_tab, force, tension, seg_len, seg_
         t = cdamp * ldot
         if ll > l0:
             t += ea * (ll / l0 - 1.0)
+        if t < 0.0 and no_push:
+            t = 0.0  # a line carries no compression
         tension[j] = t
         seg_len[j] = ll
         seg_dir[j, 0] = ex
@@ -273,8 +282,13 @@ def tether_loads(pos, vel, prm, wpar, wt, rho_tab, force, tension, seg_len, seg_
                 tn = math.sqrt(tx * tx + tz * tz)
                 tx /= tn
                 tz /= tn
-            ux = wt[0] * profile_factor(z, wpar) + wt[2] - vel[i, 0]
-            uz = wt[4] - vel[i, 1]
+            if mean_only:  # the mean profile alone: no need for the full point evaluation
+                ux = wt[0] * profile_factor(z, wpar) - vel[i, 0]
+                uz = -vel[i, 1]
+            else:
+                wx, wz, _d1, _d2, _a1, _a2 = wind_point(t_now, pos[i, 0], z, wpar, wt, turb)
+                ux = wx - vel[i, 0]
+                uz = wz - vel[i, 1]
             vq = ux * tx + uz * tz
             qx = vq * tx
             qz = vq * tz

@@ -1,15 +1,19 @@
-"""Live cross-check of the point-aerostat mode against MoorDyn (optional: skipped when the
-``moordyn`` package is not installed; it is not a project dependency)."""
+"""Live cross-check of the point-aerostat mode against MoorDyn 2.7.2 (``moordyn`` is a pinned test
+dependency in requirements-dev.txt: this runs in CI, never skipped)."""
 
 import numpy as np
-import pytest
 
 from aerostat_core.dynamics import cases
 from aerostat_core.dynamics.moordyn_check import moordyn_available, run_point_case
 from aerostat_core.dynamics.simulate import SolverOptions, simulate, straight_state
 from aerostat_core.dynamics.wind import SpeedSchedule, WindScenario
 
-pytestmark = pytest.mark.skipif(not moordyn_available(), reason="moordyn not installed")
+
+def test_moordyn_is_installed():
+    """Fails (never skips) when the pinned test dependency is missing."""
+    import moordyn
+
+    assert moordyn_available() and hasattr(moordyn, "Create")
 
 
 def test_step_case_matches_moordyn_within_1cm():

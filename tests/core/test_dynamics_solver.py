@@ -7,7 +7,6 @@ import numpy as np
 import pytest
 
 from aerostat_core.dynamics import cases
-from aerostat_core.dynamics.model import _dense_fd, system_from_design
 from aerostat_core.dynamics.simulate import (
     SolverOptions,
     engine_guess,
@@ -16,7 +15,8 @@ from aerostat_core.dynamics.simulate import (
     simulate,
     straight_guess,
 )
-from aerostat_core.dynamics.solver import band_lu, band_solve
+from aerostat_core.dynamics.solver import band_lu, band_pack, band_solve
+from aerostat_core.dynamics.system import dense_jacobian, system_from_design
 from aerostat_core.dynamics.wind import Gust, SpeedSchedule, WindScenario
 
 
@@ -35,7 +35,7 @@ def test_jacobian_band_contains_every_coupling(design, hull):
     y, _ = equilibrium(system, field, guess)
     rng = np.random.default_rng(1)
     y = y + rng.normal(scale=0.05, size=y.size)
-    jac = _dense_fd(system, y, field)
+    jac = dense_jacobian(system, y, field)
     kl, ku = system.structure()
     i, j = np.nonzero(np.abs(jac) > 1e-12 * np.abs(jac).max())
     assert np.max(i - j) == kl
@@ -50,7 +50,8 @@ def test_band_lu_matches_dense_solve():
         for j in range(max(0, i - kl), min(n, i + ku + 1)):
             a[i, j] = rng.normal()
     b = rng.normal(size=n)
-    work = a.copy()  # the fill-in band above the diagonal starts at zero
+    work = band_pack(a, kl, ku)  # compact storage; the fill-in columns start at zero
+    assert work.shape == (n, 2 * kl + ku + 1)
     piv = np.zeros(n, np.int64)
     assert band_lu(work, n, kl, ku, piv)
     x = b.copy()

@@ -59,10 +59,19 @@ def test_one_minus_cosine_gust_shape():
     sc = WindScenario(SpeedSchedule.constant(10.0), gust=Gust(4.0, 1.0, 50.0, 20.0, "full"))
     f = sc.realise(300.0, 60.0)
     t = np.array([19.0, 20.0, 22.5, 25.0, 30.0, 31.0])
-    ux, uz, dux, _ = f.at(t, 300.0)
+    ux, uz, dux, _, ax, az = f.at(t, 300.0)
     assert ux == pytest.approx([10.0, 10.0, 12.0, 14.0, 10.0, 10.0])
     assert uz == pytest.approx([0.0, 0.0, 0.5, 1.0, 0.0, 0.0])
     assert dux[2] == pytest.approx(0.5 * 4.0 * math.pi / 5.0)
+    # frozen and convected: the air carrying the gust does not accelerate (Du/Dt = 0) ...
+    assert np.all(ax == 0.0) and np.all(az == 0.0)
+    # ... and the gust reaches a point 50 m upwind 5 s earlier (x = U_c (t - t0))
+    assert f.at(17.5, 300.0, x=-50.0)[0][0] == pytest.approx(12.0)
+    # a uniform (not convected) gust accelerates the air everywhere at once: Du/Dt = dg/dt
+    uni = WindScenario(SpeedSchedule.constant(10.0),
+                       gust=Gust(4.0, 1.0, 50.0, 20.0, "full", convected=False)).realise(300.0, 60.0)
+    ux2, _, dux2, _, ax2, _ = uni.at(t, 300.0, x=-50.0)
+    assert ux2 == pytest.approx(ux) and ax2 == pytest.approx(dux2)
     hold = WindScenario(SpeedSchedule.constant(10.0), gust=Gust(4.0, 0.0, 50.0, 20.0,
                                                                "ramp-hold")).realise(300.0, 60.0)
     assert hold.at(40.0, 300.0)[0][0] == pytest.approx(14.0)
@@ -161,7 +170,7 @@ def test_same_seed_same_record_and_validation():
     a = DrydenTurbulence(seed=3).realise(300.0, 10.0, 300.0)
     b = DrydenTurbulence(seed=3).realise(300.0, 10.0, 300.0)
     c = DrydenTurbulence(seed=4).realise(300.0, 10.0, 300.0)
-    assert np.array_equal(a.phase_u, b.phase_u) and not np.array_equal(a.phase_u, c.phase_u)
+    assert np.array_equal(a.coef_u, b.coef_u) and not np.array_equal(a.coef_u, c.coef_u)
     with pytest.raises(ValueError, match="w20"):
         DrydenTurbulence(w20=-1.0)
     with pytest.raises(ValueError, match="at least 0.5 m/s"):
@@ -174,9 +183,96 @@ def test_kernel_turbulence_table_matches_cosine_sum():
                       turbulence=DrydenTurbulence.from_intensity("severe", seed=5, fade_in=0.0))
     field = sc.realise(300.0, 200.0)
     t = np.linspace(0.0, 400.0, 7919)  # beyond one period too (the table is periodic)
-    ux, uz, dux, duz = field.at(t, 300.0)
+    ux, uz, dux, duz, ax, az = field.at(t, 300.0)
     u, w, du, dw = field.turbulence.evaluate(t)
     assert np.max(np.abs(ux - 10.0 - u)) < 1e-4
     assert np.max(np.abs(uz - w)) < 1e-4
     assert np.max(np.abs(dux - du)) < 2e-3 * np.max(np.abs(du))
     assert np.max(np.abs(duz - dw)) < 2e-3 * np.max(np.abs(dw))
+
+
+# --- the spatial field (Taylor, height levels, IEC coherence) ------------------------------------
+@pytest.fixture(scope="module")
+def spatial_field():
+    sc = WindScenario(SpeedSchedule.constant(10.0),
+                      turbulence=DrydenTurbulence.from_intensity("moderate", seed=11, fade_in=0.0))
+    return sc.realise(300.0, 1200.0, x_ref=40.0)
+
+
+def test_field_is_frozen_and_convected(spatial_field):
+    """u'(x + U_c dt, t + dt) = u'(x, t): the field moves with the mean wind unchanged."""
+    f = spatial_field
+    t = np.linspace(100.0, 200.0, 501)
+    base = f.at(t, 300.0, x=40.0)
+    for dx in (-40.0, 25.0):
+        moved = f.at(t + dx / f.convection_speed, 300.0, x=40.0 + dx)
+        assert moved[0] == pytest.approx(base[0], abs=1e-9)
+        assert moved[1] == pytest.approx(base[1], abs=1e-9)
+    # the fluid acceleration of a frozen field is zero; the fixed-point derivative is not
+    assert np.all(base[4] == 0.0) and np.std(base[2]) > 0.05
+
+
+def test_field_varies_with_height_and_levels_have_target_variance(spatial_field):
+    """Each level holds its own Dryden variance (sigma_u grows towards the ground): exactly at the
+    hull, in the mean over 30 seeds elsewhere; points 100 m apart in height differ."""
+    f = spatial_field.turbulence
+    _t, u, w = f.grid(2**15)
+    assert np.var(u) == pytest.approx(f.target_var_u[f.hull_level], rel=1e-9)
+    assert np.var(w) == pytest.approx(f.target_var_w[f.hull_level], rel=1e-9)
+    fields = [DrydenTurbulence(seed=s, fade_in=0.0).realise(300.0, 10.0, 600.0)
+              for s in range(30)]
+    for lev in (f.hull_level - 10, 3):
+        vu = np.mean([np.sum(np.abs(g.coef_u[lev]) ** 2) / 2 for g in fields])
+        vw = np.mean([np.sum(np.abs(g.coef_w[lev]) ** 2) / 2 for g in fields])
+        assert vu == pytest.approx(fields[0].target_var_u[lev], rel=0.12)
+        assert vw == pytest.approx(fields[0].target_var_w[lev], rel=0.12)
+    assert f.level_params[3].sigma_u > 1.2 * f.params.sigma_u  # 30 m vs 300 m
+    t = np.linspace(0.0, 1200.0, 6001)
+    top = spatial_field.at(t, 300.0)[0]
+    low = spatial_field.at(t, 200.0)[0]
+    assert np.corrcoef(top, low)[0, 1] < 0.9
+
+
+def test_hull_level_has_the_exact_dryden_spectrum(spatial_field):
+    """The hull's level is first in the Cholesky order: its bin variances are the spectrum's."""
+    f = spatial_field.turbulence
+    k = f.hull_level
+    p = f.params
+    var = np.abs(f.coef_u[k]) ** 2 / 2
+    dw = f.omega[1] - f.omega[0]
+    target = dryden_psd_u(f.omega, p.sigma_u, p.length_u, f.speed) * dw
+    assert var[5:200] == pytest.approx(target[5:200], rel=0.02)
+
+
+def test_vertical_coherence_matches_iec_model():
+    """Ensemble coherence of two levels (100 seeds) = IEC exp(-12 sqrt((f dz/U)^2 + (0.12 dz/Lc)^2))."""
+    from aerostat_core.dynamics.turbulence import iec_coherence
+
+    sums = None
+    for seed in range(100):
+        f = DrydenTurbulence(seed=seed, fade_in=0.0).realise(300.0, 10.0, 300.0)
+        a, b = f.coef_u[f.hull_level], f.coef_u[f.hull_level - 2]  # 20 m apart
+        s = np.stack([a * np.conj(b), np.abs(a) ** 2, np.abs(b) ** 2])
+        sums = s if sums is None else sums + s
+    freq = f.omega / (2 * np.pi)
+    band = 10  # bins per band: 1000 samples of the cross-spectrum each
+    nb = freq.size // band
+    sb = sums[:, :nb * band].reshape(3, nb, band).sum(axis=2)
+    coh = np.real(sb[0]) / np.sqrt(sb[1].real * sb[2].real)
+    fb = freq[:nb * band].reshape(nb, band).mean(axis=1)
+    # the band's coherence is the energy-weighted mean of the bins' (the spectrum falls steeply)
+    wgt = np.sqrt(sums[1].real * sums[2].real)[:nb * band]
+    target = (iec_coherence(20.0, freq[:nb * band], 10.0) * wgt).reshape(nb, band).sum(axis=1)
+    target /= np.sqrt(sb[1].real * sb[2].real)
+    assert np.max(np.abs(coh - target)[fb < 0.5]) < 0.1
+    assert coh[0] > 0.6 and np.mean(coh[fb > 0.5]) < 0.1
+
+
+def test_w20_from_the_profile_and_model_name():
+    """``w20=None`` takes MIL-HDBK-1797's W20 from the run's own mean profile at 20 ft."""
+    sc = WindScenario(SpeedSchedule.constant(10.0), MeanProfile("power", 300.0, 1.0 / 7.0),
+                      turbulence=DrydenTurbulence.from_intensity("profile", seed=1))
+    f = sc.realise(300.0, 120.0)
+    w20 = 10.0 * (20 * FOOT / 300.0) ** (1 / 7)
+    assert f.turbulence.params.sigma_w == pytest.approx(0.1 * w20)
+    assert "MIL-HDBK-1797" in f.turbulence.model and "IEC 61400-1" in f.turbulence.model

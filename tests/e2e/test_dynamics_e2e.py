@@ -1,5 +1,7 @@
 """Dynamics page in a real browser: run a short gust case, see the plots and the summary, download
-the time histories and parse them, take a screenshot (artifacts/screenshots/dynamics.png)."""
+the time histories and parse them, take a screenshot (artifacts/screenshots/dynamics.png); run
+the same case again (second click, after leaving the page, from a second browser context whose
+session hits the shared result store): never a traceback (issue 9's CacheReplayClosureError)."""
 
 from __future__ import annotations
 
@@ -7,7 +9,7 @@ import csv
 import io
 
 import pytest
-from playwright.sync_api import Page, expect
+from playwright.sync_api import Browser, Page, expect
 
 from tests.e2e.helpers import assert_no_exception, goto_page, screenshot, wait_for_rerun
 
@@ -39,7 +41,12 @@ def test_short_gust_run(app_page: Page, console_errors: list[str]):
     # the time histories as CSV
     with page.expect_download() as info:
         page.get_by_role("button", name="Time histories (CSV)").click()
-    rows = list(csv.DictReader(io.StringIO(info.value.path().read_text())))
+    assert info.value.suggested_filename == "aerostat_dynamics_gust.csv"
+    text = info.value.path().read_text()
+    meta = [ln for ln in text.splitlines() if ln.startswith("# ")]
+    assert "# scenario = gust" in meta and "# duration = 60.0" in meta
+    rows = list(csv.DictReader(io.StringIO("\n".join(
+        ln for ln in text.splitlines() if not ln.startswith("#")))))
     assert len(rows) == 601
     assert float(rows[-1]["t_s"]) == pytest.approx(60.0)
     wind = [float(r["wind_x_m_s"]) for r in rows]
@@ -49,4 +56,38 @@ def test_short_gust_run(app_page: Page, console_errors: list[str]):
     wait_for_rerun(page)
     path = screenshot(page, "dynamics")
     assert path.is_file() and path.stat().st_size > 10_000
+    assert console_errors == []
+
+
+def _run_60s(page: Page) -> None:
+    box = page.get_by_role("spinbutton", name="Simulated time [s]", exact=True)
+    box.fill("45")
+    box.press("Tab")
+    page.get_by_role("button", name="Run simulation").click()
+    wait_for_rerun(page, timeout=RUN_TIMEOUT_MS)
+    assert_no_exception(page, "Dynamics page after a run")
+    expect(page.get_by_text("Finished: 45 s simulated")).to_be_visible(timeout=RUN_TIMEOUT_MS)
+    expect(page.get_by_text("CacheReplayClosureError")).to_have_count(0)
+
+
+def test_rerun_return_and_second_session(app_page: Page, browser: Browser, base_url: str,
+                                         console_errors: list[str]):
+    page = app_page
+    goto_page(page, "Dynamics")
+    _run_60s(page)
+    _run_60s(page)  # second click: the same case, served from the store
+    goto_page(page, "Design")
+    goto_page(page, "Dynamics")
+    assert_no_exception(page, "Dynamics page after coming back")
+    expect(page.get_by_text("Finished: 45 s simulated")).to_be_visible(timeout=RUN_TIMEOUT_MS)
+    _run_60s(page)
+    other = browser.new_context(base_url=base_url, viewport={"width": 1400, "height": 900})
+    try:
+        p2 = other.new_page()
+        p2.goto("/")
+        wait_for_rerun(p2)
+        goto_page(p2, "Dynamics")
+        _run_60s(p2)  # a second session whose case is already in the shared store
+    finally:
+        other.close()
     assert console_errors == []

@@ -3,7 +3,9 @@
 numba (``cache=True``) keys a cached function on its own file's time stamp only, so a kernel that
 calls a kernel of another module keeps running the *old* callee after that module is edited (e.g.
 after ``git pull``). :func:`ensure_fresh_cache` hashes every kernel module and deletes this
-package's cache files when the hash changed, before anything is compiled or loaded.
+package's cache files when the hash changed, before anything is compiled or loaded. It runs once
+per process, when the first :class:`~.system.DynamicSystem` is built (importing the package has no
+side effects).
 """
 
 from __future__ import annotations
@@ -13,7 +15,8 @@ import os
 from pathlib import Path
 
 #: Modules whose numba kernels call each other.
-KERNEL_MODULES = ("_layout.py", "wind.py", "tether.py", "model.py", "solver.py")
+KERNEL_MODULES = ("layout.py", "wind.py", "tether.py", "kernel.py", "solver.py")
+_DONE: list[bool] = []
 
 
 def _cache_dirs(here: Path) -> list[Path]:
@@ -24,8 +27,12 @@ def _cache_dirs(here: Path) -> list[Path]:
     return dirs
 
 
-def ensure_fresh_cache() -> bool:
-    """Delete stale kernel caches; returns True when something was deleted."""
+def ensure_fresh_cache(force: bool = False) -> bool:
+    """Delete stale kernel caches (once per process unless ``force``); True when something was
+    deleted."""
+    if _DONE and not force:
+        return False
+    _DONE.append(True)
     here = Path(__file__).resolve().parent
     h = hashlib.sha256()
     for name in KERNEL_MODULES:

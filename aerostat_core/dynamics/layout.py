@@ -1,7 +1,7 @@
 """Index layout of the flat parameter vector ``prm`` shared by the numba kernels.
 
 Module-level integers are compile-time constants for numba. Keep this file in sync with
-:func:`aerostat_core.dynamics.model.DynamicSystem` (which fills ``prm``).
+:class:`aerostat_core.dynamics.system.DynamicSystem` (which fills ``prm``).
 """
 
 # --- general ---------------------------------------------------------------------------------
@@ -57,7 +57,8 @@ P_V0 = 53  # first airspeed of the drag-coefficient table [m/s]
 P_DV = 54  # spacing of the drag-coefficient table [m/s]
 P_THETA_MAX = 55  # pitch limit for the divergence check [rad]
 P_POINT_FK = 56  # point aerostat: 1 = Froude-Krylov + added mass x fluid acceleration
-P_SIZE = 57
+P_TPUSH = 57  # 1: the tether damper may push (MoorDyn convention); 0: no compression
+P_SIZE = 58
 
 # rows of the aero table ``tab`` (per unit dynamic pressure, from the static engine's functions)
 T_N_INV = 0  # inviscid normal force / q [m2]
