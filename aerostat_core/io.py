@@ -2,9 +2,15 @@
 
 The JSON format holds every input::
 
-    {"format": "aerostat-design", "version": 1,
+    {"format": "aerostat-design", "version": 2,
      "requirement": {...Requirement fields...},
      "configuration": {"gas": {...}, "hull": {...}, ..., "misc_mass_ratio": 0.3, ...}}
+
+Version 2 added the mission inputs (Requirement ``payload_power``, ``power_via``,
+``endurance_days``, ``deployment_days``; Configuration ``mission``; Fabric
+``tensile_strength`` and ``helium_permeability``). Version 1 files still load: the mission
+inputs they lack take their defaults, which are off (no payload power, no endurance
+requirement, no ballonet built), so they give the same design as before.
 
 A file of saved cases is ``{"format": "aerostat-cases", "version": 1, "cases": {name: design}}``.
 Readers are strict: unknown keys, wrong types, out-of-range values, or oversized input raise
@@ -31,11 +37,14 @@ from .inputs import (
     WindProfile,
 )
 from .materials import Fabric, TetherSpec
+from .mission import MissionSpec
 from .validation import check_name
 
 FORMAT_DESIGN = "aerostat-design"
 FORMAT_CASES = "aerostat-cases"
-VERSION = 1
+VERSION = 2
+#: Versions this program reads (1: before the mission inputs of version 2).
+READ_VERSIONS = (1, 2)
 #: Largest JSON document accepted [bytes]; a design is about 2 kB.
 MAX_JSON_BYTES = 1_000_000
 #: Largest number of cases in one file.
@@ -51,6 +60,7 @@ _NESTED: dict[str, type] = {
     "aero": AeroModel,
     "confluence": ConfluenceSpec,
     "wind_profile": WindProfile,
+    "mission": MissionSpec,
 }
 
 
@@ -121,8 +131,9 @@ def inputs_from_dict(data: Any) -> tuple[Requirement, Configuration]:
     if fmt != FORMAT_DESIGN:
         raise ValueError(f"format = {fmt!r}: expected {FORMAT_DESIGN!r}")
     version = data.get("version", VERSION)
-    if type(version) is not int or version != VERSION:
-        raise ValueError(f"version = {version!r}: this program reads version {VERSION}")
+    if type(version) is not int or version not in READ_VERSIONS:
+        raise ValueError(f"version = {version!r}: this program reads versions "
+                         f"{', '.join(map(str, READ_VERSIONS))}")
     unknown = sorted(set(data) - {"format", "version", "requirement", "configuration", "name"})
     if unknown:
         raise ValueError(f"design has unknown field(s): {', '.join(map(str, unknown))}")
@@ -181,8 +192,9 @@ def cases_from_json(text: str | bytes) -> dict[str, dict[str, Any]]:
         return {check_name("design", "name", data.get("name", "imported")): inputs_to_dict(req, cfg)}
     if not isinstance(data, dict) or data.get("format") != FORMAT_CASES:
         raise ValueError(f"file is neither {FORMAT_CASES!r} nor {FORMAT_DESIGN!r} JSON")
-    if type(data.get("version")) is not int or data.get("version") != VERSION:
-        raise ValueError(f"version = {data.get('version')!r}: this program reads version {VERSION}")
+    if type(data.get("version")) is not int or data.get("version") not in READ_VERSIONS:
+        raise ValueError(f"version = {data.get('version')!r}: this program reads versions "
+                         f"{', '.join(map(str, READ_VERSIONS))}")
     cases = data.get("cases")
     if not isinstance(cases, dict):
         raise ValueError("'cases' must be an object of name -> design")
