@@ -36,8 +36,11 @@ def ballonet_fraction(p_launch, t_launch, p_op, t_op, superheat=0.0):
     >>> round(float(ballonet_fraction(101325.0, 288.15, 95461.3, 284.9, 0.0)), 4)
     0.0471
     """
-    ratio = (np.asarray(p_op, float) * np.asarray(t_launch, float)
-             / (np.asarray(p_launch, float) * (np.asarray(t_op, float) + superheat)))
+    ratio = (
+        np.asarray(p_op, float)
+        * np.asarray(t_launch, float)
+        / (np.asarray(p_launch, float) * (np.asarray(t_op, float) + superheat))
+    )
     return np.clip(1.0 - ratio, 0.0, 1.0)
 
 

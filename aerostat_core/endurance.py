@@ -42,8 +42,7 @@ def permeation_time_constant(volume, area, permeability, temperature):
     kappa = float(permeability) * 1e-3  # m3/(m2 day atm)
     rate = kappa * np.asarray(area, float) * np.asarray(temperature, float) / c.STANDARD_TEMPERATURE
     with np.errstate(divide="ignore"):
-        return np.where(rate > 0, np.asarray(volume, float) / np.where(rate > 0, rate, 1.0),
-                        np.inf)
+        return np.where(rate > 0, np.asarray(volume, float) / np.where(rate > 0, rate, 1.0), np.inf)
 
 
 def purity_after(purity0, days, tau):
@@ -63,8 +62,12 @@ def lift_loss_after(volume, g, rho_air, rho_helium, purity0, days, tau):
     conditions [kg/m3]; purity0 [-]; days [day]; tau [day] (:func:`permeation_time_constant`).
     """
     k = purity_after(purity0, days, tau)
-    return (np.asarray(volume, float) * g * (np.asarray(rho_air) - np.asarray(rho_helium))
-            * (np.asarray(purity0, float) - k))
+    return (
+        np.asarray(volume, float)
+        * g
+        * (np.asarray(rho_air) - np.asarray(rho_helium))
+        * (np.asarray(purity0, float) - k)
+    )
 
 
 def days_to_top_up(excess_lift, volume, g, rho_air, rho_helium, purity0, tau):
@@ -91,7 +94,9 @@ def days_to_top_up(excess_lift, volume, g, rho_air, rho_helium, purity0, tau):
     with np.errstate(divide="ignore", invalid="ignore"):
         t = -np.asarray(tau, float) * np.log1p(-frac)
     t = np.where(frac >= 1.0, np.inf, t)
-    return np.where(np.asarray(excess_lift) <= 0.0, 0.0, np.nan_to_num(t, nan=np.inf))
+    return np.where(
+        np.asarray(excess_lift) <= 0.0, 0.0, np.nan_to_num(t, nan=np.inf, posinf=np.inf)
+    )
 
 
 def helium_top_up(area, permeability, purity, hull_pressure, days):
@@ -109,5 +114,12 @@ def helium_top_up(area, permeability, purity, hull_pressure, days):
     >>> round(float(helium_top_up(100.0, 2.5, 1.0, 101325.0, 30.0)), 3)
     7.5
     """
-    return (float(permeability) * 1e-3 * np.asarray(area, float) * np.asarray(purity, float)
-            * np.asarray(hull_pressure, float) / c.STANDARD_PRESSURE * float(days))
+    return (
+        float(permeability)
+        * 1e-3
+        * np.asarray(area, float)
+        * np.asarray(purity, float)
+        * np.asarray(hull_pressure, float)
+        / c.STANDARD_PRESSURE
+        * float(days)
+    )

@@ -105,8 +105,9 @@ class MissionSpec:
     def __post_init__(self) -> None:
         o = "MissionSpec"
         check_number(o, "battery_energy_density", self.battery_energy_density, 20, 1000, "Wh/kg")
-        check_number(o, "battery_depth_of_discharge", self.battery_depth_of_discharge, 0, 1,
-                     lo_open=True)
+        check_number(
+            o, "battery_depth_of_discharge", self.battery_depth_of_discharge, 0, 1, lo_open=True
+        )
         if self.battery_hours is not None:
             check_number(o, "battery_hours", self.battery_hours, 0, 10000, "h", lo_open=True)
         check_number(o, "supply_voltage", self.supply_voltage, 12, 20000, "V")
@@ -120,8 +121,9 @@ class MissionSpec:
         check_number(o, "winch_speed", self.winch_speed, 0, 5, "m/s", lo_open=True)
         check_number(o, "winch_efficiency", self.winch_efficiency, 0, 1, lo_open=True)
         check_number(o, "bend_radius_ratio", self.bend_radius_ratio, 2, 100)
-        object.__setattr__(self, "drum_layers",
-                           check_int(o, "drum_layers", self.drum_layers, 1, 100))
+        object.__setattr__(
+            self, "drum_layers", check_int(o, "drum_layers", self.drum_layers, 1, 100)
+        )
 
 
 # --- power -------------------------------------------------------------------------------------
@@ -137,8 +139,14 @@ def onboard_battery_mass(req, cfg) -> float:
     if req.payload_power <= 0 or req.power_via != "onboard":
         return 0.0
     m = cfg.mission
-    return float(battery_mass(req.payload_power, battery_hours(req, m), m.battery_energy_density,
-                              m.battery_depth_of_discharge))
+    return float(
+        battery_mass(
+            req.payload_power,
+            battery_hours(req, m),
+            m.battery_energy_density,
+            m.battery_depth_of_discharge,
+        )
+    )
 
 
 def tether_conductors(req, cfg) -> tuple[Conductors | None, bool]:
@@ -148,8 +156,14 @@ def tether_conductors(req, cfg) -> tuple[Conductors | None, bool]:
     if req.payload_power <= 0 or req.power_via != "tether":
         return None, False
     m = cfg.mission
-    k = size_conductors(float(req.payload_power), float(req.altitude), m.supply_voltage,
-                        m.power_loss_fraction, m.max_current_density, m.insulation_thickness)
+    k = size_conductors(
+        float(req.payload_power),
+        float(req.altitude),
+        m.supply_voltage,
+        m.power_loss_fraction,
+        m.max_current_density,
+        m.insulation_thickness,
+    )
     own = POWER_TETHER_CONDUCTORS.get(cfg.tether.name, 0.0)
     return k, own >= k.area
 
@@ -184,8 +198,9 @@ def ballonet_state(req, cfg) -> BallonetState:
     top = min(req.site_elevation + c.BALLONET_RULE_ALTITUDE, c.ISA_TROPOPAUSE)
     rule = isa(top, req.isa_offset)
     f = float(ballonet_fraction(site.pressure, site.temperature, op.pressure, op.temperature, sh))
-    f_rule = float(ballonet_fraction(site.pressure, site.temperature, rule.pressure,
-                                     rule.temperature, sh))
+    f_rule = float(
+        ballonet_fraction(site.pressure, site.temperature, rule.pressure, rule.temperature, sh)
+    )
     needed = f > f_rule + 1e-12
     mode = cfg.mission.ballonet
     return BallonetState(f, f_rule, needed, mode == "on" or (mode == "auto" and needed))
@@ -196,8 +211,9 @@ def ballonet_mass(req, cfg, hull_volume):
     b = ballonet_state(req, cfg)
     if not b.built:
         return np.zeros(np.shape(hull_volume))
-    return ballonet_fabric_mass(b.fraction * np.asarray(hull_volume, float),
-                                cfg.hull_fabric.areal_density)
+    return ballonet_fabric_mass(
+        b.fraction * np.asarray(hull_volume, float), cfg.hull_fabric.areal_density
+    )
 
 
 # --- endurance ---------------------------------------------------------------------------------
@@ -222,13 +238,15 @@ def endurance_quantities(req, cfg, af) -> dict:
         endurance is required), margin [day].
     """
     h = af.hull
-    tau = permeation_time_constant(h.volume, h.surface_area, cfg.hull_fabric.helium_permeability,
-                                   af.temperature)
+    tau = permeation_time_constant(
+        h.volume, h.surface_area, cfg.hull_fabric.helium_permeability, af.temperature
+    )
     rho_a, rho_p = _gas_densities(cfg, af)
     k0 = cfg.gas.purity
     need = req.free_lift_fraction * af.buoyancy
-    days = np.minimum(days_to_top_up(af.free_lift - need, h.volume, af.g, rho_a, rho_p, k0, tau),
-                      DAYS_CAP)
+    days = np.minimum(
+        days_to_top_up(af.free_lift - need, h.volume, af.g, rho_a, rho_p, k0, tau), DAYS_CAP
+    )
     fb = np.maximum(np.abs(af.buoyancy), 1e-9)
     d_req = float(req.endurance_days)
     if d_req > 0:
@@ -256,8 +274,9 @@ def structure_quantities(req, cfg, ev) -> dict:
     af = ev.airframe
     m = cfg.mission
     q = 0.5 * af.air_density * np.asarray(ev.speed, float) ** 2
-    p = required_pressure(q, af.air_density, af.gas_density, af.g, af.hull.diameter,
-                          m.pressure_dynamic_factor)
+    p = required_pressure(
+        q, af.air_density, af.gas_density, af.g, af.hull.diameter, m.pressure_dynamic_factor
+    )
     p = np.maximum(p, cfg.gas.superpressure)
     moment = np.abs(ev.weathervane_slope * ev.equilibrium.alpha)
     r = af.hull.b
@@ -265,8 +284,15 @@ def structure_quantities(req, cfg, ev) -> dict:
     need = m.envelope_safety_factor * np.maximum(hoop, long)
     strength = float(cfg.hull_fabric.tensile_strength)
     allow = allowable_pressure(strength, m.envelope_safety_factor, r, moment)
-    return {"pressure_required": p, "moment": moment, "hoop": hoop, "longitudinal": long,
-            "strength_required": need, "strength": strength, "pressure_allowable": allow}
+    return {
+        "pressure_required": p,
+        "moment": moment,
+        "hoop": hoop,
+        "longitudinal": long,
+        "strength_required": need,
+        "strength": strength,
+        "pressure_allowable": allow,
+    }
 
 
 # --- the report of one design ------------------------------------------------------------------
@@ -319,8 +345,12 @@ class MissionReport:
         days = self.days_to_top_up
         out = [
             ("Power", "Onboard battery mass", self.battery_mass, "kg"),
-            ("Power", "Conductor copper area (each of 2)",
-             0.0 if k is None else k.area * 1e6, "mm2"),
+            (
+                "Power",
+                "Conductor copper area (each of 2)",
+                0.0 if k is None else k.area * 1e6,
+                "mm2",
+            ),
             ("Power", "Conductor current", 0.0 if k is None else k.current, "A"),
             ("Power", "Conductor loss", 0.0 if k is None else k.loss, "W"),
             ("Power", "Tether as flown: mass per metre", 1000 * self.tether.linear_density, "g/m"),
@@ -330,8 +360,12 @@ class MissionReport:
             ("Endurance", "Purity decay time constant", min(self.permeation_tau, DAYS_CAP), "day"),
             ("Endurance", "Days to top-up (free-lift margin kept)", min(days, DAYS_CAP), "day"),
             ("Endurance", "Purity after the endurance", self.purity_after_endurance, "-"),
-            ("Endurance", f"Helium top-up over {self.deployment_days:g} days", self.helium_top_up,
-             "m3"),
+            (
+                "Endurance",
+                f"Helium top-up over {self.deployment_days:g} days",
+                self.helium_top_up,
+                "m3",
+            ),
             ("Endurance", "Top-up gas cost", self.top_up_cost, "USD"),
             ("Ballonet", "Ballonet volume / hull volume", self.ballonet.fraction, "-"),
             ("Ballonet", "Same at the 500 m rule altitude", self.ballonet.rule_fraction, "-"),
@@ -341,23 +375,43 @@ class MissionReport:
             ("Envelope", "Required internal pressure (design wind)", e["pressure_required"], "Pa"),
             ("Envelope", "Hoop load", e["hoop"], "N/m"),
             ("Envelope", "Longitudinal load", e["longitudinal"], "N/m"),
-            ("Envelope", "Required fabric strength (x safety factor)", e["strength_required"],
-             "N/m"),
+            (
+                "Envelope",
+                "Required fabric strength (x safety factor)",
+                e["strength_required"],
+                "N/m",
+            ),
             ("Envelope", "Fabric tensile strength", e["strength"], "N/m"),
-            ("Envelope", "Envelope stress margin (strength/required - 1)",
-             self.envelope_stress_margin, "-"),
-            ("Survival", "Tether safety factor at the survival wind", self.survival_safety_factor,
-             "-"),
-            ("Survival", "Envelope pressure margin at the survival wind",
-             self.survival_pressure_margin, "-"),
+            (
+                "Envelope",
+                "Envelope stress margin (strength/required - 1)",
+                self.envelope_stress_margin,
+                "-",
+            ),
+            (
+                "Survival",
+                "Tether safety factor at the survival wind",
+                self.survival_safety_factor,
+                "-",
+            ),
+            (
+                "Survival",
+                "Envelope pressure margin at the survival wind",
+                self.survival_pressure_margin,
+                "-",
+            ),
             ("Survival", "Can stay up at the survival wind", float(self.stay_up), "yes=1"),
             ("Winch", "Line pull (largest winch tension, survival included)", self.winch_pull, "N"),
             ("Winch", "Reel speed", self.winch.speed, "m/s"),
             ("Winch", "Motor power", self.winch.power, "W"),
             ("Winch", "Drum diameter (from the bend radius)", self.winch.drum_diameter, "m"),
             ("Winch", f"Drum length ({self.winch.layers} layers)", self.winch.drum_length, "m"),
-            ("Winch", "Reel-in time from the operating altitude", self.winch.reel_time / 60.0,
-             "min"),
+            (
+                "Winch",
+                "Reel-in time from the operating altitude",
+                self.winch.reel_time / 60.0,
+                "min",
+            ),
         ]
         return [{"group": g, "quantity": q, "value": float(v), "unit": u} for g, q, v, u in out]
 
@@ -391,15 +445,27 @@ def mission_report(req, cfg, af, state, sweep_ev, gas_price: float) -> MissionRe
     tau = _scalar(endq["tau"])
     days = _scalar(endq["days_to_top_up"])
     days = np.inf if days >= DAYS_CAP else days
-    purity = float(cfg.gas.purity * np.exp(-req.endurance_days / tau)) if np.isfinite(tau) \
+    purity = (
+        float(cfg.gas.purity * np.exp(-req.endurance_days / tau))
+        if np.isfinite(tau)
         else float(cfg.gas.purity)
+    )
     p_hull = _scalar(af.pressure) + cfg.gas.superpressure
-    top = _scalar(helium_top_up(af.hull.surface_area, cfg.hull_fabric.helium_permeability,
-                                cfg.gas.purity, p_hull, req.deployment_days))
+    top = _scalar(
+        helium_top_up(
+            af.hull.surface_area,
+            cfg.hull_fabric.helium_permeability,
+            cfg.gas.purity,
+            p_hull,
+            req.deployment_days,
+        )
+    )
     ev2 = state.evaluation
     sq = structure_quantities(req, cfg, ev2)
-    env = {key: float(np.asarray(v * np.ones(np.shape(sq["hoop"])), float).reshape(2, -1)[0, 0])
-           for key, v in sq.items()}
+    env = {
+        key: float(np.asarray(v * np.ones(np.shape(sq["hoop"])), float).reshape(2, -1)[0, 0])
+        for key, v in sq.items()
+    }
     val = np.asarray(state.value).reshape(-1)
     lim = np.asarray(state.limit).reshape(-1)
     i_s = NAMES.index("survival_envelope_pressure")
@@ -418,16 +484,37 @@ def mission_report(req, cfg, af, state, sweep_ev, gas_price: float) -> MissionRe
     pulls = [np.max(sweep_ev.tether.tension_winch), np.max(ev2.tether.tension_winch)]
     pull = float(max(pulls))
     m = cfg.mission
-    w = size_winch(pull, m.winch_speed, m.winch_efficiency, af.tether_length, tether.diameter,
-                   m.bend_radius_ratio, m.drum_layers)
+    w = size_winch(
+        pull,
+        m.winch_speed,
+        m.winch_efficiency,
+        af.tether_length,
+        tether.diameter,
+        m.bend_radius_ratio,
+        m.drum_layers,
+    )
     return MissionReport(
-        battery_mass=onboard_battery_mass(req, cfg), conductors=k, conductors_own=own,
-        tether=tether, tether_mass=tether.linear_density * af.tether_length, ballonet=b,
-        ballonet_volume=b.fraction * vol, ballonet_mass=_scalar(af.mass.items["ballonet"]),
-        permeation_tau=tau, days_to_top_up=days, purity_after_endurance=purity,
-        helium_top_up=top, top_up_cost=top * gas_price, deployment_days=float(req.deployment_days),
-        envelope=env, envelope_stress_margin=env["strength"] / env["strength_required"] - 1.0,
-        survival_pressure_margin=p_margin, survival_safety_factor=sf_s,
-        survival_safety_factor_required=sf_req, stay_up=stay, reel_in_wind=reel,
-        winch_pull=pull, winch=w,
+        battery_mass=onboard_battery_mass(req, cfg),
+        conductors=k,
+        conductors_own=own,
+        tether=tether,
+        tether_mass=tether.linear_density * af.tether_length,
+        ballonet=b,
+        ballonet_volume=b.fraction * vol,
+        ballonet_mass=_scalar(af.mass.items["ballonet"]),
+        permeation_tau=tau,
+        days_to_top_up=days,
+        purity_after_endurance=purity,
+        helium_top_up=top,
+        top_up_cost=top * gas_price,
+        deployment_days=float(req.deployment_days),
+        envelope=env,
+        envelope_stress_margin=env["strength"] / env["strength_required"] - 1.0,
+        survival_pressure_margin=p_margin,
+        survival_safety_factor=sf_s,
+        survival_safety_factor_required=sf_req,
+        stay_up=stay,
+        reel_in_wind=reel,
+        winch_pull=pull,
+        winch=w,
     )

@@ -47,8 +47,11 @@ def battery_mass(power, hours, energy_density, depth_of_discharge=1.0):
     >>> float(battery_mass(100.0, 24.0, 150.0, 0.8))
     20.0
     """
-    return np.asarray(power, float) * np.asarray(hours, float) / (
-        float(energy_density) * float(depth_of_discharge))
+    return (
+        np.asarray(power, float)
+        * np.asarray(hours, float)
+        / (float(energy_density) * float(depth_of_discharge))
+    )
 
 
 @dataclass(frozen=True)
@@ -72,13 +75,20 @@ class Conductors:
     strength: float
 
 
-def size_conductors(power: float, length: float, voltage: float, loss_fraction: float,
-                    max_current_density: float, insulation_thickness: float) -> Conductors:
+def size_conductors(
+    power: float,
+    length: float,
+    voltage: float,
+    loss_fraction: float,
+    max_current_density: float,
+    insulation_thickness: float,
+) -> Conductors:
     """Copper conductor pair that delivers ``power`` at the aerostat through ``length`` of tether.
 
     With supply power P_s = P/(1 - eps) at supply voltage V_s, current I = P_s/V_s, allowed loss
     I^2 R = eps P_s, so the loop resistance is R = eps V_s^2/P_s and one conductor's area is
-    A = 2 rho_Cu L / R = 2 rho_Cu L P_s/(eps V_s^2), raised if needed so that I/A <= J_max.
+    A = 2 rho_Cu L / R = 2 rho_Cu L P_s/(eps V_s^2), raised if needed so that I/A <= J_max
+    (then the current that delivers P, from P = V_s I - I^2 R, and the loss are smaller).
     Mass per metre 2 (A rho_Cu + A_ins rho_ETFE); strength 2 A sigma_y,Cu (copper at its yield
     when the strength member breaks).
 
@@ -116,19 +126,32 @@ def size_conductors(power: float, length: float, voltage: float, loss_fraction: 
     if power <= 0.0:
         return Conductors(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, np.inf, 0.0, 0.0)
     p_s = power / (1.0 - loss_fraction)
-    current = p_s / voltage
-    area = max(2.0 * c.COPPER_RESISTIVITY * length * p_s / (loss_fraction * voltage**2),
-               current / max_current_density)
+    i_loss = p_s / voltage
+    area = max(
+        2.0 * c.COPPER_RESISTIVITY * length * p_s / (loss_fraction * voltage**2),
+        i_loss / max_current_density,
+    )
+    # the current that delivers ``power`` through this area: P = V I - I^2 R (equals i_loss when
+    # the loss sets the area, less when the current density does)
+    r_loop = 2.0 * c.COPPER_RESISTIVITY * length / area
+    current = (voltage - np.sqrt(voltage**2 - 4.0 * r_loop * power)) / (2.0 * r_loop)
+    p_s = voltage * current
+    loss = current**2 * r_loop
     d = float(np.sqrt(4.0 * area / np.pi))
     d_ins = d + 2.0 * insulation_thickness
     a_ins = np.pi / 4.0 * (d_ins**2 - d**2)
-    r_loop = 2.0 * c.COPPER_RESISTIVITY * length / area
-    loss = current**2 * r_loop
     rho_l = 2.0 * (area * c.COPPER_DENSITY + a_ins * c.ETFE_DENSITY)
-    return Conductors(area=area, diameter=d, insulated_diameter=d_ins, current=current,
-                      supply_power=p_s, loss=loss, loop_resistance=r_loop,
-                      linear_density=float(rho_l),
-                      strength=2.0 * area * c.COPPER_YIELD_STRENGTH)
+    return Conductors(
+        area=area,
+        diameter=d,
+        insulated_diameter=d_ins,
+        current=float(current),
+        supply_power=float(p_s),
+        loss=float(loss),
+        loop_resistance=r_loop,
+        linear_density=float(rho_l),
+        strength=2.0 * area * c.COPPER_YIELD_STRENGTH,
+    )
 
 
 def power_tether(base: TetherSpec, k: Conductors) -> TetherSpec:
@@ -142,5 +165,10 @@ def power_tether(base: TetherSpec, k: Conductors) -> TetherSpec:
         return base
     d = float(np.sqrt(base.diameter**2 + 2.0 * k.insulated_diameter**2))
     name = base.name if base.name.endswith(" + power") else base.name[:92] + " + power"
-    return replace(base, name=name, linear_density=base.linear_density + k.linear_density,
-                   diameter=min(d, 0.05), breaking_strength=base.breaking_strength + k.strength)
+    return replace(
+        base,
+        name=name,
+        linear_density=base.linear_density + k.linear_density,
+        diameter=min(d, 0.05),
+        breaking_strength=base.breaking_strength + k.strength,
+    )

@@ -25,8 +25,15 @@ class Winch:
     reel_time: float
 
 
-def size_winch(pull: float, speed: float, efficiency: float, tether_length: float,
-               tether_diameter: float, bend_radius_ratio: float, layers: int) -> Winch:
+def size_winch(
+    pull: float,
+    speed: float,
+    efficiency: float,
+    tether_length: float,
+    tether_diameter: float,
+    bend_radius_ratio: float,
+    layers: int,
+) -> Winch:
     """Winch for a line pull, reel speed and stored tether.
 
     P = T v / eta; drum core diameter D = 2 R_min = 2 (R_min/d) d; a drum of width W holding n
@@ -60,6 +67,12 @@ def size_winch(pull: float, speed: float, efficiency: float, tether_length: floa
     drum = 2.0 * bend_radius_ratio * d
     n = int(layers)
     width = tether_length * d / (np.pi * n * (drum + n * d))
-    return Winch(pull=float(pull), speed=float(speed), power=float(pull) * speed / efficiency,
-                 drum_diameter=drum, drum_length=float(width), layers=n,
-                 reel_time=tether_length / speed)
+    return Winch(
+        pull=float(pull),
+        speed=float(speed),
+        power=float(pull) * speed / efficiency,
+        drum_diameter=drum,
+        drum_length=float(width),
+        layers=n,
+        reel_time=tether_length / speed,
+    )

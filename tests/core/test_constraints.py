@@ -9,7 +9,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from aerostat_core import Configuration, Requirement, TetherSpec, design
+from aerostat_core import Requirement, TetherSpec, design
 from aerostat_core.airframe import build_airframe
 from aerostat_core.constraints import CONSTRAINTS, NAMES, TOLERANCE, constraint_state
 from aerostat_core.optimize import CONSTRAINTS as OPT_CONSTRAINTS
