@@ -174,7 +174,20 @@ def effective_tether(req, cfg) -> TetherSpec:
     k, own = tether_conductors(req, cfg)
     if k is None or own:
         return cfg.tether
-    return power_tether(cfg.tether, k)
+    t = cfg.tether
+    rho_l = t.linear_density + k.linear_density
+    d = float(np.sqrt(t.diameter**2 + 2.0 * k.insulated_diameter**2))
+    if rho_l > 1.0 or d > 0.05:
+        m = cfg.mission
+        raise ValueError(
+            f"Requirement.payload_power = {req.payload_power:g} W through {req.altitude:g} m of "
+            f"tether at MissionSpec.supply_voltage = {m.supply_voltage:g} V with "
+            f"power_loss_fraction = {m.power_loss_fraction:g} needs conductors of "
+            f"{1000 * k.linear_density:.0f} g/m (tether {1000 * rho_l:.0f} g/m, {1000 * d:.0f} mm);"
+            f" the tether model accepts up to 1000 g/m and 50 mm: raise the supply voltage or "
+            f"the allowed loss, or carry the power onboard"
+        )
+    return power_tether(t, k)
 
 
 # --- ballonet ----------------------------------------------------------------------------------
@@ -208,6 +221,8 @@ def ballonet_state(req, cfg) -> BallonetState:
 
 def ballonet_mass(req, cfg, hull_volume):
     """Ballonet fabric mass [kg] (hull fabric areal density), 0 where none is built."""
+    if cfg.mission.ballonet == "off":  # the default: skip the three ISA calls in the sizing loop
+        return np.zeros(np.shape(hull_volume))
     b = ballonet_state(req, cfg)
     if not b.built:
         return np.zeros(np.shape(hull_volume))

@@ -169,6 +169,6 @@ def power_tether(base: TetherSpec, k: Conductors) -> TetherSpec:
         base,
         name=name,
         linear_density=base.linear_density + k.linear_density,
-        diameter=min(d, 0.05),
+        diameter=d,
         breaking_strength=base.breaking_strength + k.strength,
     )

@@ -216,6 +216,14 @@ def test_winch_pull_is_the_largest_winch_tension_survival_included():
     assert m.winch.reel_time == pytest.approx(300.0 / 0.3048)
 
 
+def test_too_heavy_conductors_are_refused_with_the_fields_named():
+    with pytest.raises(ValueError, match="supply_voltage = 100 V.*raise the supply voltage"):
+        design(
+            Requirement(payload_power=5000.0, power_via="tether", altitude=1000.0),
+            replace(practice_configuration(), mission=MissionSpec(supply_voltage=100.0)),
+        )
+
+
 def test_catalogue_power_tether_uses_its_own_conductors():
     name = next(iter(POWER_TETHER_CONDUCTORS))
     cfg = replace(practice_configuration(), tether=TETHERS[name])
@@ -278,7 +286,11 @@ def test_mission_inputs_over_their_domain(
         supply_voltage=voltage, power_loss_fraction=loss, superheat=superheat, ballonet=ballonet
     )
     cfg = replace(base, mission=spec)
-    d = design(req, cfg)
+    try:
+        d = design(req, cfg)
+    except ValueError as exc:  # conductors beyond the tether model: a message, never a crash
+        assert "supply_voltage" in str(exc) and via == "tether"
+        return
     m = d.mission
     t = d.airframe.tether
     assert t.linear_density >= base.tether.linear_density
@@ -396,3 +408,23 @@ def test_cli_mission_options_and_keys(capsys):
     capsys.readouterr()
     assert main(["design", "--endurance-days", "-2"]) == 2
     assert "endurance_days" in capsys.readouterr().err
+
+
+# --- validation (issue 13 item 9) --------------------------------------------------------------
+def test_fielded_systems_sized_with_their_class_endurance_move_closer():
+    """Sized with the thesis' class endurance (tactical 5 days, operational 7) and the 500 m
+    ballonet rule, every held-out system's predicted length moves closer to the published one
+    (all were under-predicted); the median error drops from 10.3 % to 9.3 %. The fit system
+    TIF-1600, already 19 % long, grows to 24 % (the calibration was chosen without them)."""
+    from aerostat_core.fielded import validate_fielded
+
+    before = validate_fielded()
+    after = validate_fielded(mission=True)
+    for b, a in zip(before.rows, after.rows):
+        assert a.length > b.length  # more lift to lose and (above 500 m) a ballonet to carry
+        if not b.system.fit:
+            assert abs(a.length_error) < abs(b.length_error)
+    assert before.median_abs_length_error == pytest.approx(0.1025, abs=5e-4)
+    assert after.median_abs_length_error == pytest.approx(0.0934, abs=5e-4)
+    assert after.max_abs_length_error == pytest.approx(0.2403, abs=5e-4)
+    assert all(r.feasible for r in after.rows)
