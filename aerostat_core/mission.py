@@ -27,7 +27,13 @@ import numpy as np
 from . import constants as c
 from .atmosphere import isa
 from .ballonet import ballonet_fabric_mass, ballonet_fraction
-from .endurance import days_to_top_up, helium_top_up, lift_loss_after, permeation_time_constant
+from .endurance import (
+    days_to_top_up,
+    helium_top_up,
+    lift_loss_after,
+    permeation_time_constant,
+    purity_after,
+)
 from .materials import POWER_TETHER_CONDUCTORS, TetherSpec
 from .power import Conductors, battery_mass, power_tether, size_conductors
 from .structure import allowable_pressure, membrane_loads, required_pressure
@@ -310,6 +316,37 @@ def structure_quantities(req, cfg, ev) -> dict:
     }
 
 
+def lift_decay(req, cfg, af, days_max: float, points: int = 31) -> dict:
+    """Purity and free lift versus day without top-up, for one (0-d) airframe.
+
+    Returns
+    -------
+    dict of ndarray
+        day [day], purity [-], free_lift_kg [kg] (k(t) and L_f(t) of aerostat_core.endurance),
+        required_kg [kg] (the free lift the requirement asks for).
+    """
+    h = af.hull
+    t = np.linspace(0.0, float(days_max), points)
+    tau = _scalar(
+        permeation_time_constant(
+            h.volume, h.surface_area, cfg.hull_fabric.helium_permeability, af.temperature
+        )
+    )
+    rho_a, rho_p = _gas_densities(cfg, af)
+    k0 = cfg.gas.purity
+    fl = _scalar(af.free_lift)
+    loss = np.asarray(
+        lift_loss_after(_scalar(h.volume), af.g, _scalar(rho_a), _scalar(rho_p), k0, t, tau), float
+    ).reshape(-1)
+    need = req.free_lift_fraction * _scalar(af.buoyancy) / af.g
+    return {
+        "day": t,
+        "purity": np.asarray(purity_after(k0, t, tau), float).reshape(-1),
+        "free_lift_kg": (fl - loss) / af.g,
+        "required_kg": np.full_like(t, need),
+    }
+
+
 # --- the report of one design ------------------------------------------------------------------
 @dataclass(frozen=True)
 class MissionReport:
@@ -323,10 +360,13 @@ class MissionReport:
     envelope (dict of structure quantities at the design wind, floats);
     envelope_stress_margin : strength / required - 1 at the design wind [-];
     survival_pressure_margin : allowable / required pressure - 1 at the survival wind [-];
-    survival_safety_factor [-] and its requirement; stay_up : both survival checks met;
+    survival_safety_factor [-] and its requirement; survival_tension : largest tether tension
+    at the survival wind [N] (against ``tether.breaking_strength``); stay_up : both survival
+    checks met;
     reel_in_wind : lowest sweep speed at which either fails (None if none in the sweep) [m/s];
     winch (Winch) sized for ``winch_pull`` [N], the largest winch tension over the sweep, the
-    design and the survival wind.
+    design and the survival wind; decay : purity and free lift versus day without top-up
+    (:func:`lift_decay`).
     """
 
     battery_mass: float
@@ -352,6 +392,8 @@ class MissionReport:
     reel_in_wind: float | None
     winch_pull: float
     winch: Winch
+    survival_tension: float = float("nan")
+    decay: dict | None = None
 
     def rows(self) -> list[dict]:
         """(group, quantity, value, unit) rows for tables and CSV."""
@@ -403,6 +445,8 @@ class MissionReport:
                 self.envelope_stress_margin,
                 "-",
             ),
+            ("Survival", "Largest tether tension at the survival wind", self.survival_tension, "N"),
+            ("Survival", "Tether breaking strength", self.tether.breaking_strength, "N"),
             (
                 "Survival",
                 "Tether safety factor at the survival wind",
@@ -495,7 +539,7 @@ def mission_report(req, cfg, af, state, sweep_ev, gas_price: float) -> MissionRe
     ok_p = np.asarray(sw["pressure_allowable"] >= sw["pressure_required"]).reshape(-1)
     bad = (sf_sweep < req.survival_safety_factor) | ~ok_p
     speeds = np.asarray(sweep_ev.speed, float).reshape(-1)
-    reel = float(speeds[np.argmax(bad)]) if bad.any() else None
+    reel = float(speeds[bad].min()) if bad.any() else None
     pulls = [np.max(sweep_ev.tether.tension_winch), np.max(ev2.tether.tension_winch)]
     pull = float(max(pulls))
     m = cfg.mission
@@ -532,4 +576,6 @@ def mission_report(req, cfg, af, state, sweep_ev, gas_price: float) -> MissionRe
         reel_in_wind=reel,
         winch_pull=pull,
         winch=w,
+        survival_tension=float(np.max(np.asarray(ev2.tether.tension).reshape(-1, 2)[:, 1])),
+        decay=lift_decay(req, cfg, af, max(30.0, 2.0 * req.endurance_days)),
     )

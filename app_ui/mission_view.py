@@ -177,6 +177,20 @@ def render(d) -> None:
             f"the envelope pressure margin {100 * m.survival_pressure_margin:.0f} %.",
             icon=":material/warning:",
         )
+    if m.decay is not None:
+        dec = pd.DataFrame(
+            {
+                "Day": m.decay["day"],
+                "Free lift [kg]": m.decay["free_lift_kg"],
+                "Required free lift [kg]": m.decay["required_kg"],
+            }
+        )
+        st.line_chart(dec, x="Day", y=["Free lift [kg]", "Required free lift [kg]"], height=260)
+        st.caption(
+            f"Free lift without top-up as helium permeates out (purity "
+            f"{100 * m.decay['purity'][0]:.1f} % → {100 * m.decay['purity'][-1]:.1f} % in "
+            f"{m.decay['day'][-1]:g} days)."
+        )
     rows = m.rows()
     frame = pd.DataFrame(
         {

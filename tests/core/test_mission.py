@@ -182,6 +182,19 @@ def test_sized_design_meets_the_endurance_it_asks_for():
     assert d.summary()["binding_constraint"] == "endurance"
 
 
+def test_lift_decay_curve_crosses_the_requirement_at_the_top_up_day():
+    d = design(Requirement(endurance_days=7.0))
+    m = d.mission
+    dec = m.decay
+    assert dec["free_lift_kg"][0] == pytest.approx(d.free_lift_kg)
+    assert np.all(np.diff(dec["free_lift_kg"]) < 0) and np.all(np.diff(dec["purity"]) < 0)
+    cross = np.interp(0.0, -(dec["free_lift_kg"] - dec["required_kg"]), dec["day"])
+    assert cross == pytest.approx(m.days_to_top_up, rel=2e-3)  # linear interpolation of a curve
+    assert m.survival_tension * m.survival_safety_factor == pytest.approx(
+        m.tether.breaking_strength
+    )
+
+
 def test_weak_fabric_fails_the_envelope_and_must_be_reeled_in():
     fab = Fabric("weak", 0.2, 1500.0, 2.5)
     cfg = replace(practice_configuration(60.0), hull_fabric=fab, fin_fabric=fab)
