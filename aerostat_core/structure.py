@@ -27,6 +27,13 @@ def required_pressure(q, rho_air, rho_gas, g, diameter, factor):
     factor : float
         p / q rule [-] (constants.PRESSURE_DYNAMIC_FACTOR, 1.2).
 
+    Notes
+    -----
+    Valid for a non-rigid, streamlined hull trimmed at small angle of attack (the stagnation
+    pressure on the nose is about q); gusts and pitch raise the local pressure, which the
+    factor and the fabric safety factor cover. Sources: the rule of thumb quoted in issue 13
+    (constants.PRESSURE_DYNAMIC_FACTOR); hydrostatics of a gas column of height d.
+
     Examples
     --------
     >>> round(float(required_pressure(100.0, 1.2, 0.2, 10.0, 4.0, 1.2)), 1)
@@ -41,6 +48,9 @@ def membrane_loads(pressure, radius, moment=0.0):
 
     N_hoop = p r; N_long = p r/2 + |M|/(pi r^2) (thin-walled cylinder of radius r with a
     bending moment M about the section; Carichner & Nicolai 2013, envelope design).
+
+    Valid for a thin membrane (fabric thickness << r), away from the nose and tail caps and the
+    fin and confluence-line attachments (local patches carry those loads).
 
     Parameters
     ----------
@@ -70,6 +80,11 @@ def allowable_pressure(strength, safety_factor, radius, moment=0.0):
         [m].
     moment : array_like
         [N m].
+
+    Notes
+    -----
+    Valid with the thin-membrane loads of :func:`membrane_loads`; a bending moment larger than
+    pi r^2 F/SF makes the allowable pressure negative (the hull creases whatever the pressure).
     """
     r = np.asarray(radius, float)
     n = float(strength) / float(safety_factor)

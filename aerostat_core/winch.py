@@ -57,6 +57,12 @@ def size_winch(
     layers : int
         Layers wound on the drum, >= 1.
 
+    Notes
+    -----
+    Steady reeling (no acceleration or drum inertia), tension taken equal on every layer; a
+    level-wind packs the layers at pitch d. Sources: thesis §2.2.4 (reel speed, drum sized by the
+    bend radius, motor power from pull and speed); drum capacity from the wound geometry.
+
     Examples
     --------
     >>> w = size_winch(1000.0, 0.3048, 0.75, 300.0, 0.005, 10.0, 10)
