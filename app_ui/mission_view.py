@@ -177,6 +177,13 @@ def render(d) -> None:
             f"the envelope pressure margin {100 * m.survival_pressure_margin:.0f} %.",
             icon=":material/warning:",
         )
+    if m.ballonet.needed and not m.ballonet.built:
+        st.info(
+            f"The thesis' 500 m rule calls for a ballonet here ({100 * m.ballonet.fraction:.1f} % "
+            f"of the hull volume against {100 * m.ballonet.rule_fraction:.1f} % at 500 m); it is "
+            "not in the mass breakdown until Ballonet is set to build one.",
+            icon=":material/info:",
+        )
     if m.decay is not None:
         dec = pd.DataFrame(
             {

@@ -3,6 +3,8 @@ verdict, and the mission inputs form writing into the design inputs."""
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import pytest
 
 from aerostat_core import design
@@ -39,3 +41,18 @@ def test_mission_form_writes_the_inputs_and_resizes(at):
     # the thesis baseline keeps its given volume: the battery eats into the free lift instead
     assert after.free_lift < before.free_lift
     assert metric(at, "Days to top-up") in {f"{after.summary()['days_to_top_up']:,.1f}", "never"}
+
+
+def test_ballonet_hint_where_the_500_m_rule_calls_for_one(at):
+    req, cfg = state.current_inputs(at.session_state)
+    state.set_current_inputs(replace(req, altitude=1000.0), cfg, at.session_state)
+    show_tab(at, "Mission")
+    assert not at.exception
+    assert any("500 m rule" in m for m in messages(at, "info"))
+    at.selectbox(key="mission_ballonet").set_value("auto")
+    at.button(key="FormSubmitter:mission_form-Apply mission inputs").click()
+    at.run()
+    req2, cfg2 = state.current_inputs(at.session_state)
+    assert cfg2.mission.ballonet == "auto"
+    assert float(design(req2, cfg2).airframe.mass.items["ballonet"]) > 0
+    assert not any("500 m rule" in m for m in messages(at, "info"))
