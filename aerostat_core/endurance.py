@@ -5,7 +5,9 @@ of helium that permeates out is replaced by air; helium leaves at a rate proport
 partial-pressure difference across the fabric (the permeability figure is per atmosphere of
 helium), so the purity k decays exponentially and the free lift falls with it. Seams, valves
 and damage leak more than the fabric (measured leaks of whole aerostats exceed the fabric
-figure); use a higher effective permeability to cover them.
+figure); use a higher effective permeability to cover them. With hydrogen the fabric's figure
+is applied as given (hydrogen permeates faster than helium through most films: enter its own
+figure).
 """
 
 from __future__ import annotations
