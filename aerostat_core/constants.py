@@ -108,3 +108,21 @@ ENVELOPE_SAFETY_FACTOR = 4.0
 #: internal pressure to exceed the nose dynamic pressure; the factor 1.2 itself is NOT verified
 #: against a primary source here, so it is an input (MissionSpec.pressure_dynamic_factor).
 PRESSURE_DYNAMIC_FACTOR = 1.2
+#: Pack-level specific energy of an onboard Li-ion battery [Wh/kg], ASSUMED order of magnitude
+#: (cells about 250 Wh/kg; packs with wiring, case and management 150-200 Wh/kg).
+BATTERY_ENERGY_DENSITY = 150.0
+#: Usable fraction of a battery's rated energy [-], ASSUMED (long cycle life).
+BATTERY_DEPTH_OF_DISCHARGE = 0.8
+#: Ground supply voltage of a power tether [V], ASSUMED (low-voltage DC/AC class).
+POWER_TETHER_VOLTAGE = 400.0
+#: Allowed resistive loss / supply power in the tether conductors [-], engineering choice.
+POWER_TETHER_LOSS_FRACTION = 0.10
+#: Current-density ceiling of bundled insulated copper [A/m2] (5 A/mm2), ASSUMED stand-in for a
+#: conductor-temperature limit.
+MAX_CURRENT_DENSITY = 5.0e6
+#: Day-time gas superheat at the operating altitude [K], ASSUMED clear-sky order of magnitude.
+GAS_SUPERHEAT = 10.0
+#: Winch motor x drive efficiency [-], ASSUMED (motor 0.85 x gearbox 0.9).
+WINCH_EFFICIENCY = 0.75
+#: Tether minimum bend radius / diameter [-], ASSUMED (use the cable's data sheet).
+TETHER_BEND_RADIUS_RATIO = 10.0

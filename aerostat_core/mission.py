@@ -92,20 +92,20 @@ class MissionSpec:
         Layers of tether on the drum, valid [1, 100]; 10.
     """
 
-    battery_energy_density: float = 150.0
-    battery_depth_of_discharge: float = 0.8
+    battery_energy_density: float = c.BATTERY_ENERGY_DENSITY
+    battery_depth_of_discharge: float = c.BATTERY_DEPTH_OF_DISCHARGE
     battery_hours: float | None = None
-    supply_voltage: float = 400.0
-    power_loss_fraction: float = 0.10
-    max_current_density: float = 5.0e6
+    supply_voltage: float = c.POWER_TETHER_VOLTAGE
+    power_loss_fraction: float = c.POWER_TETHER_LOSS_FRACTION
+    max_current_density: float = c.MAX_CURRENT_DENSITY
     insulation_thickness: float = 0.25e-3
     ballonet: str = "off"
-    superheat: float = 10.0
+    superheat: float = c.GAS_SUPERHEAT
     envelope_safety_factor: float = c.ENVELOPE_SAFETY_FACTOR
     pressure_dynamic_factor: float = c.PRESSURE_DYNAMIC_FACTOR
     winch_speed: float = c.THESIS_WINCH_SPEED
-    winch_efficiency: float = 0.75
-    bend_radius_ratio: float = 10.0
+    winch_efficiency: float = c.WINCH_EFFICIENCY
+    bend_radius_ratio: float = c.TETHER_BEND_RADIUS_RATIO
     drum_layers: int = 10
 
     def __post_init__(self) -> None:
