@@ -134,9 +134,13 @@ def size_conductors(
     # the current that delivers ``power`` through this area: P = V I - I^2 R (equals i_loss when
     # the loss sets the area, less when the current density does)
     r_loop = 2.0 * c.COPPER_RESISTIVITY * length / area
-    current = (voltage - np.sqrt(voltage**2 - 4.0 * r_loop * power)) / (2.0 * r_loop)
+    # R P from P/A (finite even for a vanishing power), and the cancellation-free root
+    # I = 2P/(V + sqrt(V^2 - 4 R P)); the loss I^2 R = I (2 R P)/(V + sqrt(...))
+    rp = 2.0 * c.COPPER_RESISTIVITY * length * (power / area)
+    root = voltage + np.sqrt(max(voltage**2 - 4.0 * rp, 0.0))
+    current = 2.0 * power / root
     p_s = voltage * current
-    loss = current**2 * r_loop
+    loss = current * 2.0 * rp / root
     d = float(np.sqrt(4.0 * area / np.pi))
     d_ins = d + 2.0 * insulation_thickness
     a_ins = np.pi / 4.0 * (d_ins**2 - d**2)
