@@ -212,14 +212,11 @@ class BallonetState:
 def ballonet_state(req, cfg) -> BallonetState:
     """Ballonet fraction at the operating altitude against the thesis' 500 m rule."""
     sh = cfg.mission.superheat
-    site = isa(req.site_elevation, req.isa_offset)
-    op = isa(req.site_elevation + req.altitude, req.isa_offset)
     top = min(req.site_elevation + c.BALLONET_RULE_ALTITUDE, c.ISA_TROPOPAUSE)
-    rule = isa(top, req.isa_offset)
-    f = float(ballonet_fraction(site.pressure, site.temperature, op.pressure, op.temperature, sh))
-    f_rule = float(
-        ballonet_fraction(site.pressure, site.temperature, rule.pressure, rule.temperature, sh)
-    )
+    # site, operating altitude and the 500 m rule altitude in one ISA call
+    a = isa(np.array([req.site_elevation, req.site_elevation + req.altitude, top]), req.isa_offset)
+    p, t = a.pressure, a.temperature
+    f, f_rule = (float(x) for x in ballonet_fraction(p[0], t[0], p[1:], t[1:], sh))
     needed = f > f_rule + 1e-12
     mode = cfg.mission.ballonet
     return BallonetState(f, f_rule, needed, mode == "on" or (mode == "auto" and needed))

@@ -322,15 +322,16 @@ def test_mission_inputs_over_their_domain(
     assert 0.0 <= m.ballonet.fraction < 1.0
     assert (m.ballonet_mass > 0) == (ballonet == "on" or (ballonet == "auto" and m.ballonet.needed))
     assert m.helium_top_up > 0 and m.top_up_cost >= 0
+    # the table's endurance row and the report's days agree up to the row's 1e-6 tolerance on
+    # the lift fraction, i.e. about 1e-6 rho_air tau/((rho_air - rho_He) k0) days
+    slack = 2e-6 * m.permeation_tau
     if d.feasible:
-        assert m.days_to_top_up >= days * (1 - 1e-4) - 1e-6
+        assert m.days_to_top_up >= days - slack
         assert m.envelope_stress_margin >= 0 and m.stay_up
-    # the table's endurance row and the report's days agree (up to the row's 1e-6 tolerance on
-    # the lift fraction)
     met = bool(d.constraints.met[NAMES.index("endurance")])
     if met:
-        assert m.days_to_top_up >= days * (1 - 1e-4) - 1e-6
-    if m.days_to_top_up >= days * (1 + 1e-3) + 1e-6:
+        assert m.days_to_top_up >= days - slack
+    if m.days_to_top_up >= days + slack:
         assert met
 
 
