@@ -19,6 +19,8 @@ from .helikite import KiteGeometry, kite_geometry
 from .inputs import Configuration, Requirement
 from .mass import MassBreakdown, mass_breakdown
 from .shapes import check_fineness, shape_info
+from .materials import TetherSpec
+from .mission import ballonet_mass, effective_tether, onboard_battery_mass
 
 
 @dataclass(frozen=True)
@@ -30,8 +32,7 @@ class Airframe:
     aerostat_weight (all but tether) [N]; total_weight [N]; free_lift = buoyancy - total_weight
     [N]; xi_c, z_c (confluence point, body frame) [m]; J&D integrals i1 [m2], i3 [m3], j1 [m2],
     j2 [m3] about xi_m [m] (= centre of buoyancy); cutoff_station [m]; tether_length [m];
-    tether_weight_per_length (in air, net of air buoyancy) [N/m]; g [m/s2]; kite (the
-    Helikite's :class:`~aerostat_core.helikite.KiteGeometry`, else None).
+
     """
 
     hull: HullGeometry
@@ -58,6 +59,7 @@ class Airframe:
     tether_weight_per_length: float
     g: float
     kite: KiteGeometry | None = None
+    tether: TetherSpec | None = None
 
 
 def _without_fins(fins: FinGeometry, hull: HullGeometry, kite: KiteGeometry | None) -> FinGeometry:
@@ -124,11 +126,12 @@ def build_airframe(
     kite = kite_geometry(hull.volume) if info.kite else None
     if not info.streamlined:
         fins = _without_fins(fins, hull, kite)
-    t = cfg.tether
+    t = effective_tether(req, cfg)
     tether_length = float(req.altitude)
     mass = mass_breakdown(
         hull, fins, cfg.hull_fabric.areal_density, rho_gas, cfg.misc_mass_ratio,
         req.payload_mass, t.linear_density * tether_length,
+        onboard_battery_mass(req, cfg), ballonet_mass(req, cfg, hull.volume),
     )
     fb = gross_buoyancy(atm.density, hull.volume, g)
     w_a = mass.aerostat * g
@@ -153,5 +156,5 @@ def build_airframe(
         buoyancy=fb, aerostat_weight=w_a, total_weight=w_t, free_lift=fb - w_t,
         xi_c=xi_c, z_c=z_c, xi_m=xi_m, cutoff_station=lh * np.ones_like(hull.length),
         i1=i1, i3=i3, j1=j1, j2=j2,
-        tether_length=tether_length, tether_weight_per_length=w_line, g=g, kite=kite,
+        tether_length=tether_length, tether_weight_per_length=w_line, g=g, kite=kite, tether=t,
     )

@@ -41,6 +41,9 @@ _OPTIONS = {
     "free_lift_fraction": "free_lift_fraction",
     "safety_factor": "min_tether_safety_factor",
     "rules": "rules",
+    "payload_power": "payload_power",
+    "power_via": "power_via",
+    "endurance_days": "endurance_days",
 }
 
 
@@ -113,6 +116,14 @@ def _parser() -> argparse.ArgumentParser:
     d.add_argument("--rules", choices=RULE_NAMES,
                    help="rule set for the limits left open and the default configuration "
                         "(default: practice)")
+    d.add_argument("--payload-power", type=float,
+                   help="payload electrical power [W] (default 0: no power supply modelled)")
+    d.add_argument("--power-via", choices=("onboard", "tether"),
+                   help="payload power from an onboard battery or through the tether "
+                        "(default onboard)")
+    d.add_argument("--endurance-days", type=float,
+                   help="days aloft without a helium top-up, keeping the free-lift margin "
+                        "(default 0: no endurance requirement)")
     d.add_argument("--volume", type=float, help="hull volume [m3] (default: sized)")
     d.add_argument("--config", type=Path, help="JSON design file with every input")
     d.add_argument("--csv", type=Path, help="write geometry, mass and performance CSV here")

@@ -97,3 +97,55 @@ HELIKITE_MAX_WIND = 25.0
 HELIKITE_MAX_PAYLOAD = 30.0
 #: [m] Helikite operating altitude (thesis Table 2.1, "~2 km").
 HELIKITE_MAX_ALTITUDE = 2000.0
+
+# --- Mission: power, endurance, structure, winch (aerostat_core.mission, issue 13) -----------
+#: Resistivity of annealed copper at 20 degC [ohm m]. Source: IEC 60028 (International Annealed
+#: Copper Standard, 1/58 ohm mm2/m).
+COPPER_RESISTIVITY = 1.0 / 58.0e6
+#: Density of annealed copper [kg/m3]. Source: IEC 60028 (8.89 g/cm3).
+COPPER_DENSITY = 8890.0
+#: Yield strength of annealed copper (C11000, O temper) [Pa]: the stress copper conductors carry
+#: when the strength member of a power tether breaks at a few % strain (they have long yielded).
+#: Source: ASM Handbook Vol. 2 (C11000 annealed, 69 MPa).
+COPPER_YIELD_STRENGTH = 69.0e6
+#: Density of ETFE conductor insulation [kg/m3]. Source: Chemours Tefzel ETFE data (1.70 g/cm3).
+ETFE_DENSITY = 1700.0
+#: Standard conditions of gas-permeability and gas-volume figures: 0 degC, 1 atm [K], [Pa].
+STANDARD_TEMPERATURE = 273.15
+STANDARD_PRESSURE = 101325.0
+#: Hours per day and seconds per day.
+HOURS_PER_DAY = 24.0
+SECONDS_PER_DAY = 86400.0
+#: Reel speed of DC-motor winches for synthetic tethers [m/s]: "around 60 feet per minute"
+#: (thesis §2.2.4) = 0.3048 m/s.
+THESIS_WINCH_SPEED = 60.0 * 0.3048 / 60.0
+#: Operating altitude below which an aerostat "can be flown without a ballonet" [m]
+#: (thesis §2.2.1(c), citing Bajoria et al. 2017).
+BALLONET_RULE_ALTITUDE = 500.0
+#: Safety factor on envelope fabric strength [-]: Carichner & Nicolai, Fundamentals of Aircraft
+#: and Airship Design Vol. 2 (AIAA 2013), envelope design chapter, use 4 on the ultimate strength.
+ENVELOPE_SAFETY_FACTOR = 4.0
+#: Internal pressure / dynamic pressure needed to keep a non-rigid hull's nose from dimpling
+#: [-]: the rule of thumb p >= 1.2 q (+ the hydrostatic gas head) quoted in issue 13. Airship
+#: texts (Khoury & Gillett, Airship Technology, CUP 1999; Carichner & Nicolai 2013) require the
+#: internal pressure to exceed the nose dynamic pressure; the factor 1.2 itself is NOT verified
+#: against a primary source here, so it is an input (MissionSpec.pressure_dynamic_factor).
+PRESSURE_DYNAMIC_FACTOR = 1.2
+#: Pack-level specific energy of an onboard Li-ion battery [Wh/kg], ASSUMED order of magnitude
+#: (cells about 250 Wh/kg; packs with wiring, case and management 150-200 Wh/kg).
+BATTERY_ENERGY_DENSITY = 150.0
+#: Usable fraction of a battery's rated energy [-], ASSUMED (long cycle life).
+BATTERY_DEPTH_OF_DISCHARGE = 0.8
+#: Ground supply voltage of a power tether [V], ASSUMED (low-voltage DC/AC class).
+POWER_TETHER_VOLTAGE = 400.0
+#: Allowed resistive loss / supply power in the tether conductors [-], engineering choice.
+POWER_TETHER_LOSS_FRACTION = 0.10
+#: Current-density ceiling of bundled insulated copper [A/m2] (5 A/mm2), ASSUMED stand-in for a
+#: conductor-temperature limit.
+MAX_CURRENT_DENSITY = 5.0e6
+#: Day-time gas superheat at the operating altitude [K], ASSUMED clear-sky order of magnitude.
+GAS_SUPERHEAT = 10.0
+#: Winch motor x drive efficiency [-], ASSUMED (motor 0.85 x gearbox 0.9).
+WINCH_EFFICIENCY = 0.75
+#: Tether minimum bend radius / diameter [-], ASSUMED (use the cable's data sheet).
+TETHER_BEND_RADIUS_RATIO = 10.0

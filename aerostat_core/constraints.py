@@ -19,6 +19,7 @@ import numpy as np
 
 from .airframe import Airframe
 from .inputs import Configuration, Requirement
+from .mission import endurance_quantities, structure_quantities
 from .performance import Evaluation, evaluate
 
 #: Feasibility tolerance on every g [-]: a design meets a constraint when g <= this.
@@ -93,6 +94,25 @@ CONSTRAINTS: tuple[Constraint, ...] = (
     Constraint("fins_on_hull", "Fins on the hull", "m", "fin trailing edge on the hull",
                "fin trailing edge {value:.2f} m from the nose lies behind the tail "
                "({limit:.2f} m)", "static"),
+    # mission rows (issue 13, aerostat_core.mission); met by today's designs unless the user asks
+    Constraint("envelope_stress", "Envelope stress", "N/m",
+               "envelope fabric strength at least the safety factor times the membrane load at "
+               "the required internal pressure, at the design wind",
+               "envelope fabric needs {value:.0f} N/m (load x safety factor) but has "
+               "{limit:.0f} N/m at {wind:g} m/s", "design",
+               "a larger hull only loads its fabric harder: choose a stronger fabric"),
+    Constraint("survival_envelope_pressure", "Survival envelope pressure", "Pa",
+               "the fabric carries, with its safety factor, the internal pressure the hull needs "
+               "at the survival wind",
+               "the hull needs {value:.0f} Pa at the survival wind {wind:g} m/s but the fabric "
+               "carries only {limit:.0f} Pa with its safety factor", "survival",
+               "choose a stronger fabric, or reel the aerostat in below the survival wind"),
+    Constraint("endurance", "Endurance", "day",
+               "free lift still at least the required share of gross lift after the required "
+               "days of helium permeation",
+               "the free-lift margin lasts {value:.1f} days of permeation, not the required "
+               "{limit:g} days", "static",
+               "choose a fabric of lower helium permeability or a shorter time between top-ups"),
 )
 
 #: Constraint names in table order (the column order of every g array).
@@ -172,11 +192,18 @@ def wind_quantities(req: Requirement, cfg: Configuration, ev: Evaluation) -> dic
     lim = -float(req.weathervane_margin)
     wv_g = np.where(np.isfinite(cma_aero), cma_aero - lim, -1.0)
     out["weathervane"] = (np.where(np.isfinite(cma_aero), cma_aero, 0.0), lim * one, wv_g, -wv_g)
+    st = structure_quantities(req, cfg, ev)
+    need, fab = st["strength_required"] * one, st["strength"] * one
+    out["envelope_stress"] = (need, fab, need / fab - 1.0, fab - need)
+    p_req, p_ok = st["pressure_required"] * one, st["pressure_allowable"] * one
+    g_p = np.where(p_ok > 0, p_req / np.where(p_ok > 0, p_ok, 1.0) - 1.0, 1.0 + p_req / fab)
+    out["survival_envelope_pressure"] = (p_req, p_ok, g_p, p_ok - p_req)
     return out
 
 
-def static_quantities(req: Requirement, af: Airframe) -> dict:
-    """Value, limit, g and margin of the constraints that do not depend on the wind."""
+def static_quantities(req: Requirement, af: Airframe, cfg: Configuration | None = None) -> dict:
+    """Value, limit, g and margin of the constraints that do not depend on the wind (the
+    endurance row needs ``cfg``; without it the row is off)."""
     g0 = af.g
     fb = np.maximum(np.abs(af.buoyancy), 1e-9)
     fl_kg = af.free_lift / g0
@@ -185,6 +212,13 @@ def static_quantities(req: Requirement, af: Airframe) -> dict:
                          fl_kg - need_kg)}
     te = af.fins.xi_root_te * np.ones_like(af.hull.length)
     out["fins_on_hull"] = (te, af.hull.length, *_upper(te, af.hull.length))
+    one = np.ones_like(af.hull.length)
+    if cfg is None:
+        out["endurance"] = (np.inf * one, 0.0 * one, -one, np.inf * one)
+    else:
+        e = endurance_quantities(req, cfg, af)
+        out["endurance"] = (e["days_to_top_up"] * one, float(req.endurance_days) * one,
+                            e["g"] * one, e["margin"] * one)
     return out
 
 
@@ -271,7 +305,7 @@ def constraint_state(req: Requirement, cfg: Configuration, af: Airframe) -> Cons
     speeds = np.array([req.design_wind, req.survival_wind], float).reshape((2,) + (1,) * len(shape))
     ev = evaluate(req, cfg, af, speeds)
     wq = wind_quantities(req, cfg, ev)
-    sq = static_quantities(req, af)
+    sq = static_quantities(req, af, cfg)
     full = (2,) + np.broadcast_shapes(shape, np.shape(ev.tether.blow_by)[1:])
     cols = []
     for c in CONSTRAINTS:
@@ -298,7 +332,7 @@ def wind_flags(req: Requirement, cfg: Configuration, ev: Evaluation) -> dict:
     survival check is the constraint table's, not a per-speed flag)."""
     req = req.resolved()
     wq = wind_quantities(req, cfg, ev)
-    sq = static_quantities(req, ev.airframe)
+    sq = static_quantities(req, ev.airframe, cfg)
     shape = np.shape(wq["blow_by"][0])
     flags = {}
     for c in CONSTRAINTS:

@@ -14,6 +14,7 @@ from .constraints import ConstraintState, constraint_state, wind_flags
 from .cost import gas_fill_cost
 from .inputs import Configuration, Requirement
 from .mass import ITEM_NAMES
+from .mission import MissionReport, mission_report
 from .performance import PerformanceTable, cm_curve, evaluate, performance_table, wind_speeds
 from .presets import rules_configuration
 from .sizing import SizingResult, size_volume
@@ -53,6 +54,8 @@ class Design:
         Every constraint of the table met (the one definition the optimiser and pages use).
     violations : tuple of str
         Plain-language reasons when not feasible.
+    mission : MissionReport or None
+        Power, endurance, ballonet, envelope, survival and winch outputs (aerostat_core.mission).
     """
 
     requirement: Requirement
@@ -71,6 +74,7 @@ class Design:
     constraints: ConstraintState
     feasible: bool
     violations: tuple
+    mission: MissionReport | None = None
 
     # --- convenience views -------------------------------------------------------------
     @property
@@ -170,6 +174,21 @@ class Design:
                                    if self.sizing is not None else "given volume"),
             "violations": list(self.violations),
             "rules": self.requirement.rules,
+            **self._mission_summary(),
+        }
+
+    def _mission_summary(self) -> dict:
+        m = self.mission
+        if m is None:
+            return {}
+        fin = lambda x: None if not np.isfinite(x) else float(x)  # noqa: E731 - JSON has no inf
+        return {
+            "ballonet_volume_m3": m.ballonet_volume,
+            "days_to_top_up": fin(m.days_to_top_up),
+            "helium_top_up_m3": m.helium_top_up,
+            "envelope_stress_margin": m.envelope_stress_margin,
+            "winch_pull_N": m.winch_pull,
+            "winch_power_W": m.winch.power,
         }
 
     def constraint_rows(self) -> list[dict]:
@@ -234,6 +253,7 @@ def design(req: Requirement | None = None, cfg: Configuration | None = None) -> 
     if sizing is not None and not bool(np.asarray(sizing.feasible).reshape(-1)[0]):
         violations.append(str(np.asarray(sizing.message).reshape(-1)[0]))
     violations += state.messages()
+    mission = mission_report(req, cfg, af, state, ev, cfg.gas_price_value)
     return Design(
         requirement=req,
         configuration=cfg,
@@ -251,4 +271,5 @@ def design(req: Requirement | None = None, cfg: Configuration | None = None) -> 
         constraints=state,
         feasible=not violations,
         violations=tuple(violations),
+        mission=mission,
     )

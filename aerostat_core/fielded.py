@@ -14,13 +14,14 @@ systems that publish both length and diameter; every other system is a predictio
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
 from .design import design
 from .inputs import Requirement
-from .presets import practice_configuration
+from .mission import MissionSpec
+from .presets import practice_configuration, rules_configuration
 
 #: Thesis Table 2.3 (Mahmood 2020, citing SAVER 2013 "Tethered aerostat systems" market survey).
 TABLE_2_3 = "thesis Table 2.3 (SAVER 2013)"
@@ -49,6 +50,12 @@ class FieldedSystem:
     source : str
     fit : bool
         True for the systems the practice calibration was chosen on.
+    endurance_days : float or None
+        Days aloft without helium addition published for the system's class (issue 13 item 9):
+        thesis §2.3, tactical (payload <= 30 kg) "flight endurance 5 to 7 days" (TCOM 2018),
+        operational "from 7 days to 4 weeks on helium gas addition" (Krausman & Petersen 2013);
+        the lower ends, 5 and 7 days, are used. No system of the table publishes its payload
+        power, so power is not used.
     """
 
     name: str
@@ -60,7 +67,20 @@ class FieldedSystem:
     design_wind: float | None = None
     source: str = TABLE_2_3
     fit: bool = False
+    endurance_days: float | None = None
 
+    @property
+    def class_endurance_days(self) -> float:
+        """The published class endurance (see ``endurance_days``) [day]."""
+        if self.endurance_days is not None:
+            return float(self.endurance_days)
+        return TACTICAL_ENDURANCE_DAYS if self.payload_mass <= 30.0 else OPERATIONAL_ENDURANCE_DAYS
+
+
+#: Class endurance without helium addition [day] (thesis §2.3; lower ends of 5-7 days and of
+#: "7 days to 4 weeks on helium gas addition").
+TACTICAL_ENDURANCE_DAYS = 5.0
+OPERATIONAL_ENDURANCE_DAYS = 7.0
 
 _FT3 = 0.3048**3
 
@@ -111,11 +131,20 @@ class FieldedRow:
         }
 
 
-def size_fielded(system: FieldedSystem, rules: str = "practice") -> FieldedRow:
-    """Size one fielded system from its payload and altitude (and wind rating if published)."""
+def size_fielded(system: FieldedSystem, rules: str = "practice",
+                 mission: bool = False) -> FieldedRow:
+    """Size one fielded system from its payload and altitude (and wind rating if published).
+
+    ``mission=True`` also asks for its class endurance (``class_endurance_days``) and builds a
+    ballonet where the thesis' 500 m rule calls for one (MissionSpec ballonet "auto"), with the
+    practice configuration otherwise unchanged (issue 13 item 9)."""
     req = Requirement(payload_mass=system.payload_mass, altitude=system.altitude,
-                      design_wind=system.design_wind, rules=rules)
-    d = design(req)
+                      design_wind=system.design_wind, rules=rules,
+                      endurance_days=system.class_endurance_days if mission else 0.0)
+    cfg = None
+    if mission:
+        cfg = replace(rules_configuration(rules), mission=MissionSpec(ballonet="auto"))
+    d = design(req, cfg)
     s = d.summary()
     rel = lambda p, q: None if q is None else p / q - 1.0  # noqa: E731
     return FieldedRow(
@@ -157,8 +186,11 @@ class FieldedValidation:
         return [r.as_dict() for r in self.rows]
 
 
-def validate_fielded(systems=FIELDED, rules: str = "practice") -> FieldedValidation:
-    """Size every fielded system with the default rule set and compare with the published size.
+def validate_fielded(systems=FIELDED, rules: str = "practice",
+                     mission: bool = False) -> FieldedValidation:
+    """Size every fielded system with the default rule set and compare with the published size
+    (``mission=True``: with the class endurance and the 500 m ballonet rule, see
+    :func:`size_fielded`).
 
     Examples
     --------
@@ -166,7 +198,7 @@ def validate_fielded(systems=FIELDED, rules: str = "practice") -> FieldedValidat
     >>> round(100 * v.median_abs_length_error), round(100 * v.max_abs_length_error)
     (9, 16)
     """
-    return FieldedValidation(tuple(size_fielded(s, rules) for s in systems))
+    return FieldedValidation(tuple(size_fielded(s, rules, mission) for s in systems))
 
 
 def practice_configuration_for(areal_density: float):

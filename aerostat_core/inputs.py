@@ -11,6 +11,7 @@ from dataclasses import dataclass, field, fields, replace
 
 from . import constants as c
 from .materials import Fabric, TetherSpec
+from .mission import POWER_ROUTES, MissionSpec
 from .rules import DEFAULT_RULES, RULE_NAMES, RuleSet, get_rules
 from .shapes import SHAPE_INFO, SHAPES
 from .validation import check_choice, check_int, check_number
@@ -83,6 +84,19 @@ class Requirement:
         [1/rad], valid [0, 1].
     rules : {"practice", "thesis"}
         Rule set for the limits left as ``None``.
+    payload_power : float
+        Electrical power the payload draws [W], valid [0, 100000]; 0 (the default) models no
+        power supply (thesis Table 2.4 "power requirement"; aerostat_core.mission).
+    power_via : {"onboard", "tether"}
+        Where the power comes from: an onboard battery, or the ground through conductors in the
+        tether (a "live" tether, thesis §2.2.3).
+    endurance_days : float
+        Days the aerostat must stay up without a helium top-up, keeping the required free lift
+        [day], valid [0, 365]; 0 (the default) sets no endurance requirement (thesis §2.3:
+        tactical systems 5-7 days, operational ones weeks "on helium gas addition").
+    deployment_days : float
+        Deployment length over which the helium top-up gas and its cost are reported [day],
+        valid [0, 3650].
     """
 
     payload_mass: float = 10.0
@@ -102,10 +116,18 @@ class Requirement:
     max_tether_angle_deg: float | None = None
     weathervane_margin: float | None = None
     rules: str = DEFAULT_RULES
+    payload_power: float = 0.0
+    power_via: str = "onboard"
+    endurance_days: float = 0.0
+    deployment_days: float = 30.0
 
     def __post_init__(self) -> None:
         o = "Requirement"
         check_choice(o, "rules", self.rules, RULE_NAMES)
+        check_number(o, "payload_power", self.payload_power, 0, 1e5, "W")
+        check_choice(o, "power_via", self.power_via, POWER_ROUTES)
+        check_number(o, "endurance_days", self.endurance_days, 0, 365, "day")
+        check_number(o, "deployment_days", self.deployment_days, 0, 3650, "day")
         check_number(o, "payload_mass", self.payload_mass, 0, 500, "kg", lo_open=True)
         check_number(o, "altitude", self.altitude, 10, 3000, "m")
         check_number(o, "site_elevation", self.site_elevation, -400, 5000, "m")
@@ -445,6 +467,8 @@ class Configuration:
     tether_segments : int
         Segments of the static tether march, valid [10, 5000]. Heun's method with 50 segments is
         within 1 mm of a 2000-segment solution for a 300 m tether (tests/core/test_tether.py).
+    mission : MissionSpec
+        Battery, power-tether, ballonet, envelope and winch technology (aerostat_core.mission).
     """
 
     gas: LiftingGas = field(default_factory=LiftingGas)
@@ -459,6 +483,7 @@ class Configuration:
     misc_mass_ratio: float = 0.30
     gas_price: float | None = None
     tether_segments: int = 50
+    mission: MissionSpec = field(default_factory=MissionSpec)
 
     def __post_init__(self) -> None:
         o = "Configuration"
@@ -472,6 +497,7 @@ class Configuration:
             ("aero", AeroModel),
             ("confluence", ConfluenceSpec),
             ("wind_profile", WindProfile),
+            ("mission", MissionSpec),
         ):
             if not isinstance(getattr(self, f), cls):
                 raise ValueError(f"{o}.{f} must be a {cls.__name__}")

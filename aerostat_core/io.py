@@ -7,8 +7,11 @@ The JSON format holds every input::
      "configuration": {"gas": {...}, "hull": {...}, ..., "misc_mass_ratio": 0.3, ...}}
 
 A file of saved cases is ``{"format": "aerostat-cases", "version": 2, "cases": {name: design}}``.
-Version 2 added ``configuration.hull.shape`` (issue 12); version-1 files still load, and their
-hulls are NPL (the only shape version 1 knew).
+Version 2 added ``configuration.hull.shape`` (issue 12) and the mission inputs (issue 13:
+Requirement ``payload_power``, ``power_via``, ``endurance_days``, ``deployment_days``;
+Configuration ``mission``; Fabric ``tensile_strength`` and ``helium_permeability``). Version-1
+files still load: their hulls are NPL (the only shape version 1 knew) and the mission inputs
+they lack take their defaults, which are off, so they give the same design as before.
 Readers are strict: unknown keys, wrong types, out-of-range values, or oversized input raise
 ``ValueError`` with a message naming the field; nothing is half-applied.
 """
@@ -33,6 +36,7 @@ from .inputs import (
     WindProfile,
 )
 from .materials import Fabric, TetherSpec
+from .mission import MissionSpec
 from .validation import check_name, shown_value
 
 FORMAT_DESIGN = "aerostat-design"
@@ -55,6 +59,7 @@ _NESTED: dict[str, type] = {
     "aero": AeroModel,
     "confluence": ConfluenceSpec,
     "wind_profile": WindProfile,
+    "mission": MissionSpec,
 }
 
 

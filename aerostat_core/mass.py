@@ -10,7 +10,8 @@ from .fins import FinGeometry
 from .geometry import HullGeometry, profile_quadrature
 
 #: Order of the breakdown items (also the CSV/table order).
-ITEM_NAMES = ("hull", "fins", "lifting gas", "miscellaneous", "payload", "tether")
+ITEM_NAMES = ("hull", "fins", "lifting gas", "miscellaneous", "payload", "tether", "battery",
+              "ballonet")
 
 
 @dataclass(frozen=True)
@@ -40,6 +41,8 @@ def mass_breakdown(
     misc_ratio: float,
     payload_mass: float,
     tether_mass,
+    battery_mass: float = 0.0,
+    ballonet_mass=0.0,
 ) -> MassBreakdown:
     """Mass budget of the aerostat.
 
@@ -63,6 +66,10 @@ def mass_breakdown(
         [kg].
     tether_mass : array_like
         [kg].
+    battery_mass : float
+        Onboard payload battery [kg], carried with the payload (aerostat_core.mission).
+    ballonet_mass : array_like
+        Ballonet fabric [kg], at the hull bottom below the centre of buoyancy (halfway down).
 
     Notes
     -----
@@ -82,6 +89,8 @@ def mass_breakdown(
         "miscellaneous": m_misc,
         "payload": m_pay,
         "tether": m_teth,
+        "battery": np.full_like(m_hull, float(battery_mass)),
+        "ballonet": np.asarray(ballonet_mass, dtype=float) * np.ones_like(m_hull),
     }
     zero = np.zeros_like(m_hull)
     positions = {
@@ -90,6 +99,8 @@ def mass_breakdown(
         "lifting gas": (hull.xi_cb, zero),
         "miscellaneous": (hull.xi_cb, -hull.b),
         "payload": (hull.xi_cb, -hull.b),
+        "battery": (hull.xi_cb, -hull.b),
+        "ballonet": (hull.xi_cb, -0.5 * hull.b),
     }
     carried = [k for k in ITEM_NAMES if k != "tether"]
     m_a = sum(items[k] for k in carried)
@@ -107,7 +118,7 @@ def mass_breakdown(
     m_one_fin = fins.mass / fins.count
     for zf in fins.z_fins:
         inertia = inertia + m_one_fin * ((fins.xi_centroid - xi_cg) ** 2 + (zf - z_cg) ** 2)
-    for k in ("miscellaneous", "payload"):
+    for k in ("miscellaneous", "payload", "battery", "ballonet"):
         xk, zk = positions[k]
         inertia = inertia + items[k] * ((xk - xi_cg) ** 2 + (zk - z_cg) ** 2)
     return MassBreakdown(

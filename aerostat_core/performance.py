@@ -30,6 +30,8 @@ FLAG_LABELS = {
     "weathervane": "aerodynamically unstable about the centre of volume (fins lose to the Munk "
                    "moment)",
     "fins_on_hull": "fin trailing edge behind the tail",
+    "envelope_stress": "envelope fabric strength below the safety factor times the load",
+    "endurance": "free lift after the endurance below the required share",
 }
 
 @dataclass(frozen=True)
@@ -65,10 +67,11 @@ def evaluate(req: Requirement, cfg: Configuration, af: Airframe, speed) -> Evalu
     tx = loads.drag * np.ones_like(eq.alpha)
     tz = (af.buoyancy - af.aerostat_weight + loads.lift) * np.ones_like(eq.alpha)
     profile = cfg.wind_profile
+    spec = cfg.tether if af.tether is None else af.tether  # as flown (power conductors)
     teth = solve_tether(
         lambda h: (tx, tz),
         af.tether_length,
-        cfg.tether,
+        spec,
         af.air_density,
         lambda z, h: profile_speed(profile, z, speed, h),
         af.tether_weight_per_length,
@@ -76,7 +79,7 @@ def evaluate(req: Requirement, cfg: Configuration, af: Airframe, speed) -> Evalu
         sheared=profile.kind != "uniform",
     )
     tmax = np.max(teth.tension, axis=0)
-    sf = cfg.tether.breaking_strength / np.maximum(tmax, 1e-9)
+    sf = spec.breaking_strength / np.maximum(tmax, 1e-9)
     wv = weathervane_slope(af, cfg.aero, eq.alpha, speed) * np.ones_like(eq.alpha)
     return Evaluation(af, speed, eq, loads.lift, tx, tz, teth, sf, wv)
 

@@ -8,7 +8,7 @@ import streamlit as st
 from aerostat_core import thesis_baseline
 from aerostat_core.io import design_to_json
 from aerostat_core.report import tether_profile_rows
-from app_ui import cache, plots, shapes_view, state, widgets
+from app_ui import cache, mission_view, plots, shapes_view, state, widgets
 from app_ui.plots import geometry_frame, mass_frame, performance_frame, performance_styler
 
 st.title("Aerostat design")
@@ -48,7 +48,7 @@ def _fmt(v: float, digits: int = 1) -> str:
     return f"{v:,.{digits}f}"
 
 
-TABS = ("Geometry", "3-D view", "Mass", "Performance", "Tether profiles")
+TABS = ("Geometry", "3-D view", "Mass", "Performance", "Tether profiles", "Mission")
 TAB_KEY = "design_tab"
 
 
@@ -150,6 +150,11 @@ def _tether_tab(rep: dict) -> None:
         st.plotly_chart(plots.tether_figure(rep, sorted(chosen) or default), key="tether_plot")
 
     _tether_panel()
+    s = rep["summary"]
+    st.caption(
+        f"Winch: line pull {s['winch_pull_N']:,.0f} N (largest winch tension, survival wind "
+        f"included), motor {s['winch_power_W']:,.0f} W; drum and reel-in time on the Mission tab."
+    )
     st.download_button(
         "Tether profiles (CSV)",
         data=lambda: cache.csv_bytes(tether_profile_rows(rep["tether"])),
@@ -347,3 +352,6 @@ with col_out:
     with tabs["Tether profiles"]:
         if tabs["Tether profiles"].open:
             _tether_tab(rep)
+    with tabs["Mission"]:
+        if tabs["Mission"].open:
+            mission_view.render(cache.cached_design(state.current_inputs_key()))

@@ -318,7 +318,8 @@ def system_from_design(design, *, segments: int = 20, damping_ratio: float = 1.0
     req = design.requirement
     hull = hull_from_airframe(af, cfg.aero, unsteady_wind_inertia=unsteady_wind_inertia,
                               **hull_options)
-    tether = TetherModel.from_spec(cfg.tether, af.tether_length, segments, damping_ratio)
+    spec = af.tether or cfg.tether  # as flown: with power conductors (aerostat_core.mission)
+    tether = TetherModel.from_spec(spec, af.tether_length, segments, damping_ratio)
     if axial_stiffness is not None:
         tether = replace(tether, axial_stiffness=float(axial_stiffness))
     if atmosphere == "constant":

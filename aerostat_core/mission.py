@@ -1,0 +1,578 @@
+"""What a mission needs beyond payload mass and altitude (issue 13): payload power, endurance,
+ballonet, envelope structure, survival wind, winch.
+
+The mission's demands are Requirement fields (``payload_power``, ``power_via``,
+``endurance_days``, ``deployment_days``; all off by default); the technology that meets them is
+:class:`MissionSpec` (``Configuration.mission``). Everything that changes a design feeds the
+one constraint table (aerostat_core.constraints) and the mass breakdown, so sizing and the
+optimiser respect it:
+
+* onboard battery -> mass item "battery"; power through the tether -> conductors added to the
+  tether (mass, diameter for drag, strength), see :func:`effective_tether`;
+* ballonet (``MissionSpec.ballonet`` "auto"/"on") -> mass item "ballonet";
+* endurance -> row ``endurance`` (free lift after ``endurance_days`` of permeation);
+* envelope -> rows ``envelope_stress`` (design wind) and ``survival_envelope_pressure``.
+
+The winch, top-up gas and the stay-up/reel-in verdict are reported (:func:`mission_report`),
+not constrained. This module imports no UI and never imports aerostat_core.inputs at import
+time (inputs imports :class:`MissionSpec` from here).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from . import constants as c
+from .atmosphere import isa
+from .ballonet import ballonet_fabric_mass, ballonet_fraction
+from .endurance import (
+    days_to_top_up,
+    helium_top_up,
+    lift_loss_after,
+    permeation_time_constant,
+    purity_after,
+)
+from .materials import POWER_TETHER_CONDUCTORS, TetherSpec
+from .power import Conductors, battery_mass, power_tether, size_conductors
+from .structure import allowable_pressure, membrane_loads, required_pressure
+from .validation import check_choice, check_int, check_number
+from .winch import Winch, size_winch
+
+POWER_ROUTES = ("onboard", "tether")
+BALLONET_MODES = ("off", "auto", "on")
+#: Largest finite number of days reported (inf is not valid JSON).
+DAYS_CAP = 1.0e6
+
+
+@dataclass(frozen=True)
+class MissionSpec:
+    """Technology that serves the mission (power, ballonet, envelope, winch).
+
+    Parameters
+    ----------
+    battery_energy_density : float
+        Pack-level specific energy of the onboard battery [Wh/kg], valid [20, 1000]. Default 150:
+        Li-ion packs (cells about 250 Wh/kg, packs 150-200 Wh/kg with wiring, case and
+        management; order of magnitude, ASSUMED).
+    battery_depth_of_discharge : float
+        Usable fraction of the rated energy [-], valid (0, 1]; 0.8 for long cycle life (ASSUMED).
+    battery_hours : float or None
+        Time between recharges [h], valid (0, 10000]; ``None``: 24 x ``endurance_days`` of the
+        requirement, or 24 h when it has no endurance.
+    supply_voltage : float
+        Ground supply voltage of a power tether [V], valid [12, 20000]; 400 V (ASSUMED).
+    power_loss_fraction : float
+        Allowed resistive loss / supply power of the tether conductors [-], valid (0, 0.5].
+    max_current_density : float
+        Conductor current-density ceiling [A/m2], valid [1e5, 5e7] (the conductor-temperature
+        limit; 5 A/mm2 for insulated copper in a bundle, ASSUMED).
+    insulation_thickness : float
+        Insulation wall of each conductor [m], valid [0, 0.005].
+    ballonet : {"off", "auto", "on"}
+        "off": volume reported, no ballonet built (the thesis design, and today's default);
+        "auto": built where the computed volume exceeds the thesis' 500 m rule; "on": built.
+    superheat : float
+        Day-time gas superheat at the operating altitude [K], valid [0, 40]; 10 K (ASSUMED,
+        clear-sky order of magnitude).
+    envelope_safety_factor : float
+        On the fabric tensile strength [-], valid [1, 20]; 4 (Carichner & Nicolai 2013).
+    pressure_dynamic_factor : float
+        Required internal pressure / dynamic pressure [-], valid [1, 3]; 1.2
+        (constants.PRESSURE_DYNAMIC_FACTOR).
+    winch_speed : float
+        Reel-in/out speed [m/s], valid (0, 5]; 0.3048 (60 ft/min, thesis §2.2.4).
+    winch_efficiency : float
+        Motor x drive efficiency [-], valid (0, 1]; 0.75 (ASSUMED: motor 0.85 x gearbox 0.9).
+    bend_radius_ratio : float
+        Tether minimum bend radius / tether diameter [-], valid [2, 100]; 10 (ASSUMED, common
+        for synthetic and electro-mechanical cables; use the cable data sheet).
+    drum_layers : int
+        Layers of tether on the drum, valid [1, 100]; 10.
+    """
+
+    battery_energy_density: float = c.BATTERY_ENERGY_DENSITY
+    battery_depth_of_discharge: float = c.BATTERY_DEPTH_OF_DISCHARGE
+    battery_hours: float | None = None
+    supply_voltage: float = c.POWER_TETHER_VOLTAGE
+    power_loss_fraction: float = c.POWER_TETHER_LOSS_FRACTION
+    max_current_density: float = c.MAX_CURRENT_DENSITY
+    insulation_thickness: float = 0.25e-3
+    ballonet: str = "off"
+    superheat: float = c.GAS_SUPERHEAT
+    envelope_safety_factor: float = c.ENVELOPE_SAFETY_FACTOR
+    pressure_dynamic_factor: float = c.PRESSURE_DYNAMIC_FACTOR
+    winch_speed: float = c.THESIS_WINCH_SPEED
+    winch_efficiency: float = c.WINCH_EFFICIENCY
+    bend_radius_ratio: float = c.TETHER_BEND_RADIUS_RATIO
+    drum_layers: int = 10
+
+    def __post_init__(self) -> None:
+        o = "MissionSpec"
+        check_number(o, "battery_energy_density", self.battery_energy_density, 20, 1000, "Wh/kg")
+        check_number(
+            o, "battery_depth_of_discharge", self.battery_depth_of_discharge, 0, 1, lo_open=True
+        )
+        if self.battery_hours is not None:
+            check_number(o, "battery_hours", self.battery_hours, 0, 10000, "h", lo_open=True)
+        check_number(o, "supply_voltage", self.supply_voltage, 12, 20000, "V")
+        check_number(o, "power_loss_fraction", self.power_loss_fraction, 0, 0.5, lo_open=True)
+        check_number(o, "max_current_density", self.max_current_density, 1e5, 5e7, "A/m2")
+        check_number(o, "insulation_thickness", self.insulation_thickness, 0, 0.005, "m")
+        check_choice(o, "ballonet", self.ballonet, BALLONET_MODES)
+        check_number(o, "superheat", self.superheat, 0, 40, "K")
+        check_number(o, "envelope_safety_factor", self.envelope_safety_factor, 1, 20)
+        check_number(o, "pressure_dynamic_factor", self.pressure_dynamic_factor, 1, 3)
+        check_number(o, "winch_speed", self.winch_speed, 0, 5, "m/s", lo_open=True)
+        check_number(o, "winch_efficiency", self.winch_efficiency, 0, 1, lo_open=True)
+        check_number(o, "bend_radius_ratio", self.bend_radius_ratio, 2, 100)
+        object.__setattr__(
+            self, "drum_layers", check_int(o, "drum_layers", self.drum_layers, 1, 100)
+        )
+
+
+# --- power -------------------------------------------------------------------------------------
+def battery_hours(req, spec: MissionSpec) -> float:
+    """Time between battery recharges [h] (see :attr:`MissionSpec.battery_hours`)."""
+    if spec.battery_hours is not None:
+        return float(spec.battery_hours)
+    return c.HOURS_PER_DAY * (float(req.endurance_days) if req.endurance_days > 0 else 1.0)
+
+
+def onboard_battery_mass(req, cfg) -> float:
+    """Battery mass [kg]: 0 unless the payload draws power from an onboard source."""
+    if req.payload_power <= 0 or req.power_via != "onboard":
+        return 0.0
+    m = cfg.mission
+    return float(
+        battery_mass(
+            req.payload_power,
+            battery_hours(req, m),
+            m.battery_energy_density,
+            m.battery_depth_of_discharge,
+        )
+    )
+
+
+def tether_conductors(req, cfg) -> tuple[Conductors | None, bool]:
+    """Conductors sized for power through the tether, and whether the configured tether's own
+    conductors (a catalogue power tether) already carry it. ``(None, False)`` when no power goes
+    through the tether."""
+    if req.payload_power <= 0 or req.power_via != "tether":
+        return None, False
+    m = cfg.mission
+    k = size_conductors(
+        float(req.payload_power),
+        float(req.altitude),
+        m.supply_voltage,
+        m.power_loss_fraction,
+        m.max_current_density,
+        m.insulation_thickness,
+    )
+    own = POWER_TETHER_CONDUCTORS.get(cfg.tether.name, 0.0)
+    return k, own >= k.area
+
+
+def effective_tether(req, cfg) -> TetherSpec:
+    """The tether as flown: the configured one, with a conductor pair bundled in when the payload
+    power goes through it and the tether has no conductors of its own large enough."""
+    k, own = tether_conductors(req, cfg)
+    if k is None or own:
+        return cfg.tether
+    t = cfg.tether
+    rho_l = t.linear_density + k.linear_density
+    d = float(np.sqrt(t.diameter**2 + 2.0 * k.insulated_diameter**2))
+    if rho_l > 1.0 or d > 0.05:
+        m = cfg.mission
+        raise ValueError(
+            f"Requirement.payload_power = {req.payload_power:g} W through {req.altitude:g} m of "
+            f"tether at MissionSpec.supply_voltage = {m.supply_voltage:g} V with "
+            f"power_loss_fraction = {m.power_loss_fraction:g} needs conductors of "
+            f"{1000 * k.linear_density:.0f} g/m (tether {1000 * rho_l:.0f} g/m, {1000 * d:.0f} mm);"
+            f" the tether model accepts up to 1000 g/m and 50 mm: raise the supply voltage or "
+            f"the allowed loss, or carry the power onboard"
+        )
+    return power_tether(t, k)
+
+
+# --- ballonet ----------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class BallonetState:
+    """fraction : needed ballonet volume / hull volume [-]; rule_fraction : the same at the
+    thesis' 500 m rule altitude (same site and superheat) [-]; needed : fraction > rule_fraction
+    (the 500 m rule); built : whether its fabric is in the mass breakdown."""
+
+    fraction: float
+    rule_fraction: float
+    needed: bool
+    built: bool
+
+
+def ballonet_state(req, cfg) -> BallonetState:
+    """Ballonet fraction at the operating altitude against the thesis' 500 m rule."""
+    sh = cfg.mission.superheat
+    top = min(req.site_elevation + c.BALLONET_RULE_ALTITUDE, c.ISA_TROPOPAUSE)
+    # site, operating altitude and the 500 m rule altitude in one ISA call
+    a = isa(np.array([req.site_elevation, req.site_elevation + req.altitude, top]), req.isa_offset)
+    p, t = a.pressure, a.temperature
+    f, f_rule = (float(x) for x in ballonet_fraction(p[0], t[0], p[1:], t[1:], sh))
+    needed = f > f_rule + 1e-12
+    mode = cfg.mission.ballonet
+    return BallonetState(f, f_rule, needed, mode == "on" or (mode == "auto" and needed))
+
+
+def ballonet_mass(req, cfg, hull_volume):
+    """Ballonet fabric mass [kg] (hull fabric areal density), 0 where none is built."""
+    if cfg.mission.ballonet == "off":  # the default: skip the three ISA calls in the sizing loop
+        return np.zeros(np.shape(hull_volume))
+    b = ballonet_state(req, cfg)
+    if not b.built:
+        return np.zeros(np.shape(hull_volume))
+    return ballonet_fabric_mass(
+        b.fraction * np.asarray(hull_volume, float), cfg.hull_fabric.areal_density
+    )
+
+
+# --- endurance ---------------------------------------------------------------------------------
+def _gas_densities(cfg, af):
+    """(air, pure lifting gas) densities at hull conditions [kg/m3]."""
+    gas = cfg.gas
+    if gas.density_model == "fixed":
+        return af.air_density, gas.fixed_density_value
+    p_hull = af.pressure + gas.superpressure
+    molar = c.M_HELIUM if gas.kind == "helium" else c.M_HYDROGEN
+    return p_hull / (c.R_AIR * af.temperature), p_hull * molar / (c.R_UNIVERSAL * af.temperature)
+
+
+def endurance_quantities(req, cfg, af) -> dict:
+    """Lift decay by permeation for an airframe batch.
+
+    Returns
+    -------
+    dict
+        tau [day], days_to_top_up [day] (capped at DAYS_CAP), g of the ``endurance`` row
+        ((required free lift + lift lost in endurance_days - free lift)/gross lift; -1 when no
+        endurance is required), margin [day].
+    """
+    h = af.hull
+    tau = permeation_time_constant(
+        h.volume, h.surface_area, cfg.hull_fabric.helium_permeability, af.temperature
+    )
+    rho_a, rho_p = _gas_densities(cfg, af)
+    k0 = cfg.gas.purity
+    need = req.free_lift_fraction * af.buoyancy
+    days = np.minimum(
+        days_to_top_up(af.free_lift - need, h.volume, af.g, rho_a, rho_p, k0, tau), DAYS_CAP
+    )
+    fb = np.maximum(np.abs(af.buoyancy), 1e-9)
+    d_req = float(req.endurance_days)
+    if d_req > 0:
+        lost = lift_loss_after(h.volume, af.g, rho_a, rho_p, k0, d_req, tau)
+        g = (need + lost - af.free_lift) / fb
+    else:
+        g = -np.ones(np.shape(days))
+    return {"tau": tau, "days_to_top_up": days, "g": g, "margin": days - d_req}
+
+
+# --- envelope structure ------------------------------------------------------------------------
+def structure_quantities(req, cfg, ev) -> dict:
+    """Envelope pressure and stress at the speeds of an evaluation (design and survival winds).
+
+    Returns
+    -------
+    dict of arrays (broadcast over designs and speeds)
+        pressure_required [Pa] (at the top of the hull: factor q + hydrostatic head, or the gas
+        superpressure if higher), moment [N m] (aerodynamic moment of hull + fins about the
+        centre of volume, |dM/dalpha alpha|, a linear estimate of the envelope bending moment),
+        hoop, longitudinal [N/m], strength_required (SF x the larger load) [N/m], strength
+        (fabric) [N/m], pressure_allowable [Pa] (largest pressure the fabric carries with SF
+        under that moment).
+    """
+    af = ev.airframe
+    m = cfg.mission
+    q = 0.5 * af.air_density * np.asarray(ev.speed, float) ** 2
+    p = required_pressure(
+        q, af.air_density, af.gas_density, af.g, af.hull.diameter, m.pressure_dynamic_factor
+    )
+    p = np.maximum(p, cfg.gas.superpressure)
+    moment = np.abs(ev.weathervane_slope * ev.equilibrium.alpha)
+    r = af.hull.b
+    hoop, long = membrane_loads(p, r, moment)
+    need = m.envelope_safety_factor * np.maximum(hoop, long)
+    strength = float(cfg.hull_fabric.tensile_strength)
+    allow = allowable_pressure(strength, m.envelope_safety_factor, r, moment)
+    return {
+        "pressure_required": p,
+        "moment": moment,
+        "hoop": hoop,
+        "longitudinal": long,
+        "strength_required": need,
+        "strength": strength,
+        "pressure_allowable": allow,
+    }
+
+
+def lift_decay(req, cfg, af, days_max: float, points: int = 31) -> dict:
+    """Purity and free lift versus day without top-up, for one (0-d) airframe.
+
+    Returns
+    -------
+    dict of ndarray
+        day [day], purity [-], free_lift_kg [kg] (k(t) and L_f(t) of aerostat_core.endurance),
+        required_kg [kg] (the free lift the requirement asks for).
+    """
+    h = af.hull
+    t = np.linspace(0.0, float(days_max), points)
+    tau = _scalar(
+        permeation_time_constant(
+            h.volume, h.surface_area, cfg.hull_fabric.helium_permeability, af.temperature
+        )
+    )
+    rho_a, rho_p = _gas_densities(cfg, af)
+    k0 = cfg.gas.purity
+    fl = _scalar(af.free_lift)
+    loss = np.asarray(
+        lift_loss_after(_scalar(h.volume), af.g, _scalar(rho_a), _scalar(rho_p), k0, t, tau), float
+    ).reshape(-1)
+    need = req.free_lift_fraction * _scalar(af.buoyancy) / af.g
+    return {
+        "day": t,
+        "purity": np.asarray(purity_after(k0, t, tau), float).reshape(-1),
+        "free_lift_kg": (fl - loss) / af.g,
+        "required_kg": np.full_like(t, need),
+    }
+
+
+# --- the report of one design ------------------------------------------------------------------
+@dataclass(frozen=True)
+class MissionReport:
+    """Mission outputs of one design (floats, SI; days in days, gas in m3 at 0 degC and 1 atm).
+
+    battery_mass [kg]; conductors (None without tether power); conductors_own (the configured
+    power tether's conductors suffice); tether (as flown); tether_mass [kg];
+    ballonet (BallonetState); ballonet_volume [m3]; ballonet_mass [kg];
+    permeation_tau [day]; days_to_top_up [day] (inf: never); purity_after_endurance [-];
+    helium_top_up [m3]; top_up_cost [USD]; deployment_days [day];
+    envelope (dict of structure quantities at the design wind, floats);
+    envelope_stress_margin : strength / required - 1 at the design wind [-];
+    survival_pressure_margin : allowable / required pressure - 1 at the survival wind [-];
+    survival_safety_factor [-] and its requirement; survival_tension : largest tether tension
+    at the survival wind [N] (against ``tether.breaking_strength``); stay_up : both survival
+    checks met;
+    reel_in_wind : lowest sweep speed at which either fails (None if none in the sweep) [m/s];
+    winch (Winch) sized for ``winch_pull`` [N], the largest winch tension over the sweep, the
+    design and the survival wind; decay : purity and free lift versus day without top-up
+    (:func:`lift_decay`).
+    """
+
+    battery_mass: float
+    conductors: Conductors | None
+    conductors_own: bool
+    tether: TetherSpec
+    tether_mass: float
+    ballonet: BallonetState
+    ballonet_volume: float
+    ballonet_mass: float
+    permeation_tau: float
+    days_to_top_up: float
+    purity_after_endurance: float
+    helium_top_up: float
+    top_up_cost: float
+    deployment_days: float
+    envelope: dict
+    envelope_stress_margin: float
+    survival_pressure_margin: float
+    survival_safety_factor: float
+    survival_safety_factor_required: float
+    stay_up: bool
+    reel_in_wind: float | None
+    winch_pull: float
+    winch: Winch
+    survival_tension: float = float("nan")
+    decay: dict | None = None
+
+    def rows(self) -> list[dict]:
+        """(group, quantity, value, unit) rows for tables and CSV."""
+        k = self.conductors
+        e = self.envelope
+        days = self.days_to_top_up
+        out = [
+            ("Power", "Onboard battery mass", self.battery_mass, "kg"),
+            (
+                "Power",
+                "Conductor copper area (each of 2)",
+                0.0 if k is None else k.area * 1e6,
+                "mm2",
+            ),
+            ("Power", "Conductor current", 0.0 if k is None else k.current, "A"),
+            ("Power", "Conductor loss", 0.0 if k is None else k.loss, "W"),
+            ("Power", "Tether as flown: mass per metre", 1000 * self.tether.linear_density, "g/m"),
+            ("Power", "Tether as flown: diameter", 1000 * self.tether.diameter, "mm"),
+            ("Power", "Tether as flown: breaking strength", self.tether.breaking_strength, "N"),
+            ("Power", "Tether mass", self.tether_mass, "kg"),
+            ("Endurance", "Purity decay time constant", min(self.permeation_tau, DAYS_CAP), "day"),
+            ("Endurance", "Days to top-up (free-lift margin kept)", min(days, DAYS_CAP), "day"),
+            ("Endurance", "Purity after the endurance", self.purity_after_endurance, "-"),
+            (
+                "Endurance",
+                f"Helium top-up over {self.deployment_days:g} days",
+                self.helium_top_up,
+                "m3",
+            ),
+            ("Endurance", "Top-up gas cost", self.top_up_cost, "USD"),
+            ("Ballonet", "Ballonet volume / hull volume", self.ballonet.fraction, "-"),
+            ("Ballonet", "Same at the 500 m rule altitude", self.ballonet.rule_fraction, "-"),
+            ("Ballonet", "Ballonet needed (500 m rule)", float(self.ballonet.needed), "yes=1"),
+            ("Ballonet", "Ballonet volume", self.ballonet_volume, "m3"),
+            ("Ballonet", "Ballonet fabric mass (in the mass breakdown)", self.ballonet_mass, "kg"),
+            ("Envelope", "Required internal pressure (design wind)", e["pressure_required"], "Pa"),
+            ("Envelope", "Hoop load", e["hoop"], "N/m"),
+            ("Envelope", "Longitudinal load", e["longitudinal"], "N/m"),
+            (
+                "Envelope",
+                "Required fabric strength (x safety factor)",
+                e["strength_required"],
+                "N/m",
+            ),
+            ("Envelope", "Fabric tensile strength", e["strength"], "N/m"),
+            (
+                "Envelope",
+                "Envelope stress margin (strength/required - 1)",
+                self.envelope_stress_margin,
+                "-",
+            ),
+            ("Survival", "Largest tether tension at the survival wind", self.survival_tension, "N"),
+            ("Survival", "Tether breaking strength", self.tether.breaking_strength, "N"),
+            (
+                "Survival",
+                "Tether safety factor at the survival wind",
+                self.survival_safety_factor,
+                "-",
+            ),
+            (
+                "Survival",
+                "Envelope pressure margin at the survival wind",
+                self.survival_pressure_margin,
+                "-",
+            ),
+            ("Survival", "Can stay up at the survival wind", float(self.stay_up), "yes=1"),
+            ("Winch", "Line pull (largest winch tension, survival included)", self.winch_pull, "N"),
+            ("Winch", "Reel speed", self.winch.speed, "m/s"),
+            ("Winch", "Motor power", self.winch.power, "W"),
+            ("Winch", "Drum diameter (from the bend radius)", self.winch.drum_diameter, "m"),
+            ("Winch", f"Drum length ({self.winch.layers} layers)", self.winch.drum_length, "m"),
+            (
+                "Winch",
+                "Reel-in time from the operating altitude",
+                self.winch.reel_time / 60.0,
+                "min",
+            ),
+        ]
+        return [{"group": g, "quantity": q, "value": float(v), "unit": u} for g, q, v, u in out]
+
+
+def _scalar(x) -> float:
+    return float(np.asarray(x, float).reshape(-1)[0])
+
+
+def mission_report(req, cfg, af, state, sweep_ev, gas_price: float) -> MissionReport:
+    """Mission outputs of one sized design.
+
+    Parameters
+    ----------
+    req, cfg : Requirement (resolved), Configuration
+    af : Airframe
+        0-d airframe of the design.
+    state : ConstraintState
+        The table at the design (its evaluation is at [design, survival] wind).
+    sweep_ev : Evaluation
+        The wind sweep (any speeds).
+    gas_price : float
+        [USD/m3].
+    """
+    from .constraints import NAMES  # noqa: PLC0415 - constraints imports this module's spec
+
+    k, own = tether_conductors(req, cfg)
+    tether = effective_tether(req, cfg)
+    b = ballonet_state(req, cfg)
+    vol = _scalar(af.hull.volume)
+    endq = endurance_quantities(req, cfg, af)
+    tau = _scalar(endq["tau"])
+    days = _scalar(endq["days_to_top_up"])
+    days = np.inf if days >= DAYS_CAP else days
+    purity = (
+        float(cfg.gas.purity * np.exp(-req.endurance_days / tau))
+        if np.isfinite(tau)
+        else float(cfg.gas.purity)
+    )
+    p_hull = _scalar(af.pressure) + cfg.gas.superpressure
+    top = _scalar(
+        helium_top_up(
+            af.hull.surface_area,
+            cfg.hull_fabric.helium_permeability,
+            cfg.gas.purity,
+            p_hull,
+            req.deployment_days,
+        )
+    )
+    ev2 = state.evaluation
+    sq = structure_quantities(req, cfg, ev2)
+    env = {
+        key: float(np.asarray(v * np.ones(np.shape(sq["hoop"])), float).reshape(2, -1)[0, 0])
+        for key, v in sq.items()
+    }
+    val = np.asarray(state.value).reshape(-1)
+    lim = np.asarray(state.limit).reshape(-1)
+    i_s = NAMES.index("survival_envelope_pressure")
+    i_sf = NAMES.index("survival_safety_factor")
+    p_margin = float(lim[i_s] / val[i_s] - 1.0) if val[i_s] > 0 else np.inf
+    sf_s, sf_req = float(val[i_sf]), float(lim[i_sf])
+    met = np.asarray(state.met).reshape(-1)
+    stay = bool(met[i_s] and met[i_sf])
+    # the lowest sweep speed at which the tether or the envelope gives out
+    sw = structure_quantities(req, cfg, sweep_ev)
+    sf_sweep = np.asarray(sweep_ev.safety_factor, float).reshape(-1)
+    ok_p = np.asarray(sw["pressure_allowable"] >= sw["pressure_required"]).reshape(-1)
+    bad = (sf_sweep < req.survival_safety_factor) | ~ok_p
+    speeds = np.asarray(sweep_ev.speed, float).reshape(-1)
+    reel = float(speeds[bad].min()) if bad.any() else None
+    pulls = [np.max(sweep_ev.tether.tension_winch), np.max(ev2.tether.tension_winch)]
+    pull = float(max(pulls))
+    m = cfg.mission
+    w = size_winch(
+        pull,
+        m.winch_speed,
+        m.winch_efficiency,
+        af.tether_length,
+        tether.diameter,
+        m.bend_radius_ratio,
+        m.drum_layers,
+    )
+    return MissionReport(
+        battery_mass=onboard_battery_mass(req, cfg),
+        conductors=k,
+        conductors_own=own,
+        tether=tether,
+        tether_mass=tether.linear_density * af.tether_length,
+        ballonet=b,
+        ballonet_volume=b.fraction * vol,
+        ballonet_mass=_scalar(af.mass.items["ballonet"]),
+        permeation_tau=tau,
+        days_to_top_up=days,
+        purity_after_endurance=purity,
+        helium_top_up=top,
+        top_up_cost=top * gas_price,
+        deployment_days=float(req.deployment_days),
+        envelope=env,
+        envelope_stress_margin=env["strength"] / env["strength_required"] - 1.0,
+        survival_pressure_margin=p_margin,
+        survival_safety_factor=sf_s,
+        survival_safety_factor_required=sf_req,
+        stay_up=stay,
+        reel_in_wind=reel,
+        winch_pull=pull,
+        winch=w,
+        survival_tension=float(np.max(np.asarray(ev2.tether.tension).reshape(-1, 2)[:, 1])),
+        decay=lift_decay(req, cfg, af, max(30.0, 2.0 * req.endurance_days)),
+    )
