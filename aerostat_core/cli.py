@@ -14,6 +14,8 @@ import sys
 from dataclasses import replace
 from pathlib import Path
 
+from .commands import add_design_options, add_subcommands, monte_carlo_summary
+from .commands import run as run_subcommand
 from .design import Design, design
 from .inputs import Requirement
 from .io import design_from_json, rows_to_csv
@@ -115,6 +117,8 @@ def _parser() -> argparse.ArgumentParser:
     d.add_argument("--csv", type=Path, help="write geometry, mass and performance CSV here")
     d.add_argument("--json", action="store_true",
                    help="print Design.summary() as JSON instead of the readable summary")
+    add_design_options(d)
+    add_subcommands(sub, d)
     return p
 
 
@@ -161,11 +165,23 @@ def _main(argv: list[str] | None) -> int:
     except ValueError as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2
+    if args.command != "design":
+        return run_subcommand(args, req, cfg)
     d = design(req, cfg)
+    try:
+        mc = monte_carlo_summary(d, args)
+    except ValueError as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return 2
     if args.json:
-        print(json.dumps(d.summary(), indent=2))
+        print(json.dumps({**d.summary(), **mc}, indent=2))
     else:
         print(format_summary(d))
+        if mc:
+            print(f"  Monte Carlo ({mc['monte_carlo_samples']} samples) at the design wind, 5-95 %:"
+                  f" blow-by {mc['blow_by_p05_m']:.1f}-{mc['blow_by_p95_m']:.1f} m, tension "
+                  f"{mc['tension_p05_N']:.0f}-{mc['tension_p95_N']:.0f} N, free lift "
+                  f"{mc['free_lift_p05_kg']:.2f}-{mc['free_lift_p95_kg']:.2f} kg")
     if args.csv is not None:
         try:
             args.csv.write_text(design_csv(d))
