@@ -127,10 +127,12 @@ class HourlyRecord:
 
     def durations(self) -> np.ndarray:
         """Hours each record stands for: the time to the next record (the last one: the median
-        step), capped at 1.5 median steps so that a gap in the record does not count as wind."""
+        step); a record followed by a gap (more than 1.5 median steps) stands for one median
+        step, so that the missing time does not count as wind."""
         dt = np.diff(self.time).astype("timedelta64[s]").astype(float) / 3600.0
         step = float(np.median(dt)) if dt.size else 1.0
-        return np.minimum(np.append(dt, step), 1.5 * step)
+        dt = np.append(dt, step)
+        return np.where(dt > 1.5 * step, step, dt)
 
     def gaps(self) -> np.ndarray:
         """True after record i when the next one is more than 1.5 median steps later."""
