@@ -11,7 +11,7 @@ Usage with a real cluster::
 
     from dask.distributed import Client
     client = Client("tcp://scheduler-host:8786")   # or the CLI: --dask tcp://scheduler-host:8786
-    mc = monte_carlo(d, 100_000_000, seed=1, client=client, chunk=20_000)
+    mc = monte_carlo(d, 100_000_000, seed=1, client=client)  # blocks of 2000: ~160 MB each
 """
 
 from __future__ import annotations
