@@ -291,7 +291,8 @@ class MonteCarloResult:
     free_lift : (3,) [kg] (static: the same at every wind); blow_by_design, tension_design : (3,)
     at the design wind; p_met : {constraint: probability}; p_feasible : every constraint met;
     n, seed, chunk; design_wind [m/s]; specs : the uncertainties used (after ``spread``);
-    samples : the raw block outputs concatenated (dict of arrays).
+    samples : the raw block outputs concatenated (dict of arrays; empty when the blocks were
+    reduced to histograms, ``keep_samples=False``).
     """
 
     speeds: np.ndarray
@@ -358,6 +359,7 @@ def monte_carlo(
     speeds=None,
     client=None,
     chunk: int = DEFAULT_CHUNK,
+    keep_samples: bool | None = None,
 ) -> MonteCarloResult:
     """Seeded Monte Carlo of the built aerostat ``d`` over the uncertain inputs.
 
@@ -378,6 +380,10 @@ def monte_carlo(
         Map the blocks over a Dask cluster (same result).
     chunk : int
         Samples per block, valid [1, 1e6].
+    keep_samples : bool, optional
+        Keep every sample (exact percentiles) or reduce each block to histograms
+        (:data:`HIST_BINS` bins per output; for runs too large to hold); default: keep up to
+        :data:`KEEP_SAMPLES_MAX` samples.
 
     Returns
     -------
@@ -399,19 +405,37 @@ def monte_carlo(
     args = [
         (req, d.configuration, d.volume, specs, s, k, speeds, spread) for s, k in zip(seeds, sizes)
     ]
-    blocks = map_blocks(sample_block, args, client=client)
-    samples = {k: np.concatenate([b[k] for b in blocks]) for k in blocks[0]}
+    keep = n <= KEEP_SAMPLES_MAX if keep_samples is None else bool(keep_samples)
     pct = np.array(PERCENTILES)
-    met = samples["met"]
+    if keep:
+        blocks = map_blocks(sample_block, args, client=client)
+        samples = {k: np.concatenate([b[k] for b in blocks]) for k in blocks[0]}
+        bands = {k: np.percentile(samples[k], pct, axis=0) for k in BAND_KEYS}
+        met_count = samples["met"].sum(axis=0)
+        feasible_count = int(samples["met"].all(axis=1).sum())
+    else:
+        # bins from the first block (run here, so every scheduler uses the same bins), then
+        # histograms per block: memory per block, not per sample
+        pilot = sample_block(*args[0])
+        edges = histogram_edges(pilot)
+        parts = [reduce_block(edges, pilot)] + map_blocks(
+            sample_reduced, [(edges, *a) for a in args[1:]], client=client
+        )
+        counts = {k: sum(p["counts"][k] for p in parts) for k in BAND_KEYS}
+        bands = {k: histogram_percentiles(edges[k], counts[k], pct) for k in BAND_KEYS}
+        bands = {k: b[:, 0] if pilot[k].ndim == 1 else b for k, b in bands.items()}
+        met_count = sum(p["met"] for p in parts)
+        feasible_count = int(sum(p["feasible"] for p in parts))
+        samples = {}
     return MonteCarloResult(
         speeds=speeds,
-        blow_by=np.percentile(samples["blow_by"], pct, axis=0),
-        tension=np.percentile(samples["tension"], pct, axis=0),
-        free_lift=np.percentile(samples["free_lift"], pct),
-        blow_by_design=np.percentile(samples["blow_by_design"], pct),
-        tension_design=np.percentile(samples["tension_design"], pct),
-        p_met={name: float(met[:, k].mean()) for k, name in enumerate(NAMES)},
-        p_feasible=float(met.all(axis=1).mean()),
+        blow_by=bands["blow_by"],
+        tension=bands["tension"],
+        free_lift=bands["free_lift"],
+        blow_by_design=bands["blow_by_design"],
+        tension_design=bands["tension_design"],
+        p_met={name: float(met_count[k] / n) for k, name in enumerate(NAMES)},
+        p_feasible=feasible_count / n,
         n=n,
         seed=seed,
         chunk=chunk,
@@ -419,6 +443,62 @@ def monte_carlo(
         specs=tuple(replace(u, sigma=u.sigma * spread) for u in specs),
         samples=samples,
     )
+
+
+#: Outputs with percentile bands (keys of :func:`sample_block`).
+BAND_KEYS = ("blow_by", "tension", "free_lift", "blow_by_design", "tension_design")
+#: Above this many samples only histograms leave the blocks (a 10^8 run would need ~20 GB of
+#: samples); below it the samples are kept and the percentiles are exact.
+KEEP_SAMPLES_MAX = 1_000_000
+#: Histogram bins per output column; the range is the first block's range widened by its span
+#: on each side (values beyond go to the end bins), so a bin is ~1/7000 of the spread.
+HIST_BINS = 20_000
+
+
+def histogram_edges(block: dict) -> dict:
+    """Bin edges per output column from one block's samples: {key: array (columns, bins + 1)}."""
+    out = {}
+    for k in BAND_KEYS:
+        x = np.asarray(block[k], float).reshape(block[k].shape[0], -1)
+        lo, hi = x.min(axis=0), x.max(axis=0)
+        span = np.maximum(hi - lo, 1e-9 * np.maximum(np.abs(hi), 1.0))
+        out[k] = np.linspace(lo - span, hi + span, HIST_BINS + 1, axis=-1)
+    return out
+
+
+def reduce_block(edges: dict, block: dict) -> dict:
+    """Histogram counts per output column, constraint-met counts and feasible count of a block."""
+    counts = {}
+    for k in BAND_KEYS:
+        x = np.asarray(block[k], float).reshape(block[k].shape[0], -1)
+        e = edges[k]
+        c = np.empty((x.shape[1], HIST_BINS), np.int64)
+        for j in range(x.shape[1]):
+            i = np.clip(np.searchsorted(e[j], x[:, j], side="right") - 1, 0, HIST_BINS - 1)
+            c[j] = np.bincount(i, minlength=HIST_BINS)
+        counts[k] = c
+    met = np.asarray(block["met"], bool)
+    return {"counts": counts, "met": met.sum(axis=0), "feasible": int(met.all(axis=1).sum())}
+
+
+def sample_reduced(edges: dict, *args) -> dict:
+    """:func:`sample_block` reduced to histograms on the worker (:func:`reduce_block`)."""
+    return reduce_block(edges, sample_block(*args))
+
+
+def histogram_percentiles(edges: np.ndarray, counts: np.ndarray, pct) -> np.ndarray:
+    """Percentiles ``pct`` [%] from histograms (columns, bins), linear within a bin; the shape
+    of ``np.percentile(x, pct, axis=0)`` for the column layout of the samples."""
+    cdf = np.cumsum(counts, axis=1) / counts.sum(axis=1, keepdims=True)
+    out = np.empty((len(pct), counts.shape[0]))
+    for j in range(counts.shape[0]):
+        for i, p in enumerate(pct):
+            q = p / 100.0
+            b = int(np.searchsorted(cdf[j], q, side="left"))
+            c0 = cdf[j][b - 1] if b > 0 else 0.0
+            f = (q - c0) / max(cdf[j][b] - c0, 1e-300)
+            out[i, j] = edges[j][b] + f * (edges[j][b + 1] - edges[j][b])
+    return out
 
 
 def mission_requirement(req: Requirement, rules: str) -> Requirement:

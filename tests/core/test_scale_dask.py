@@ -50,3 +50,8 @@ def test_envelope_on_a_cluster_equals_one_process(client, d):
 def test_map_blocks_keeps_order(client):
     assert map_blocks(pow, [(2, k) for k in range(6)], client=client) == [2**k for k in range(6)]
     assert map_blocks(pow, [(3, 2)]) == [9]
+
+
+def test_histogram_mode_on_a_cluster_equals_one_process(client, d):
+    kw = dict(n=2500, seed=4, chunk=600, speeds=[9.0], keep_samples=False)
+    assert monte_carlo(d, **kw).summary() == monte_carlo(d, client=client, **kw).summary()
