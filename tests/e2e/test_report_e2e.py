@@ -66,3 +66,27 @@ def test_report_opens_offline_with_sections_and_plots(browser: Browser, report_f
     pdf = page.pdf(format="A4")
     assert pdf[:4] == b"%PDF" and len(pdf) > 50_000
     context.close()
+
+
+def test_envelope_tab_and_one_click_report_in_the_app(app_page, console_errors):
+    """The Design page's Envelope tab draws the heat map and the flyable time; the report
+    button downloads the same self-contained report."""
+    from playwright.sync_api import expect
+
+    from tests.e2e.helpers import assert_no_exception, screenshot, wait_for_rerun
+
+    page = app_page
+    page.get_by_role("tab", name="Envelope").click()
+    wait_for_rerun(page)
+    assert_no_exception(page, "Envelope tab")
+    expect(page.locator(".js-plotly-plot").filter(visible=True).first).to_be_visible(timeout=30_000)
+    expect(page.get_by_text("Time flyable [%]")).to_be_visible()
+    screenshot(page, "design_envelope")
+    with page.expect_download(timeout=60_000) as info:
+        page.get_by_role("button", name="Design report (HTML)").click()
+    assert info.value.suggested_filename == "aerostat-report.html"
+    text = info.value.path().read_text()
+    for sid in SECTIONS:
+        assert f'<section id="{sid}">' in text, sid
+    assert text.count("<svg") == 4 and "<script" not in text
+    assert console_errors == []
