@@ -182,6 +182,10 @@ def _main(argv: list[str] | None) -> int:
                   f" blow-by {mc['blow_by_p05_m']:.1f}-{mc['blow_by_p95_m']:.1f} m, tension "
                   f"{mc['tension_p05_N']:.0f}-{mc['tension_p95_N']:.0f} N, free lift "
                   f"{mc['free_lift_p05_kg']:.2f}-{mc['free_lift_p95_kg']:.2f} kg")
+            for r in mc["rule_sets"]:
+                print(f"    rules {r['rules']:<9s}{r['volume_m3']:7.1f} m3, blow-by "
+                      f"{r['blow_by_p05_m']:.1f}-{r['blow_by_p95_m']:.1f} m at "
+                      f"{r['design_wind_m_s']:g} m/s")
     if args.csv is not None:
         try:
             args.csv.write_text(design_csv(d))

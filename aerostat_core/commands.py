@@ -144,9 +144,12 @@ def monte_carlo_summary(d: Design, args) -> dict:
     """The Monte Carlo keys for ``design --json`` (empty without ``--monte-carlo``)."""
     if not getattr(args, "monte_carlo", None):
         return {}
-    from .uncertainty import monte_carlo
+    from .uncertainty import monte_carlo, rule_set_spread
 
-    return monte_carlo(d, args.monte_carlo, args.seed, client=args.dask).summary()
+    out = monte_carlo(d, args.monte_carlo, args.seed, client=args.dask).summary()
+    # the same mission under every rule set, beside it (at most 2000 samples each)
+    out["rule_sets"] = rule_set_spread(d.requirement, n=min(args.monte_carlo, 2000), seed=args.seed)
+    return out
 
 
 def _client(args):
@@ -219,7 +222,10 @@ def _envelope(args, d: Design, site, client) -> int:
     else:
         print(f"Operating envelope of the {d.volume:.1f} m3 aerostat: {env.points} points")
         k = int(np.argmin(np.abs(env.altitude - d.requirement.altitude)))
-        print(f"  flyable up to {lw[0, k]:.1f} m/s at {env.altitude[k]:g} m")
+        if np.isfinite(lw[0, k]):
+            print(f"  flyable up to {lw[0, k]:.1f} m/s at {env.altitude[k]:g} m")
+        else:
+            print(f"  not flyable at {env.altitude[k]:g} m at any wind of the grid")
         print(f"  time flyable    {ft.percent_time_flyable:6.1f} % ({ft.source})")
         print(f"  longest outage  {ft.longest_outage_h:6.1f} h")
         print(

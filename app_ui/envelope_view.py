@@ -88,10 +88,20 @@ def cached_rules_spread(inputs_json: str, seed: int) -> list[dict]:
 
 
 @st.cache_data(max_entries=8, show_spinner=False)
-def cached_report_html(inputs_json: str) -> bytes:
-    """The HTML design report (default site, 2000 Monte Carlo samples)."""
+def cached_report_html(
+    inputs_json: str,
+    site_json: str | None = None,
+    csv_bytes: bytes | None = None,
+    n: int = 2000,
+    seed: int = 0,
+) -> bytes:
+    """The HTML design report with the tab's site wind and Monte Carlo (defaults: the default
+    Weibull site, 2000 samples)."""
     req, _ = inputs_from_dict(json.loads(inputs_json))
-    return build_report(cache.cached_design(inputs_json), base_requirement=req).encode("utf-8")
+    site = None if site_json is None else _site(site_json, csv_bytes)
+    return build_report(
+        cache.cached_design(inputs_json), site, n_monte_carlo=n, seed=seed, base_requirement=req
+    ).encode("utf-8")
 
 
 def envelope_figure(env: Envelope) -> go.Figure:
@@ -210,10 +220,22 @@ def bands_figure(mc: dict, rep: dict) -> go.Figure:
 
 
 def report_button(inputs_json: str) -> None:
-    """One-click download of the HTML design report (built when clicked)."""
+    """One-click download of the HTML design report (built when clicked), with the site wind
+    and Monte Carlo size of the Envelope tab once set there."""
+    site = st.session_state.get(SITE_KEY) or {}
+    run = st.session_state.get(MC_KEY) or {"n": 2000, "seed": 0}
+
+    def build() -> bytes:
+        try:
+            return cached_report_html(
+                inputs_json, site.get("json"), site.get("csv"), run["n"], run["seed"]
+            )
+        except ValueError:  # a bad site file (its message is on the tab): the default site
+            return cached_report_html(inputs_json, None, None, run["n"], run["seed"])
+
     st.download_button(
         "Design report (HTML)",
-        data=lambda: cached_report_html(inputs_json),
+        data=build,
         file_name="aerostat-report.html",
         mime="text/html",
         on_click="ignore",
@@ -221,7 +243,8 @@ def report_button(inputs_json: str) -> None:
         key="dl_report",
         help="Self-contained report (works offline, prints to PDF): requirement, rule set, "
         "geometry, mass, performance, tether, constraint margins, envelope, flyable time, "
-        "uncertainty, validation and version.",
+        "uncertainty, validation and version; uses the Envelope tab's site wind and Monte "
+        "Carlo size once set there.",
     )
 
 

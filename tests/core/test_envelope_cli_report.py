@@ -84,6 +84,7 @@ def test_design_monte_carlo_keys(capsys):
         assert out[f"{q}_p05_{u}"] < out[f"{q}_p95_{u}"]
     assert out["blow_by_p05_m"] < out["blow_by_at_design_wind_m"] < out["blow_by_p95_m"]
     assert out["monte_carlo_samples"] == 400
+    assert [r["rules"] for r in out["rule_sets"]] == ["practice", "thesis"]  # shown beside it
     d = design(Requirement())
     assert out["blow_by_p95_m"] == monte_carlo(d, 400, 5).summary()["blow_by_p95_m"]
 
