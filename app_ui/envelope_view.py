@@ -28,6 +28,8 @@ from .plots import PALETTE, WIND_AXIS
 
 SITE_KEY = "envelope_site"  # session key: {"kind": "weibull", ...} or {"kind": "csv", ...}
 MC_KEY = "envelope_mc"  # session key: {"n": N, "seed": S} once the user ran it
+#: Markdown characters escaped in messages that quote the user's file (shown as plain text).
+_MD = str.maketrans({ch: "\\" + ch for ch in "\\`*_{}[]()#+-.!|<>$~"})
 #: Monte Carlo sizes offered in the app (the CLI and API take any size).
 MC_SIZES = (1000, 5000, 10000, 20000)
 
@@ -304,12 +306,12 @@ def _flyable(inputs_json: str) -> None:
         "csv": None,
     }
     if "error" in site:
-        st.error(site["error"], icon=":material/error:")
+        st.error(site["error"].translate(_MD), icon=":material/error:")
         return
     try:
         f = cached_flyable(inputs_json, site["json"], site["csv"])
-    except ValueError as exc:
-        st.error(str(exc), icon=":material/error:")
+    except ValueError as exc:  # quotes the file's cell: never rendered as markup
+        st.error(str(exc).translate(_MD), icon=":material/error:")
         return
     c = st.columns(3)
     c[0].metric(

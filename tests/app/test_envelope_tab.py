@@ -49,8 +49,9 @@ def test_bad_wind_csv_gets_a_message_not_a_traceback(at):
         "shear_exponent": 0.14,
         "target": 0.95,
     }
-    bad = b"time,speed\n2009-01-01 00:00,gusty\n2009-01-01 01:00,3\n"
+    bad = b"time,speed\n2009-01-01 00:00,**gusty**\n2009-01-01 01:00,3\n"
     at.session_state["envelope_site"] = {"json": json.dumps(spec), "csv": bad}
     at.run()
     assert not at.exception
-    assert any("row 1: 'gusty' is not a wind speed" in m for m in messages(at, "error"))
+    # the cell is quoted as plain text, its markdown escaped
+    assert any(r"row 1: '\*\*gusty\*\*' is not a wind speed" in m for m in messages(at, "error"))

@@ -6,6 +6,8 @@ import math
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 from scipy.special import gamma
 
 from aerostat_core import Requirement, design
@@ -129,3 +131,15 @@ def test_bad_site_parameters_are_named():
         WeibullSite(shape=0.1)
     with pytest.raises(ValueError, match="WeibullSite.scale"):
         WeibullSite(scale=0.0)
+
+
+@settings(max_examples=25, deadline=None)
+@given(k=st.floats(0.8, 5.0), c=st.floats(0.5, 20.0), alpha=st.floats(0.0, 0.4))
+def test_weibull_percent_is_the_cdf_and_falls_with_a_windier_site(d, k, c, alpha):
+    site = WeibullSite(shape=k, scale=c, shear_exponent=alpha)
+    ft = flyable_time(d, site, years=1)
+    ((lo, hi),) = ft.intervals
+    assert ft.percent_time_flyable == pytest.approx(100 * float(site.cdf(hi, 300.0)), abs=1e-9)
+    windier = flyable_time(d, WeibullSite(shape=k, scale=1.2 * c, shear_exponent=alpha), years=1)
+    assert windier.percent_time_flyable <= ft.percent_time_flyable + 1e-12
+    assert 0.0 <= ft.longest_outage_h <= 8760.0
