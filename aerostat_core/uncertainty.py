@@ -396,6 +396,13 @@ def monte_carlo(
     chunk = check_int("monte_carlo", "chunk", chunk, 1, 1_000_000)
     spread = check_number("monte_carlo", "spread", spread, 0, 10)
     specs = DEFAULT_UNCERTAINTIES if specs is None else tuple(specs)
+    if d.configuration.wind_profile.kind != "power":  # say so where the spread is listed
+        specs = tuple(
+            replace(u, label=f"{u.label} (no effect: {d.configuration.wind_profile.kind} profile)")
+            if u.name == "wind_profile_exponent"
+            else u
+            for u in specs
+        )
     req = d.requirement
     speeds = band_speeds(req) if speeds is None else np.asarray(speeds, float).reshape(-1)
     if speeds.size == 0 or np.any(speeds <= 0) or np.any(speeds > 60):
