@@ -82,7 +82,9 @@ def _num(v) -> str:
     if isinstance(v, int | np.integer):
         return str(int(v))
     if isinstance(v, float | np.floating):
-        v = float(v)
+        v = float(v) + 0.0  # no "-0"
+        if v == 0:
+            return "0"
         if not np.isfinite(v):
             return _e(v)
         if v != 0 and (abs(v) >= 1e5 or abs(v) < 1e-3):
@@ -179,7 +181,9 @@ def performance_figure(d: Design, mc: MonteCarloResult | None = None):
     b.plot(p.wind_speed, p.tension_top, "-", color="C1", label="tension at confluence point")
     b.plot(p.wind_speed, p.tension_winch, "-", color="C2", label="tension at winch")
     sf_t = float(d.configuration.tether.breaking_strength) / float(req.min_tether_safety_factor)
-    b.axhline(sf_t, color="C3", ls="--", lw=0.8, label="breaking strength / safety factor")
+    t_max = float(np.max(p.tension_top))
+    if sf_t <= 2.0 * t_max:  # else it would flatten the curves: the table gives the factor
+        b.axhline(sf_t, color="C3", ls="--", lw=0.8, label="breaking strength / safety factor")
     if mc is not None:
         a.fill_between(
             mc.speeds, mc.blow_by[0], mc.blow_by[2], color="C0", alpha=0.25, label="5-95 % band"
