@@ -18,9 +18,9 @@ from .geometry import HullGeometry, hull_geometry, shape_integrals
 from .helikite import KiteGeometry, kite_geometry
 from .inputs import Configuration, Requirement
 from .mass import MassBreakdown, mass_breakdown
-from .shapes import check_fineness, shape_info
 from .materials import TetherSpec
 from .mission import ballonet_mass, effective_tether, onboard_battery_mass
+from .shapes import check_fineness, shape_info
 
 
 @dataclass(frozen=True)

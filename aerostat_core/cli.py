@@ -15,6 +15,8 @@ import sys
 from dataclasses import replace
 from pathlib import Path
 
+from .commands import add_design_options, add_subcommands, monte_carlo_summary
+from .commands import run as run_subcommand
 from .design import Design, design
 from .dynamics import cli as simulate_cli
 from .inputs import Requirement
@@ -141,6 +143,8 @@ def _parser() -> argparse.ArgumentParser:
     d.add_argument("--gores-svg", type=Path, help="write gore and fin patterns as SVG here")
     d.add_argument("--gores-csv", type=Path, help="write the gore half-widths CSV here")
     simulate_cli.add_parser(sub)  # python -m aerostat_core simulate (aerostat_core.dynamics.cli)
+    add_design_options(d)
+    add_subcommands(sub, d)
     return p
 
 
@@ -227,8 +231,27 @@ def _main(argv: list[str] | None) -> int:
     except ValueError as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2
+    if args.command != "design":
+        return run_subcommand(args, req, cfg)
     d = design(req, cfg)
-    print(summary_json(d) if args.json else format_summary(d))
+    try:
+        mc = monte_carlo_summary(d, args)
+    except ValueError as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return 2
+    if args.json:
+        print(json.dumps({**json.loads(summary_json(d)), **mc}, indent=2))
+    else:
+        print(format_summary(d))
+        if mc:
+            print(f"  Monte Carlo ({mc['monte_carlo_samples']} samples) at the design wind, 5-95 %:"
+                  f" blow-by {mc['blow_by_p05_m']:.1f}-{mc['blow_by_p95_m']:.1f} m, tension "
+                  f"{mc['tension_p05_N']:.0f}-{mc['tension_p95_N']:.0f} N, free lift "
+                  f"{mc['free_lift_p05_kg']:.2f}-{mc['free_lift_p95_kg']:.2f} kg")
+            for r in mc["rule_sets"]:
+                print(f"    rules {r['rules']:<9s}{r['volume_m3']:7.1f} m3, blow-by "
+                      f"{r['blow_by_p05_m']:.1f}-{r['blow_by_p95_m']:.1f} m at "
+                      f"{r['design_wind_m_s']:g} m/s")
     try:
         for line in _write_exports(args, d):
             print(line, file=sys.stderr if args.json else sys.stdout)

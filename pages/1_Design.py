@@ -8,7 +8,7 @@ import streamlit as st
 from aerostat_core import thesis_baseline
 from aerostat_core.io import design_to_json
 from aerostat_core.report import tether_profile_rows
-from app_ui import cache, mission_view, plots, shapes_view, state, widgets
+from app_ui import cache, envelope_view, mission_view, plots, shapes_view, state, widgets
 from app_ui.plots import geometry_frame, mass_frame, performance_frame, performance_styler
 
 st.title("Aerostat design")
@@ -48,7 +48,7 @@ def _fmt(v: float, digits: int = 1) -> str:
     return f"{v:,.{digits}f}"
 
 
-TABS = ("Geometry", "3-D view", "Mass", "Performance", "Tether profiles", "Mission")
+TABS = ("Geometry", "3-D view", "Mass", "Performance", "Tether profiles", "Mission", "Envelope")
 TAB_KEY = "design_tab"
 
 
@@ -324,6 +324,7 @@ with col_out:
             "Save case", on_click=_save_case, icon=":material/bookmark_add:", width="stretch"
         )
     case_box = st.container()  # always present: the tabs below keep their place
+    envelope_view.report_button(state.current_inputs_key())
     fb = st.session_state.pop("case_feedback", None)
     if fb:
         with case_box:
@@ -355,3 +356,6 @@ with col_out:
     with tabs["Mission"]:
         if tabs["Mission"].open:
             mission_view.render(cache.cached_design(state.current_inputs_key()))
+    with tabs["Envelope"]:
+        if tabs["Envelope"].open:
+            envelope_view.render(state.current_inputs_key(), rep)

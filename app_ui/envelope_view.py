@@ -1,0 +1,395 @@
+"""UI of the Design page's Envelope tab: operating envelope heat map with the limit boundaries,
+flyable time at a site, Monte Carlo bands with the rule-set spread, and the HTML report button.
+
+Physics lives in :mod:`aerostat_core.envelope`, :mod:`aerostat_core.site_wind`,
+:mod:`aerostat_core.uncertainty` and :mod:`aerostat_core.html_report`; this module caches their
+results per inputs (JSON text keys) and draws them.
+"""
+
+from __future__ import annotations
+
+import json
+from typing import Any
+
+import numpy as np
+import pandas as pd
+import plotly.graph_objects as go
+import streamlit as st
+
+from aerostat_core.constraints import BY_NAME
+from aerostat_core.envelope import ENVELOPE_NAMES, Envelope, operating_envelope
+from aerostat_core.html_report import build_report
+from aerostat_core.io import inputs_from_dict
+from aerostat_core.site_wind import MAX_CSV_BYTES, WeibullSite, flyable_time, read_wind_csv
+from aerostat_core.uncertainty import monte_carlo, rule_set_spread
+
+from . import cache
+from .plots import PALETTE, WIND_AXIS
+
+SITE_KEY = "envelope_site"  # session key: {"kind": "weibull", ...} or {"kind": "csv", ...}
+MC_KEY = "envelope_mc"  # session key: {"n": N, "seed": S} once the user ran it
+#: Markdown characters escaped in messages that quote the user's file (shown as plain text).
+_MD = str.maketrans({ch: "\\" + ch for ch in "\\`*_{}[]()#+-.!|<>$~"})
+#: Monte Carlo sizes offered in the app (the CLI and API take any size).
+MC_SIZES = (1000, 5000, 10000, 20000)
+
+
+@st.cache_data(max_entries=32, show_spinner=False)
+def cached_envelope(inputs_json: str) -> Envelope:
+    """:func:`operating_envelope` of the design of ``inputs_json`` (default axes)."""
+    return operating_envelope(cache.cached_design(inputs_json))
+
+
+def _site(site_json: str, csv_bytes: bytes | None):
+    spec = json.loads(site_json)
+    if spec["kind"] == "csv":
+        return read_wind_csv(csv_bytes or b"", spec["reference_height"], spec["shear_exponent"])
+    return WeibullSite(
+        spec["shape"], spec["scale"], spec["reference_height"], spec["shear_exponent"]
+    )
+
+
+@st.cache_data(max_entries=32, show_spinner=False)
+def cached_flyable(inputs_json: str, site_json: str, csv_bytes: bytes | None) -> dict:
+    """:func:`flyable_time` summary for the design and the site (raises ValueError)."""
+    spec = json.loads(site_json)
+    ft = flyable_time(
+        cache.cached_design(inputs_json),
+        _site(site_json, csv_bytes),
+        target_availability=spec["target"],
+    )
+    return ft.summary()
+
+
+@st.cache_data(max_entries=16, show_spinner=False)
+def cached_monte_carlo(inputs_json: str, n: int, seed: int):
+    """:func:`monte_carlo` of the design (bands and probabilities)."""
+    mc = monte_carlo(cache.cached_design(inputs_json), n, seed)
+    return {
+        "summary": mc.summary(),
+        "speeds": mc.speeds,
+        "blow_by": mc.blow_by,
+        "tension": mc.tension,
+        "specs": [
+            {
+                "Input": u.label,
+                "1-sigma": u.sigma,
+                "Kind": "relative" if u.relative else "absolute",
+                "Source": u.source,
+            }
+            for u in mc.specs
+        ],
+    }
+
+
+@st.cache_data(max_entries=16, show_spinner=False)
+def cached_rules_spread(inputs_json: str, seed: int) -> list[dict]:
+    """:func:`rule_set_spread` of the mission of ``inputs_json``."""
+    req, _ = inputs_from_dict(json.loads(inputs_json))
+    return rule_set_spread(req, n=2000, seed=seed)
+
+
+@st.cache_data(max_entries=8, show_spinner=False)
+def cached_report_html(
+    inputs_json: str,
+    site_json: str | None = None,
+    csv_bytes: bytes | None = None,
+    n: int = 2000,
+    seed: int = 0,
+) -> bytes:
+    """The HTML design report with the tab's site wind and Monte Carlo (defaults: the default
+    Weibull site, 2000 samples)."""
+    req, _ = inputs_from_dict(json.loads(inputs_json))
+    site = None if site_json is None else _site(site_json, csv_bytes)
+    return build_report(
+        cache.cached_design(inputs_json), site, n_monte_carlo=n, seed=seed, base_requirement=req
+    ).encode("utf-8")
+
+
+def envelope_figure(env: Envelope) -> go.Figure:
+    """Heat map of the largest constraint value g (binding constraint in the hover) over wind x
+    altitude, a g = 0 contour per constraint that crosses the map, and the design point."""
+    mg = np.clip(env.max_g[0], -1.0, 1.0)
+    names = env.binding_names()[0]
+    labels = np.vectorize(lambda n: BY_NAME[n].label)(names)
+    units = np.vectorize(lambda n: BY_NAME[n].unit)(names)
+    text = np.char.add(
+        np.char.add(labels, ": margin "),
+        np.char.add(np.char.mod("%.3g ", env.binding_margin[0]), units),
+    )
+    traces: list[dict] = [
+        {
+            "type": "heatmap",
+            "x": env.wind.tolist(),
+            "y": env.altitude.tolist(),
+            "z": mg.tolist(),
+            "zmin": -1,
+            "zmax": 1,
+            "colorscale": "RdYlGn",
+            "reversescale": True,
+            "text": text.tolist(),
+            "name": "largest g",
+            "hovertemplate": "%{x:.1f} m/s, %{y:.0f} m<br>%{text}<br>g = %{z:.3f}<extra></extra>",
+            "colorbar": {"title": {"text": "largest g"}},
+        }
+    ]
+    for k, name in enumerate(ENVELOPE_NAMES):
+        gk = env.g[0, :, :, k]
+        if gk.shape[0] > 1 and gk.min() < 0 < gk.max():
+            traces.append(
+                {
+                    "type": "contour",
+                    "x": env.wind.tolist(),
+                    "y": env.altitude.tolist(),
+                    "z": gk.tolist(),
+                    "showscale": False,
+                    "name": BY_NAME[name].label,
+                    "contours": {"start": 0, "end": 0, "size": 1, "coloring": "lines"},
+                    "line": {"color": PALETTE[k % len(PALETTE)], "width": 2},
+                    "colorscale": [[0, PALETTE[k % len(PALETTE)]], [1, PALETTE[k % len(PALETTE)]]],
+                    "showlegend": True,
+                    "hoverinfo": "skip",
+                }
+            )
+    traces.append(
+        {
+            "type": "scatter",
+            "x": [env.design_wind],
+            "y": [env.design_altitude],
+            "mode": "markers",
+            "name": "design point",
+            "marker": {"symbol": "star", "size": 14, "color": "black"},
+        }
+    )
+    return go.Figure(
+        {
+            "data": traces,
+            "layout": {
+                "title": {
+                    "text": "Operating envelope: binding constraint (lines: limit boundaries)"
+                },
+                "xaxis": {"title": {"text": WIND_AXIS}},
+                "yaxis": {"title": {"text": "Altitude = tether length [m]"}},
+                "legend": {"orientation": "h", "y": -0.25},
+                "height": 520,
+                "margin": {"l": 60, "r": 20, "t": 50, "b": 50},
+            },
+        }
+    )
+
+
+def bands_figure(mc: dict, rep: dict) -> go.Figure:
+    """5-95 % bands of blow-by and tension versus wind, with the design's curves."""
+    from plotly.subplots import make_subplots
+
+    fig = make_subplots(rows=1, cols=2, subplot_titles=("Blow-by [m]", "Top tension [N]"))
+    u = np.asarray(mc["speeds"], float)
+    for col, key, perf in ((1, "blow_by", "blow_by"), (2, "tension", "tension_top")):
+        band = np.asarray(mc[key], float)
+        fig.add_scatter(
+            x=np.r_[u, u[::-1]],
+            y=np.r_[band[2], band[0][::-1]],
+            fill="toself",
+            line={"width": 0},
+            fillcolor="rgba(31,95,168,0.25)",
+            name="5-95 %",
+            showlegend=col == 1,
+            row=1,
+            col=col,
+            hoverinfo="skip",
+        )
+        fig.add_scatter(
+            x=u,
+            y=band[1],
+            name="median",
+            line={"color": PALETTE[0]},
+            showlegend=col == 1,
+            row=1,
+            col=col,
+        )
+        fig.add_scatter(
+            x=rep["perf"]["wind_speed"],
+            y=rep["perf"][perf],
+            name="design",
+            line={"color": "black", "dash": "dot"},
+            showlegend=col == 1,
+            row=1,
+            col=col,
+        )
+        fig.update_xaxes(title_text=WIND_AXIS, row=1, col=col)
+    fig.update_layout(height=380, margin={"l": 60, "r": 20, "t": 40, "b": 50})
+    return fig
+
+
+def report_button(inputs_json: str) -> None:
+    """One-click download of the HTML design report (built when clicked), with the site wind
+    and Monte Carlo size of the Envelope tab once set there."""
+    site = st.session_state.get(SITE_KEY) or {}
+    run = st.session_state.get(MC_KEY) or {"n": 2000, "seed": 0}
+
+    def build() -> bytes:
+        try:
+            return cached_report_html(
+                inputs_json, site.get("json"), site.get("csv"), run["n"], run["seed"]
+            )
+        except ValueError:  # a bad site file (its message is on the tab): the default site
+            return cached_report_html(inputs_json, None, None, run["n"], run["seed"])
+
+    st.download_button(
+        "Design report (HTML)",
+        data=build,
+        file_name="aerostat-report.html",
+        mime="text/html",
+        on_click="ignore",
+        icon=":material/description:",
+        key="dl_report",
+        help="Self-contained report (works offline, prints to PDF): requirement, rule set, "
+        "geometry, mass, performance, tether, constraint margins, envelope, flyable time, "
+        "uncertainty, validation and version; uses the Envelope tab's site wind and Monte "
+        "Carlo size once set there.",
+    )
+
+
+def _site_form() -> None:
+    with st.form("site_form", border=True):
+        st.markdown("**Site wind**")
+        kind = st.radio("Source", ["Weibull", "Hourly CSV"], horizontal=True, key="site_kind")
+        c = st.columns(4)
+        k = c[0].number_input("Weibull k [-]", 0.5, 10.0, 2.0, 0.1, key="site_k")
+        cc = c[1].number_input("Weibull c [m/s]", 0.1, 40.0, 6.0, 0.5, key="site_c")
+        zr = c[2].number_input("Reference height [m]", 1.0, 1000.0, 10.0, 1.0, key="site_zref")
+        al = c[3].number_input(
+            "Shear exponent [-]", 0.0, 0.6, round(1 / 7, 3), 0.01, key="site_alpha"
+        )
+        target = st.slider("Target availability [%]", 50.0, 99.9, 95.0, 0.1, key="site_target")
+        up = st.file_uploader(
+            "Hourly wind CSV (timestamp, speed [m/s])", type=["csv"], key="site_csv"
+        )
+        if st.form_submit_button("Compute flyable time", icon=":material/air:"):
+            spec: dict[str, Any] = {
+                "kind": "csv" if kind == "Hourly CSV" else "weibull",
+                "shape": k,
+                "scale": cc,
+                "reference_height": zr,
+                "shear_exponent": al,
+                "target": target / 100.0,
+            }
+            data = None
+            if spec["kind"] == "csv":
+                if up is None:
+                    st.session_state[SITE_KEY] = {"error": "choose a wind CSV file first"}
+                    return
+                if up.size > MAX_CSV_BYTES:
+                    st.session_state[SITE_KEY] = {
+                        "error": f"wind CSV is {up.size} bytes, larger than the "
+                        f"{MAX_CSV_BYTES} allowed"
+                    }
+                    return
+                data = up.getvalue()
+            st.session_state[SITE_KEY] = {"json": json.dumps(spec, sort_keys=True), "csv": data}
+
+
+def _flyable(inputs_json: str) -> None:
+    _site_form()
+    site = st.session_state.get(SITE_KEY) or {
+        "json": json.dumps(
+            {
+                "kind": "weibull",
+                "shape": 2.0,
+                "scale": 6.0,
+                "reference_height": 10.0,
+                "shear_exponent": 1 / 7,
+                "target": 0.95,
+            },
+            sort_keys=True,
+        ),
+        "csv": None,
+    }
+    if "error" in site:
+        st.error(site["error"].translate(_MD), icon=":material/error:")
+        return
+    try:
+        f = cached_flyable(inputs_json, site["json"], site["csv"])
+    except ValueError as exc:  # quotes the file's cell: never rendered as markup
+        st.error(str(exc).translate(_MD), icon=":material/error:")
+        return
+    c = st.columns(3)
+    c[0].metric(
+        "Time flyable [%]",
+        f"{f['percent_time_flyable']:.1f}",
+        help=f"Share of the time the wind at {f['site_altitude_m']:g} m lies in the "
+        "flyable winds "
+        + ", ".join(f"{a:.1f}-{b:.1f}" for a, b in f["flyable_winds_m_s"])
+        + " m/s.",
+    )
+    c[1].metric(
+        "Longest outage [h]",
+        f"{f['longest_outage_h']:.0f}",
+        help="Longest run of hours that cannot fly (Weibull: mean yearly longest "
+        "run of simulated hours; CSV: in the record).",
+    )
+    c[2].metric(
+        f"Design wind for {100 * f['target_availability']:g} % [m/s]",
+        f"{f['design_wind_for_target_m_s']:.1f}",
+        help="Wind at the aerostat not exceeded that share of the time: size for it "
+        "to fly that often.",
+    )
+
+
+def _uncertainty(inputs_json: str, rep: dict) -> None:
+    with st.form("mc_form", border=False):
+        c = st.columns([1, 1, 1], vertical_alignment="bottom")
+        n = c[0].selectbox("Monte Carlo samples", MC_SIZES, index=2, key="mc_n")
+        seed = c[1].number_input("Seed", 0, 2**31 - 1, 0, 1, key="mc_seed")
+        if c[2].form_submit_button("Run Monte Carlo", icon=":material/casino:"):
+            st.session_state[MC_KEY] = {"n": int(n), "seed": int(seed)}
+    run = st.session_state.get(MC_KEY)
+    if not run:
+        st.caption(
+            "Bands over drag coefficients, fabric areal density, purity, tether drag and "
+            "wind-profile exponent: press Run Monte Carlo."
+        )
+        return
+    mc = cached_monte_carlo(inputs_json, run["n"], run["seed"])
+    s = mc["summary"]
+    c = st.columns(4)
+    c[0].metric("Blow-by 5-95 % [m]", f"{s['blow_by_p05_m']:.1f}-{s['blow_by_p95_m']:.1f}")
+    c[1].metric("Tension 5-95 % [N]", f"{s['tension_p05_N']:.0f}-{s['tension_p95_N']:.0f}")
+    c[2].metric("Free lift 5-95 % [kg]", f"{s['free_lift_p05_kg']:.2f}-{s['free_lift_p95_kg']:.2f}")
+    c[3].metric("P(all limits met)", f"{100 * s['probability_feasible']:.0f} %")
+    st.plotly_chart(bands_figure(mc, rep), key="mc_bands")
+    t1, t2 = st.columns([1, 1.6])
+    t1.dataframe(
+        pd.DataFrame(
+            [{"Constraint": BY_NAME[k].label, "P(met)": v} for k, v in s["probability_met"].items()]
+        ),
+        hide_index=True,
+        key="mc_probabilities",
+    )
+    t2.dataframe(pd.DataFrame(mc["specs"]), hide_index=True, key="mc_specs")
+    st.markdown("**Rule sets, same mission** (each sized under its own limits, 2000 samples)")
+    rows = cached_rules_spread(inputs_json, run["seed"])
+    st.dataframe(pd.DataFrame(rows), hide_index=True, key="mc_rules")
+
+
+def render(inputs_json: str, rep: dict) -> None:
+    """The Envelope tab."""
+    env = cached_envelope(inputs_json)
+    st.plotly_chart(envelope_figure(env), key="envelope_map")
+    lw = env.limit_wind()[0]
+    st.caption(
+        f"{env.points} points for the built {env.volume:.1f} m³ aerostat (tether length "
+        "= altitude, length limits scaled with it). Colour: the largest normalised "
+        "constraint value g (> 0: a limit is broken); hover for the binding constraint "
+        "and its margin."
+    )
+    st.dataframe(
+        pd.DataFrame({"Altitude [m]": env.altitude, "Flyable up to [m/s]": lw}),
+        hide_index=True,
+        height=220,
+        key="envelope_limits",
+    )
+    st.subheader("Flyable time", anchor=False)
+    _flyable(inputs_json)
+    st.subheader("Uncertainty", anchor=False)
+    _uncertainty(inputs_json, rep)
