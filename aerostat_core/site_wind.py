@@ -3,7 +3,7 @@
 The site wind is either a Weibull distribution of the hourly mean speed at a reference height
 (:class:`WeibullSite`) or an hourly record with timestamps (:func:`read_wind_csv`, the kind of
 data the thesis sizes against: Mersing, Jan 2009, thesis Figure 3.3). Either is moved to the
-aerostat's height with the power law U(h) = U(z_ref) (h / z_ref)^alpha (Hellmann; methods.md
+aerostat's height with the power law U(h) = U(z_ref) (h / z_ref)^alpha (Hellmann; docs/methods.md
 §1.2), which keeps the Weibull shape k and scales c by the same factor.
 
 The aerostat can fly at wind U when every constraint of the envelope is met at U
@@ -36,7 +36,7 @@ from .validation import check_number
 #: Default hourly lag-1 autocorrelation of the (Gaussian-transformed) hourly mean wind [-]:
 #: of the order of 0.9 for hourly data (Brown, Katz & Murphy 1984); a site's record supersedes it.
 HOURLY_AUTOCORRELATION = 0.9
-#: Power-law shear exponent of open terrain (1/7; methods.md §1.2).
+#: Power-law shear exponent of open terrain (1/7; docs/methods.md §1.2).
 OPEN_TERRAIN_SHEAR = 1.0 / 7.0
 #: Largest wind CSV read [bytes] and rows (22 years of hourly data).
 MAX_CSV_BYTES = 10_000_000

@@ -14,7 +14,7 @@ Default spreads (one sigma) and their sources:
   (Hoerner 1965, *Fluid-Dynamic Drag*, ch. 6);
 * hull cross-flow drag (C_dc)_h: 20 % relative - the least known term of the Jones & DeLaurier
   model (Jones & DeLaurier 1983, J. Aircraft 20(2); values 0.25-0.45 are fitted to different
-  hulls; methods.md §1.7 uses 0.32);
+  hulls; docs/methods.md §1.7 uses 0.32);
 * fin zero-lift drag C_D0: 25 % relative - flat-plate skin friction plus seams and rigging,
   Hoerner 1965 ch. 2 (no aerostat fin measurement found);
 * fabric areal density: 5 % relative, hull and fins together (one fabric lot) - the +-5 % weight
