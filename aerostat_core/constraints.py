@@ -160,8 +160,8 @@ def wind_quantities(req: Requirement, cfg: Configuration, ev: Evaluation) -> dic
     shape = np.broadcast_shapes(np.shape(ev.equilibrium.alpha), np.shape(ev.tether.blow_by))
     one = np.ones(shape)
     # moment slopes scale with q at the speed itself: normalise by that q (1 m/s in calm air,
-    # where only the buoyancy pendulum acts and the weathervane row is not checked)
-    u = np.where(ev.speed > 0, ev.speed, 1.0)
+    # where only the buoyancy pendulum acts and the weathervane row is not checked; 1 cm/s floor)
+    u = np.where(ev.speed > 0, np.maximum(ev.speed, 1e-2), 1.0)
     q = 0.5 * af.air_density * u**2
     norm = q * af.hull.reference_area * af.hull.length
     cma = ev.equilibrium.moment_slope / norm * one

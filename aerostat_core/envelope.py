@@ -81,7 +81,7 @@ def point_state(req: Requirement, cfg: Configuration, volume: float, wind) -> tu
     af = build_airframe(req, cfg, float(volume))
     ev = evaluate(req, cfg, af, wind)
     wq = wind_quantities(req, cfg, ev)
-    sq = static_quantities(req, af)
+    sq = static_quantities(req, af, cfg)
     # The table normalises the moment slopes with q at max(U, 1 m/s) while the slopes scale with
     # q at U, which below 1 m/s shrinks C_m_alpha by (U / 1 m/s)^2 and fails a stable hull on the
     # weathervane margin near calm. C_m_alpha of a moment ~ q does not depend on U: undo it.

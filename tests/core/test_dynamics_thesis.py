@@ -16,7 +16,7 @@ from aerostat_core.dynamics.thesis import (
     comparison_rows,
     run_thesis_case,
 )
-from aerostat_core.optimize import OptimisationProblem, solve
+from aerostat_core.optimize import DEFAULT_BOUNDS, OptimisationProblem, solve
 from aerostat_core.presets import THESIS_OPTIMUM, thesis_optimised_label
 
 CLI_KEYS = {
@@ -34,8 +34,11 @@ def test_one_thesis_optimised_design_matches_the_optimiser():
     """presets.THESIS_OPTIMUM is what the optimiser returns for the thesis preset (SLSQP), and
     the Dynamics page, the CLI and cases.thesis_design() all use it."""
     r = solve(OptimisationProblem(*thesis_baseline()), "slsqp", "quick")
+    # the optimum sits in a flat valley (fin area against fin position at equal weathervane
+    # margin): the mass agrees to 0.1 %, the variables to 10 % of their bound ranges
+    assert r.objective == pytest.approx(design(*thesis_optimised()).total_mass, rel=1e-3)
     for k, v in THESIS_OPTIMUM.items():
-        assert r.x[k] == pytest.approx(v, rel=0.01, abs=0.01)
+        assert r.x[k] == pytest.approx(v, abs=0.1 * np.ptp(DEFAULT_BOUNDS[k]))
     d = design(*thesis_optimised())
     assert float(d.volume) == pytest.approx(r.design["volume_m3"], rel=0.01)
     for other in (cases.thesis_design(), design_of(default_request())):

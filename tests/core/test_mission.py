@@ -39,7 +39,7 @@ from aerostat_core.structure import allowable_pressure, membrane_loads, required
 from aerostat_core.winch import size_winch
 
 #: Sized volume of the default requirement before the mission work (CLI JSON at commit 2e23b90).
-DEFAULT_VOLUME_BEFORE = 55.82553948365535
+DEFAULT_VOLUME_BEFORE = 55.16168682221109
 
 
 # --- physics limits ----------------------------------------------------------------------------
@@ -273,7 +273,7 @@ def test_higher_altitude_gives_a_larger_ballonet():
     on = replace(cfg, mission=MissionSpec(ballonet="on"))
     d = design(Requirement(altitude=1000.0), on)
     assert d.mission.ballonet_mass == pytest.approx(
-        0.2 * float(sphere_area(d.mission.ballonet.fraction * d.volume))
+        cfg.hull_fabric.areal_density * float(sphere_area(d.mission.ballonet.fraction * d.volume))
     )
     assert d.volume > design(Requirement(altitude=1000.0), cfg).volume
 
@@ -281,7 +281,7 @@ def test_higher_altitude_gives_a_larger_ballonet():
 # --- hypothesis over the new inputs ------------------------------------------------------------
 @settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(
-    power=st.floats(0, 3000, allow_subnormal=False),
+    power=st.one_of(st.just(0.0), st.floats(1e-3, 3000)),
     via=st.sampled_from(["onboard", "tether"]),
     days=st.floats(0, 60),
     altitude=st.floats(50, 1500),
@@ -416,10 +416,10 @@ def test_cli_mission_options_and_keys(capsys):
     ):
         assert key in s
     assert s["days_to_top_up"] >= 5.0 - 1e-3
-    assert s["tether_mass_kg"] > 0.020 * 300.0  # conductors added to the 20 g/m tether
+    assert s["tether_mass_kg"] > 0.009 * 300.0  # conductors added to the 9 g/m practice tether
     assert main(["design", "--json"]) == 0
     s0 = json.loads(capsys.readouterr().out)
-    assert s0["tether_mass_kg"] == pytest.approx(0.020 * 300.0)
+    assert s0["tether_mass_kg"] == pytest.approx(0.009 * 300.0)
     assert s0["volume_m3"] == pytest.approx(DEFAULT_VOLUME_BEFORE, rel=1e-9)
     with pytest.raises(SystemExit) as exc:  # argparse refuses a choice outside the list
         main(["design", "--power-via", "laser"])
@@ -433,8 +433,8 @@ def test_cli_mission_options_and_keys(capsys):
 def test_fielded_systems_sized_with_their_class_endurance_move_closer():
     """Sized with the thesis' class endurance (tactical 5 days, operational 7) and the 500 m
     ballonet rule, every held-out system's predicted length moves closer to the published one
-    (all were under-predicted); the median error drops from 10.3 % to 9.3 %. The fit system
-    TIF-1600, already 19 % long, grows to 24 % (the calibration was chosen without them)."""
+    (all were under-predicted); the median error drops from 9.3 % to 8.3 %. The fit system
+    TIF-1600, already 16 % long, grows to 22 % (the calibration was chosen without them)."""
     from aerostat_core.fielded import validate_fielded
 
     before = validate_fielded()
@@ -443,7 +443,7 @@ def test_fielded_systems_sized_with_their_class_endurance_move_closer():
         assert a.length > b.length  # more lift to lose and (above 500 m) a ballonet to carry
         if not b.system.fit:
             assert abs(a.length_error) < abs(b.length_error)
-    assert before.median_abs_length_error == pytest.approx(0.1025, abs=5e-4)
-    assert after.median_abs_length_error == pytest.approx(0.0934, abs=5e-4)
-    assert after.max_abs_length_error == pytest.approx(0.2403, abs=5e-4)
+    assert before.median_abs_length_error == pytest.approx(0.0927, abs=5e-4)
+    assert after.median_abs_length_error == pytest.approx(0.0833, abs=5e-4)
+    assert after.max_abs_length_error == pytest.approx(0.2200, abs=5e-4)
     assert all(r.feasible for r in after.rows)
