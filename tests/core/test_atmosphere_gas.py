@@ -11,15 +11,9 @@ from aerostat_core.gas import gas_density
 HEIGHTS = np.linspace(0.0, 11000.0, 111)
 
 
-@pytest.mark.parametrize(
-    "field, amb",
-    [
-        ("density", "density"),
-        ("pressure", "pressure"),
-        ("temperature", "temperature"),
-        ("viscosity", "dynamic_viscosity"),
-    ],
-)
+@pytest.mark.parametrize("field, amb", [("density", "density"), ("pressure", "pressure"),
+                                        ("temperature", "temperature"),
+                                        ("viscosity", "dynamic_viscosity")])
 def test_isa_matches_ambiance(field, amb):
     # predicted: an independent ISA implementation, 0-11 km, within 1e-5 relative
     ours = getattr(isa(HEIGHTS), field)
@@ -47,8 +41,7 @@ def test_pure_helium_density_matches_methods_check_values():
     for h, ref in ((0.0, 0.1693), (300.0, 0.1645)):
         a = isa(h)
         assert gas_density(LiftingGas(purity=1.0), a.pressure, a.temperature) == pytest.approx(
-            ref, abs=1e-4
-        )
+            ref, abs=1e-4)
 
 
 def test_impurity_and_superpressure_make_gas_heavier_and_hydrogen_is_lighter():

@@ -53,9 +53,8 @@ def test_mass_balance_closes(baseline):
     rows = baseline.mass_rows()
     assert sum(r["mass_kg"] for r in rows[:-1]) == pytest.approx(rows[-1]["mass_kg"], rel=1e-12)
     g = baseline.airframe.g
-    assert baseline.buoyancy == pytest.approx(
-        baseline.total_mass * g + baseline.free_lift, rel=1e-12
-    )
+    assert baseline.buoyancy == pytest.approx(baseline.total_mass * g + baseline.free_lift,
+                                              rel=1e-12)
 
 
 def test_performance_table_shape_and_trends(baseline):
@@ -76,9 +75,8 @@ def test_performance_table_shape_and_trends(baseline):
 
 def test_equilibrium_moment_about_confluence_point_is_zero(baseline):
     p = baseline.performance
-    m = moment_about_confluence(
-        baseline.airframe, baseline.configuration.aero, np.radians(p.alpha_eq), p.wind_speed
-    )
+    m = moment_about_confluence(baseline.airframe, baseline.configuration.aero,
+                                np.radians(p.alpha_eq), p.wind_speed)
     scale = float(baseline.airframe.buoyancy * baseline.airframe.hull.length)
     assert np.max(np.abs(m)) < 1e-9 * scale
 
@@ -95,12 +93,8 @@ def test_sized_volume_meets_the_blow_by_limit_exactly():
 
 @pytest.mark.parametrize(
     "change, larger",
-    [
-        ({"payload_mass": 30.0}, True),
-        ({"altitude": 500.0, "blow_by_limit": 30.0}, True),
-        ({"blow_by_limit": 60.0}, False),
-        ({"isa_offset": 15.0}, True),
-    ],
+    [({"payload_mass": 30.0}, True), ({"altitude": 500.0, "blow_by_limit": 30.0}, True),
+     ({"blow_by_limit": 60.0}, False), ({"isa_offset": 15.0}, True)],
 )
 def test_sized_volume_trends(change, larger):
     req, cfg = thesis_baseline()
@@ -182,16 +176,14 @@ def test_bad_input_message_shows_value_and_range():
 def test_trim_outside_the_usual_range_is_still_found(offset, drop):
     from aerostat_core import ConfluenceSpec, HullSpec
 
-    cfg = Configuration(
-        confluence=ConfluenceSpec(xi_offset=offset, drop_ratio=drop), hull=HullSpec(volume=200.0)
-    )
+    cfg = Configuration(confluence=ConfluenceSpec(xi_offset=offset, drop_ratio=drop),
+                        hull=HullSpec(volume=200.0))
     d = design(Requirement(), cfg)
     ok = ~d.performance.flags["unstable"]
     assert ok[0] and ok[:10].all()  # calm and light wind: a stable trim exists and is found
     assert abs(d.performance.alpha_eq[0]) > 30.0  # outside the first search grid
-    m = moment_about_confluence(
-        d.airframe, cfg.aero, np.radians(d.performance.alpha_eq[ok]), d.performance.wind_speed[ok]
-    )
+    m = moment_about_confluence(d.airframe, cfg.aero, np.radians(d.performance.alpha_eq[ok]),
+                                d.performance.wind_speed[ok])
     assert np.max(np.abs(m)) < 1e-6 * float(d.airframe.buoyancy * d.airframe.hull.length)
 
 

@@ -93,11 +93,9 @@ def test_v2_equilibrium_matches_static_engine(design, system, speed):
     assert d["z_top"] == pytest.approx(row["flying_height_m"], rel=5e-3)
     assert math.degrees(y[b + 2]) == pytest.approx(row["alpha_eq_deg"], rel=1e-2, abs=1e-3)
     assert math.hypot(d["tension_top_x"], d["tension_top_z"]) == pytest.approx(
-        row["tension_top_N"], rel=5e-3
-    )
+        row["tension_top_N"], rel=5e-3)
     assert math.hypot(d["tension_winch_x"], d["tension_winch_z"]) == pytest.approx(
-        row["tension_winch_N"], rel=5e-3
-    )
+        row["tension_winch_N"], rel=5e-3)
 
 
 def test_v3_zero_wind(design, system):
@@ -110,15 +108,13 @@ def test_v3_zero_wind(design, system):
     assert d["tension_top_z"] == pytest.approx(net, rel=1e-9)
     w_line = af.tether_weight_per_length * af.tether_length
     assert d["tension_winch_z"] == pytest.approx(net - w_line, rel=1e-9)
-    assert math.degrees(y[system.hull_index + 2]) == pytest.approx(
-        _row(design, 0.0)["alpha_eq_deg"], abs=1e-6
-    )
+    assert math.degrees(y[system.hull_index + 2]) == pytest.approx(_row(design, 0.0)["alpha_eq_deg"],
+                                                                   abs=1e-6)
 
 
 def test_v1_steady_run_does_not_drift(design, system):
-    res = simulate(
-        system, WindScenario.steady(10.0), 100.0, guess=engine_guess(system, design, 10.0)
-    )
+    res = simulate(system, WindScenario.steady(10.0), 100.0,
+                   guess=engine_guess(system, design, 10.0))
     assert res.ok, res.message
     for name, tol in (("x_C", 1e-3), ("z_C", 1e-3), ("theta", 0.01)):
         s = res.signal(name)
@@ -127,12 +123,8 @@ def test_v1_steady_run_does_not_drift(design, system):
 
 def test_v2_long_run_reaches_engine_steady_state(design, system):
     """Start at the 5 m/s trim, ramp to 10 m/s over 5 s, run 300 s: final state = engine at 10."""
-    res = simulate(
-        system,
-        WindScenario(SpeedSchedule.step(5.0, 10.0, 10.0, 5.0)),
-        300.0,
-        guess=engine_guess(system, design, 5.0),
-    )
+    res = simulate(system, WindScenario(SpeedSchedule.step(5.0, 10.0, 10.0, 5.0)), 300.0,
+                   guess=engine_guess(system, design, 5.0))
     assert res.ok, res.message
     row = _row(design, 10.0)
     assert res.signal("x_C")[-1] == pytest.approx(row["blow_by_m"], rel=5e-3)
@@ -146,9 +138,8 @@ def _energy_system(munk="kirchhoff", damping=0.0, drag=False, aero=False):
     hull = ellipsoid_hull(mass=90.0, cg=(-0.3, 0.6), confluence=(0.3, 3.5), rho=1.19)
     if not aero:
         hull = hull.aero_off(munk)
-    teth = TetherModel(
-        length=320.0, segments=10, damping_ratio=damping, drag=drag, axial_stiffness=1e5
-    )
+    teth = TetherModel(length=320.0, segments=10, damping_ratio=damping, drag=drag,
+                       axial_stiffness=1e5)
     return DynamicSystem(hull, teth, g=9.81, atmosphere=Atmosphere(1.19))
 
 
@@ -171,13 +162,8 @@ def test_v4_energy_conserved_and_converges_with_rtol():
     e_eq = system.energy(yeq)
     drifts = []
     for rtol in (1e-5, 1e-6):
-        opt = SolverOptions(
-            rtol=rtol,
-            atol_position=rtol,
-            atol_velocity=rtol,
-            atol_angle=rtol * 1e-2,
-            output_interval=1.0,
-        )
+        opt = SolverOptions(rtol=rtol, atol_position=rtol, atol_velocity=rtol,
+                            atol_angle=rtol * 1e-2, output_interval=1.0)
         res = simulate(system, field, 200.0, opt, initial_state=y0)
         assert res.ok, res.message
         e = np.array([system.energy(v) for v in res.y])
@@ -195,13 +181,9 @@ def _zero_wind_decay(design, **options):
     y[b + 3] += 0.5
     y[b + 4] += 0.05
     y[b + 5] += 0.02
-    res = simulate(
-        system,
-        field,
-        100.0,
-        SolverOptions(rtol=1e-7, atol_position=1e-7, atol_velocity=1e-7, output_interval=0.25),
-        initial_state=y,
-    )
+    res = simulate(system, field, 100.0, SolverOptions(rtol=1e-7, atol_position=1e-7,
+                                                       atol_velocity=1e-7, output_interval=0.25),
+                   initial_state=y)
     assert res.ok, res.message
     e = np.array([system.energy(v) for v in res.y])
     return e, e[0] - system.energy(yeq)
@@ -226,14 +208,8 @@ def test_v4_jones_delaurier_mode_nearly_dissipative(design):
 
 def _free_body_system(hull, g):
     # a tether that cannot pull: EA tiny, no drag, no damping (the hull is effectively free)
-    teth = TetherModel(
-        length=50.0,
-        segments=2,
-        axial_stiffness=1e-9,
-        damping_ratio=0.0,
-        drag=False,
-        linear_density=1e-6,
-    )
+    teth = TetherModel(length=50.0, segments=2, axial_stiffness=1e-9, damping_ratio=0.0,
+                       drag=False, linear_density=1e-6)
     return DynamicSystem(hull, teth, g=g, atmosphere=Atmosphere(1.2))
 
 
@@ -242,15 +218,8 @@ def test_v8_added_mass_and_froude_krylov(fineness, mass_ratio, g):
     """Wind accelerating at a along the hull axis: hull acceleration = (rho V + m_x)/(m + m_x) a
     (= a when neutrally buoyant; -> 3 a for a massless sphere)."""
     rho, vol = 1.2, 120.0
-    hull = ellipsoid_hull(
-        volume=vol,
-        fineness_ratio=fineness,
-        mass=mass_ratio * rho * vol,
-        cg=(0.0, 0.0),
-        inertia_cg=100.0,
-        confluence=(0.0, 2.0),
-        rho=rho,
-    )
+    hull = ellipsoid_hull(volume=vol, fineness_ratio=fineness, mass=mass_ratio * rho * vol,
+                          cg=(0.0, 0.0), inertia_cg=100.0, confluence=(0.0, 2.0), rho=rho)
     hull = hull.aero_off("kirchhoff")
     system = _free_body_system(hull, g)
     mx = hull.added_mass[0]
@@ -270,26 +239,16 @@ def test_v8_added_mass_and_froude_krylov(fineness, mass_ratio, g):
 
 
 def test_v8_point_aerostat_fluid_acceleration():
-    p = PointAerostat(
-        mass=10.0,
-        volume=100.0,
-        drag_area=0.0,
-        added_mass_coefficient=0.5,
-        unsteady_wind_inertia=True,
-    )
-    teth = TetherModel(
-        length=50.0,
-        segments=2,
-        axial_stiffness=1e-9,
-        damping_ratio=0.0,
-        drag=False,
-        linear_density=1e-6,
-    )
+    p = PointAerostat(mass=10.0, volume=100.0, drag_area=0.0, added_mass_coefficient=0.5,
+                      unsteady_wind_inertia=True)
+    teth = TetherModel(length=50.0, segments=2, axial_stiffness=1e-9, damping_ratio=0.0,
+                       drag=False, linear_density=1e-6)
     system = DynamicSystem(p, teth, g=0.0, atmosphere=Atmosphere(1.2))
     field = WindScenario(SpeedSchedule((0.0, 10.0), (0.0, 5.0))).realise(60.0, 20.0)
     dy, _ = system.rhs(5.0, straight_state(system, (0.0, 50.0)), field)
     ca = 0.5 * 1.2 * 100.0
-    assert dy[-2] / 0.5 == pytest.approx((1.2 * 100.0 + ca) / (10.0 + ca + system.m_top), rel=1e-6)
+    assert dy[-2] / 0.5 == pytest.approx((1.2 * 100.0 + ca) / (10.0 + ca + system.m_top),
+                                         rel=1e-6)
 
 
 def test_frame_updraft_angle_of_attack(design, system):
@@ -316,14 +275,8 @@ def test_pitch_rate_is_damped_by_fins_and_crossflow(design, system):
     # small-q fin estimate: M_q,fin ~ -1/2 rho V S eta C_La x_f^2 (dynamics.md §1.3)
     af = design.airframe
     xf = system.body.fin_ac[0]
-    mq_fin = (
-        -0.5
-        * float(af.air_density)
-        * 10.0
-        * float(af.fins.lifting_area)
-        * float(af.fins.lift_slope)
-        * xf**2
-    )
+    mq_fin = -0.5 * float(af.air_density) * 10.0 * float(af.fins.lifting_area) * float(
+        af.fins.lift_slope) * xf**2
     assert (m1 - m0) / 0.05 < 0.9 * mq_fin  # fins plus hull cross-flow: more than the fins
 
 
@@ -342,21 +295,15 @@ def test_v7_linearisation_stable_and_matches_time_response():
     assert lin.stable
     surge = lin.rigid_modes()[0]
     assert surge.label == "surge"
-    res = simulate(
-        system,
-        WindScenario(SpeedSchedule.step(10.0, 10.2, 5.0, 1.0)),
-        400.0,
-        SolverOptions(rtol=1e-7, atol_position=1e-7, atol_velocity=1e-7, output_interval=0.05),
-    )
+    res = simulate(system, WindScenario(SpeedSchedule.step(10.0, 10.2, 5.0, 1.0)), 400.0,
+                   SolverOptions(rtol=1e-7, atol_position=1e-7, atol_velocity=1e-7,
+                                 output_interval=0.05))
     x = res.signal("x_C")
     sel = res.t > 10.0
     xs = x[sel] - x[-1]
     ts = res.t[sel]
-    peaks = [
-        i
-        for i in range(1, xs.size - 1)
-        if abs(xs[i]) >= abs(xs[i - 1]) and abs(xs[i]) > abs(xs[i + 1]) and abs(xs[i]) > 1e-4
-    ]
+    peaks = [i for i in range(1, xs.size - 1) if abs(xs[i]) >= abs(xs[i - 1])
+             and abs(xs[i]) > abs(xs[i + 1]) and abs(xs[i]) > 1e-4]
     tp = ts[peaks]
     period = 2 * np.mean(np.diff(tp[:4]))
     assert period == pytest.approx(surge.period, rel=0.03)
@@ -375,25 +322,15 @@ def test_v7_hull_modes_stable(design, system):
 
 def test_diverging_run_stops_with_a_message():
     """A hull without fins in strong wind pitches away: the run stops early with a status."""
-    hull = ellipsoid_hull(
-        aero=lambda a: {
-            "normal_inviscid": 0.8 * 0.9 * 12.2 * np.sin(2 * a) * np.cos(a / 2),
-            "moment_inviscid": 0.8 * 0.9 * 120.0 * np.sin(2 * a) * np.cos(a / 2),
-            "axial_drag": 24.0 * np.cos(a) ** 2,
-            "cdv": 0.03,
-        },
-        aero_fins=False,
-    )
-    system = DynamicSystem(
-        hull, TetherModel(length=300.0, segments=10), g=9.81, atmosphere=Atmosphere(1.19)
-    )
-    res = simulate(
-        system,
-        WindScenario(SpeedSchedule.step(2.0, 20.0, 5.0, 5.0)),
-        200.0,
-        SolverOptions(wall_time_limit=60.0),
-        initial_state=straight_state(system, (0.0, 300.3)),
-    )
+    hull = ellipsoid_hull(aero=lambda a: {
+        "normal_inviscid": 0.8 * 0.9 * 12.2 * np.sin(2 * a) * np.cos(a / 2),
+        "moment_inviscid": 0.8 * 0.9 * 120.0 * np.sin(2 * a) * np.cos(a / 2),
+        "axial_drag": 24.0 * np.cos(a) ** 2, "cdv": 0.03}, aero_fins=False)
+    system = DynamicSystem(hull, TetherModel(length=300.0, segments=10), g=9.81,
+                           atmosphere=Atmosphere(1.19))
+    res = simulate(system, WindScenario(SpeedSchedule.step(2.0, 20.0, 5.0, 5.0)), 200.0,
+                   SolverOptions(wall_time_limit=60.0),
+                   initial_state=straight_state(system, (0.0, 300.3)))
     assert not res.ok
     assert "stopped at t =" in res.message
     assert res.t[-1] < 200.0
@@ -410,32 +347,18 @@ def _prototype_hull(unsteady: bool):
 
     def aero(a):
         cl = 0.9 * 2.1 * np.clip(a, -math.radians(20), math.radians(20))
-        return {
-            "normal_inviscid": dk * 0.9 * 12.2 * np.sin(2 * a) * np.cos(a / 2),
-            "axial_inviscid": -dk * 0.9 * 12.2 * np.sin(2 * a) * np.sin(a / 2),
-            "moment_inviscid": dk * 0.9 * 60.5 * np.sin(2 * a) * np.cos(a / 2),
-            "axial_drag": 120 ** (2 / 3) * np.cos(a) ** 2,
-            "fin_lift": 10 * cl,
-            "fin_drag": 10 * (0.008 + cl**2 / (math.pi * 0.8 * 2.0)),
-            "cdv": 0.03,
-        }
+        return {"normal_inviscid": dk * 0.9 * 12.2 * np.sin(2 * a) * np.cos(a / 2),
+                "axial_inviscid": -dk * 0.9 * 12.2 * np.sin(2 * a) * np.sin(a / 2),
+                "moment_inviscid": dk * 0.9 * 60.5 * np.sin(2 * a) * np.cos(a / 2),
+                "axial_drag": 120 ** (2 / 3) * np.cos(a) ** 2, "fin_lift": 10 * cl,
+                "fin_drag": 10 * (0.008 + cl**2 / (math.pi * 0.8 * 2.0)), "cdv": 0.03}
 
-    hull = ellipsoid_hull(
-        mass=90.0,
-        cg=(-0.3, 0.6),
-        inertia_cg=1400.0,
-        confluence=(0.3, 3.5),
-        rho=1.19,
-        aero=aero,
-        crossflow_coefficient=0.5,
-        unsteady_wind_inertia=unsteady,
-    )
+    hull = ellipsoid_hull(mass=90.0, cg=(-0.3, 0.6), inertia_cg=1400.0, confluence=(0.3, 3.5),
+                          rho=1.19, aero=aero, crossflow_coefficient=0.5,
+                          unsteady_wind_inertia=unsteady)
     xs, ws = hull.strips
-    hull = replace(
-        hull,
-        strips=np.array([xs, np.where(xs <= -0.1 * hull.length, ws, 0.0)]),
-        fin_ac=(-0.38 * hull.length, 0.0),
-    )
+    hull = replace(hull, strips=np.array([xs, np.where(xs <= -0.1 * hull.length, ws, 0.0)]),
+                   fin_ac=(-0.38 * hull.length, 0.0))
     teth = TetherModel(length=320.0, segments=20, linear_density=0.02, axial_stiffness=6e5)
     return DynamicSystem(hull, teth, g=9.81, atmosphere=Atmosphere(1.19))
 
@@ -454,9 +377,8 @@ def test_independent_prototype_step_response(unsteady):
     assert math.degrees(y10[system.hull_index + 2]) == pytest.approx(3.43, abs=0.03)
     f5 = WindScenario.steady(5.0).realise(320.0, 10.0)
     y5, _ = equilibrium(system, f5, straight_guess(system, f5, theta=0.05))
-    res = simulate(
-        system, WindScenario(SpeedSchedule.step(5.0, 10.0, 20.0, 1.0)), 120.0, initial_state=y5
-    )
+    res = simulate(system, WindScenario(SpeedSchedule.step(5.0, 10.0, 20.0, 1.0)), 120.0,
+                   initial_state=y5)
     assert res.ok
     th = res.signal("theta")[res.t > 20]
     vx = res.signal("vx").max()

@@ -59,13 +59,10 @@ def test_band_lu_matches_dense_solve():
 
 
 def _step_run(system, design, opt=None):
-    return simulate(
-        system,
-        WindScenario(SpeedSchedule.step(8.0, 11.0, 5.0, 3.0)),
-        90.0,
-        opt or SolverOptions(rtol=1e-7, atol_position=1e-6, atol_velocity=1e-6, atol_angle=1e-8),
-        guess=engine_guess(system, design, 8.0),
-    )
+    return simulate(system, WindScenario(SpeedSchedule.step(8.0, 11.0, 5.0, 3.0)), 90.0,
+                    opt or SolverOptions(rtol=1e-7, atol_position=1e-6, atol_velocity=1e-6,
+                                         atol_angle=1e-8),
+                    guess=engine_guess(system, design, 8.0))
 
 
 def test_v5_grid_convergence(design):
@@ -91,31 +88,12 @@ def gust_runs(design):
     guess = engine_guess(system, design, 10.0)
     runs = {}
     for key, opt in (
-        (
-            "tight",
-            SolverOptions(
-                rtol=1e-8,
-                atol_position=1e-7,
-                atol_velocity=1e-7,
-                atol_angle=1e-9,
-                output_interval=0.1,
-            ),
-        ),
-        (
-            "default",
-            SolverOptions(rtol=1e-6, atol_position=1e-5, atol_velocity=1e-5, output_interval=0.1),
-        ),
-        (
-            "radau",
-            SolverOptions(
-                method="Radau",
-                rtol=1e-7,
-                atol_position=1e-6,
-                atol_velocity=1e-6,
-                atol_angle=1e-8,
-                output_interval=0.1,
-            ),
-        ),
+        ("tight", SolverOptions(rtol=1e-8, atol_position=1e-7, atol_velocity=1e-7,
+                                atol_angle=1e-9, output_interval=0.1)),
+        ("default", SolverOptions(rtol=1e-6, atol_position=1e-5, atol_velocity=1e-5,
+                                  output_interval=0.1)),
+        ("radau", SolverOptions(method="Radau", rtol=1e-7, atol_position=1e-6, atol_velocity=1e-6,
+                                atol_angle=1e-8, output_interval=0.1)),
     ):
         res = simulate(system, sc, 40.0, opt, guess=guess)
         assert res.ok, (key, res.message)
@@ -137,21 +115,12 @@ def test_v6_tolerance_and_method(gust_runs, other):
 
 def test_budgets_stop_with_status(design):
     system = system_from_design(design, segments=10)
-    res = simulate(
-        system,
-        WindScenario.steady(10.0),
-        100.0,
-        SolverOptions(max_steps=20),
-        guess=engine_guess(system, design, 10.0),
-    )
+    res = simulate(system, WindScenario.steady(10.0), 100.0, SolverOptions(max_steps=20),
+                   guess=engine_guess(system, design, 10.0))
     assert res.status == 9 and "step budget" in res.message
-    res = simulate(
-        system,
-        WindScenario(SpeedSchedule.constant(10.0), gust=Gust()),
-        300.0,
-        SolverOptions(wall_time_limit=1e-3),
-        guess=engine_guess(system, design, 10.0),
-    )
+    res = simulate(system, WindScenario(SpeedSchedule.constant(10.0), gust=Gust()), 300.0,
+                   SolverOptions(wall_time_limit=1e-3),
+                   guess=engine_guess(system, design, 10.0))
     assert res.status == 8 and "wall-clock" in res.message
     assert res.t.size >= 1
 

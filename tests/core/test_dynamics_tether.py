@@ -60,13 +60,9 @@ def test_r4_grid(n):
 def r3_run():
     system = cases.case_p_system(32)
     y0 = straight_state(system, cases.R3_TOP0)
-    res = simulate(
-        system,
-        cases.r3_wind(),
-        300.0,
-        SolverOptions(rtol=1e-6, atol_position=1e-5, atol_velocity=1e-5, output_interval=0.05),
-        initial_state=y0,
-    )
+    res = simulate(system, cases.r3_wind(), 300.0,
+                   SolverOptions(rtol=1e-6, atol_position=1e-5, atol_velocity=1e-5,
+                                 output_interval=0.05), initial_state=y0)
     assert res.ok, res.message
     return res
 

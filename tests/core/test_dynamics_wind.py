@@ -63,9 +63,8 @@ def test_one_minus_cosine_gust_shape():
     assert ux == pytest.approx([10.0, 10.0, 12.0, 14.0, 10.0, 10.0])
     assert uz == pytest.approx([0.0, 0.0, 0.5, 1.0, 0.0, 0.0])
     assert dux[2] == pytest.approx(0.5 * 4.0 * math.pi / 5.0)
-    hold = WindScenario(
-        SpeedSchedule.constant(10.0), gust=Gust(4.0, 0.0, 50.0, 20.0, "ramp-hold")
-    ).realise(300.0, 60.0)
+    hold = WindScenario(SpeedSchedule.constant(10.0), gust=Gust(4.0, 0.0, 50.0, 20.0,
+                                                               "ramp-hold")).realise(300.0, 60.0)
     assert hold.at(40.0, 300.0)[0][0] == pytest.approx(14.0)
 
 
@@ -119,10 +118,8 @@ def test_v9_spectrum_within_90pct_band(hour_record):
     rec, t, u, w = hour_record
     fs = 1.0 / (t[1] - t[0])
     nper = t.size // 8
-    for x, psd, length, sig in (
-        (u, dryden_psd_u, rec.params.length_u, rec.params.sigma_u),
-        (w, dryden_psd_w, rec.params.length_w, rec.params.sigma_w),
-    ):
+    for x, psd, length, sig in ((u, dryden_psd_u, rec.params.length_u, rec.params.sigma_u),
+                                (w, dryden_psd_w, rec.params.length_w, rec.params.sigma_w)):
         f, pxx = welch(x, fs=fs, nperseg=nper)
         sel = (f > 0.005) & (f < 1.0)
         target = psd(2 * np.pi * f[sel], sig, length, rec.speed) * 2 * np.pi  # per Hz
@@ -173,10 +170,8 @@ def test_same_seed_same_record_and_validation():
 
 def test_kernel_turbulence_table_matches_cosine_sum():
     """The kernel's Hermite-interpolated table reproduces the cosine sum and its derivative."""
-    sc = WindScenario(
-        SpeedSchedule.constant(10.0),
-        turbulence=DrydenTurbulence.from_intensity("severe", seed=5, fade_in=0.0),
-    )
+    sc = WindScenario(SpeedSchedule.constant(10.0),
+                      turbulence=DrydenTurbulence.from_intensity("severe", seed=5, fade_in=0.0))
     field = sc.realise(300.0, 200.0)
     t = np.linspace(0.0, 400.0, 7919)  # beyond one period too (the table is periodic)
     ux, uz, dux, duz = field.at(t, 300.0)

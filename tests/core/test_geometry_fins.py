@@ -82,14 +82,11 @@ def test_shape_integrals_give_munks_moment_at_full_length():
     assert float(i3) == pytest.approx(float(g.volume), rel=1e-12)
     # J1 is the planform area; J2 by quadrature
     a1, a2, b = float(g.a1), float(g.a2), float(g.b)
-    assert float(j1) == pytest.approx(
-        quad(lambda x: 2 * float(radius(x, a1, a2, b)), 0, float(g.length), points=[a1])[0],
-        rel=1e-8,
-    )
+    assert float(j1) == pytest.approx(quad(lambda x: 2 * float(radius(x, a1, a2, b)), 0,
+                                           float(g.length), points=[a1])[0], rel=1e-8)
     xm = float(g.xi_cb)
-    j2n = quad(
-        lambda x: 2 * float(radius(x, a1, a2, b)) * (xm - x), 0, float(g.length), points=[a1]
-    )[0]
+    j2n = quad(lambda x: 2 * float(radius(x, a1, a2, b)) * (xm - x), 0, float(g.length),
+               points=[a1])[0]
     assert float(j2) == pytest.approx(j2n, rel=1e-6, abs=1e-9)
     # partial volume closed form
     lh = 0.7 * float(g.length)

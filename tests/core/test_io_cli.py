@@ -23,9 +23,8 @@ def test_json_round_trip_keeps_every_input():
     req, cfg = thesis_baseline()
     req2, cfg2 = design_from_json(design_to_json(req, cfg))
     assert (req2, cfg2) == (req, cfg)
-    inf_cfg = Configuration(
-        tether=cfg.tether.__class__("x", 0.02, 0.005, 1, 0.01, 1e4, float("inf"))
-    )
+    inf_cfg = Configuration(tether=cfg.tether.__class__("x", 0.02, 0.005, 1, 0.01, 1e4,
+                                                       float("inf")))
     assert design_from_json(design_to_json(req, inf_cfg))[1] == inf_cfg
 
 
@@ -77,20 +76,13 @@ def test_missing_fields_take_defaults():
 
 def test_cli_prints_summary_and_writes_csv(tmp_path, capsys):
     out = tmp_path / "d.csv"
-    assert (
-        main(
-            ["design", "--payload", "10", "--altitude", "300", "--volume", "170", "--csv", str(out)]
-        )
-        == 0
-    )
+    assert main(["design", "--payload", "10", "--altitude", "300", "--volume", "170",
+                 "--csv", str(out)]) == 0
     text = capsys.readouterr().out
     assert "volume" in text and "170.0 m3" in text and "total mass" in text
     sections = out.read_text().split("\n\n")
     assert [s.splitlines()[0] for s in sections] == [
-        "# geometry",
-        "# mass breakdown",
-        "# performance versus wind speed",
-    ]
+        "# geometry", "# mass breakdown", "# performance versus wind speed"]
     perf = list(csv.DictReader(io.StringIO(sections[2].split("\n", 1)[1])))
     assert len(perf) == 21 and float(perf[0]["wind_speed_m_s"]) == 0.0
     assert "blow_by_m" in perf[0]
@@ -105,15 +97,12 @@ def test_cli_config_file_is_used(tmp_path, capsys):
     assert f"{design(req, cfg).total_mass:.2f} kg" in text
 
 
-@pytest.mark.parametrize(
-    "argv, field",
-    [
-        (["design", "--payload", "-1"], "payload_mass"),
-        (["design", "--altitude", "99999"], "altitude"),
-        (["design", "--volume", "0"], "volume"),
-        (["design", "--config", "/nonexistent.json"], "--config"),
-    ],
-)
+@pytest.mark.parametrize("argv, field", [
+    (["design", "--payload", "-1"], "payload_mass"),
+    (["design", "--altitude", "99999"], "altitude"),
+    (["design", "--volume", "0"], "volume"),
+    (["design", "--config", "/nonexistent.json"], "--config"),
+])
 def test_cli_bad_value_exits_2_with_one_line(argv, field, capsys):
     assert main(argv) == 2
     err = capsys.readouterr().err.strip().splitlines()

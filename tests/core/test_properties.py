@@ -39,46 +39,28 @@ def requirements(draw):
 def configurations(draw):
     arrangement = draw(st.sampled_from(["+", "x", "inverted-y"]))
     return Configuration(
-        gas=LiftingGas(
-            kind=draw(st.sampled_from(["helium", "hydrogen"])),
-            purity=draw(st.floats(0.5, 1.0)),
-            superpressure=draw(st.floats(0, 5000)),
-            density_model=draw(st.sampled_from(["ideal", "fixed"])),
-        ),
+        gas=LiftingGas(kind=draw(st.sampled_from(["helium", "hydrogen"])),
+                       purity=draw(st.floats(0.5, 1.0)),
+                       superpressure=draw(st.floats(0, 5000)),
+                       density_model=draw(st.sampled_from(["ideal", "fixed"]))),
         hull_fabric=Fabric("h", draw(st.floats(0.02, 2.0))),
         fin_fabric=Fabric("f", draw(st.floats(0.02, 2.0))),
-        tether=TetherSpec(
-            "t",
-            draw(st.floats(0.001, 1.0)),
-            draw(st.floats(0.001, 0.05)),
-            draw(st.floats(0.1, 3.0)),
-            draw(st.floats(0, 0.1)),
-            draw(st.floats(100, 1e7)),
-            draw(st.floats(1e4, 1e9)),
-        ),
-        hull=HullSpec(
-            fineness_ratio=draw(st.floats(1.5, 8.0)),
-            nose_fraction=draw(st.floats(0.2, 0.8)),
-            volume=draw(st.one_of(st.none(), st.floats(1.0, 1e5))),
-        ),
-        fins=FinSpec(
-            count=3 if arrangement == "inverted-y" else 4,
-            arrangement=arrangement,
-            area_change=draw(st.floats(-50, 200)),
-            position=draw(st.floats(0.4, 0.95)),
-            aspect_ratio=draw(st.floats(0.5, 6)),
-            taper_ratio=draw(st.floats(0.1, 1)),
-        ),
-        aero=AeroModel(
-            hull_efficiency=draw(st.floats(0, 2)),
-            hull_crossflow_drag=draw(st.floats(0, 2)),
-            cutoff=draw(st.sampled_from(["fin", "tail"])),
-            fin_efficiency=draw(st.floats(0, 1.5)),
-            fin_stall_angle_deg=draw(st.floats(5, 40)),
-        ),
-        confluence=ConfluenceSpec(
-            drop_ratio=draw(st.floats(0.05, 3)), xi_offset=draw(st.floats(-0.2, 0.2))
-        ),
+        tether=TetherSpec("t", draw(st.floats(0.001, 1.0)), draw(st.floats(0.001, 0.05)),
+                          draw(st.floats(0.1, 3.0)), draw(st.floats(0, 0.1)),
+                          draw(st.floats(100, 1e7)), draw(st.floats(1e4, 1e9))),
+        hull=HullSpec(fineness_ratio=draw(st.floats(1.5, 8.0)),
+                      nose_fraction=draw(st.floats(0.2, 0.8)),
+                      volume=draw(st.one_of(st.none(), st.floats(1.0, 1e5)))),
+        fins=FinSpec(count=3 if arrangement == "inverted-y" else 4, arrangement=arrangement,
+                     area_change=draw(st.floats(-50, 200)), position=draw(st.floats(0.4, 0.95)),
+                     aspect_ratio=draw(st.floats(0.5, 6)), taper_ratio=draw(st.floats(0.1, 1))),
+        aero=AeroModel(hull_efficiency=draw(st.floats(0, 2)),
+                       hull_crossflow_drag=draw(st.floats(0, 2)),
+                       cutoff=draw(st.sampled_from(["fin", "tail"])),
+                       fin_efficiency=draw(st.floats(0, 1.5)),
+                       fin_stall_angle_deg=draw(st.floats(5, 40))),
+        confluence=ConfluenceSpec(drop_ratio=draw(st.floats(0.05, 3)),
+                                  xi_offset=draw(st.floats(-0.2, 0.2))),
         wind_profile=WindProfile(kind=draw(st.sampled_from(["uniform", "power", "log"]))),
         misc_mass_ratio=draw(st.floats(0, 2)),
     )
@@ -104,19 +86,18 @@ def test_design_invariants_hold_over_the_whole_input_domain(req, cfg):
     # mass breakdown closes; buoyancy = weight + free lift
     rows = d.mass_rows()
     assert np.isclose(sum(r["mass_kg"] for r in rows[:-1]), rows[-1]["mass_kg"], rtol=1e-12)
-    assert np.isclose(d.buoyancy, d.total_mass * d.airframe.g + d.free_lift, rtol=1e-9, atol=1e-9)
+    assert np.isclose(d.buoyancy, d.total_mass * d.airframe.g + d.free_lift, rtol=1e-9,
+                      atol=1e-9)
     # wherever a stable trim was found, the moment about the confluence point vanishes
     p = d.performance
     found = ~p.flags["unstable"]
     if found.any():
-        m = moment_about_confluence(
-            d.airframe, cfg.aero, np.radians(p.alpha_eq[found]), p.wind_speed[found]
-        )
+        m = moment_about_confluence(d.airframe, cfg.aero, np.radians(p.alpha_eq[found]),
+                                    p.wind_speed[found])
         af = d.airframe
         q_max = 0.5 * float(af.air_density) * float(p.wind_speed.max()) ** 2
         force = float(af.buoyancy + af.aerostat_weight) + q_max * float(
-            af.hull.reference_area + af.fins.area_total
-        )
+            af.hull.reference_area + af.fins.area_total)
         assert np.max(np.abs(m)) <= 1e-7 * force * float(af.hull.length)
     # a feasible design meets its blow-by limit
     if d.feasible:

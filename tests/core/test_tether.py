@@ -35,16 +35,8 @@ def test_no_drag_profile_is_the_analytic_catenary(ea, h_tension, v_top):
     # predicted: without wind there is no tether drag; the march must give the catenary
     spec = TetherSpec("t", 0.02, 0.005, 1.0, 0.01, 1e4, ea)
     w = 0.02 * 9.81
-    sol = solve_tether(
-        lambda h: (np.array(h_tension), np.array(v_top)),
-        320.0,
-        spec,
-        1.2,
-        _still,
-        w,
-        segments=50,
-        sheared=False,
-    )
+    sol = solve_tether(lambda h: (np.array(h_tension), np.array(v_top)), 320.0, spec, 1.2, _still,
+                       w, segments=50, sheared=False)
     s = np.linspace(0, 320.0, 51)
     x_ref, z_ref = elastic_catenary(h_tension, v_top, w, ea, s)
     x = sol.x - sol.x[0]
@@ -60,10 +52,8 @@ def test_march_converges_with_segments_at_second_order():
     from dataclasses import replace
 
     ref = design(req, replace(cfg, tether_segments=2000)).performance.blow_by
-    errs = [
-        np.max(np.abs(design(req, replace(cfg, tether_segments=n)).performance.blow_by - ref))
-        for n in (25, 50, 100)
-    ]
+    errs = [np.max(np.abs(design(req, replace(cfg, tether_segments=n)).performance.blow_by - ref))
+            for n in (25, 50, 100)]
     assert errs[0] > errs[1] > errs[2]
     assert errs[0] / errs[1] == pytest.approx(4.0, rel=0.3)  # Heun: error ~ ds^2
     assert errs[1] < 1e-3  # the default 50 segments: under a millimetre
@@ -117,16 +107,8 @@ def test_global_force_balance_of_the_line(h_t, v_t, u):
     # winch force = top force + all line loads: the horizontal tension only grows by drag and
     # the vertical one falls by weight (+ drag component); the line stays within its length
     w = SPEC.linear_density * 9.81
-    sol = solve_tether(
-        lambda h: (np.array(h_t), np.array(v_t)),
-        300.0,
-        SPEC,
-        1.2,
-        lambda z, h: u * np.ones_like(np.asarray(z, float)),
-        w,
-        50,
-        sheared=False,
-    )
+    sol = solve_tether(lambda h: (np.array(h_t), np.array(v_t)), 300.0, SPEC, 1.2,
+                       lambda z, h: u * np.ones_like(np.asarray(z, float)), w, 50, sheared=False)
     stretch = 1 + np.max(sol.tension) / SPEC.axial_stiffness
     assert np.hypot(sol.blow_by, sol.height) <= 300.0 * stretch + 1e-9
     assert sol.tension_top == pytest.approx(np.hypot(h_t, v_t))
