@@ -61,12 +61,8 @@ SCENARIOS = {
     "gust": "Discrete gust (1 − cos)",
     "turbulence": "Dryden turbulence",
 }
-INTENSITIES = {
-    "light": "Light (W20 = 15 kt)",
-    "moderate": "Moderate (W20 = 30 kt)",
-    "severe": "Severe (W20 = 45 kt)",
-    "custom": "Custom W20",
-}
+INTENSITIES = {"light": "Light (W20 = 15 kt)", "moderate": "Moderate (W20 = 30 kt)",
+               "severe": "Severe (W20 = 45 kt)", "custom": "Custom W20"}
 PROFILES = {"uniform": "Uniform", "power": "Power law", "log": "Log law"}
 BODIES = {"hull": "3-DOF hull (surge, heave, pitch)", "point": "Point aerostat (no pitch)"}
 #: Valid ranges of the form's numbers: key -> (label, lo, hi, unit).
@@ -102,9 +98,8 @@ def _num(form: Mapping[str, Any], key: str, integer: bool = False) -> float:
     try:
         x = float(v)
     except (TypeError, ValueError):
-        raise ValueError(
-            f"{label} = {v!r} is not a number; valid range [{lo:g}, {hi:g}]{u}"
-        ) from None
+        raise ValueError(f"{label} = {v!r} is not a number; valid range [{lo:g}, {hi:g}]{u}") \
+            from None
     if not math.isfinite(x) or x < lo or x > hi:
         raise ValueError(f"{label} = {x:g}{u} is outside the valid range [{lo:g}, {hi:g}]{u}")
     if integer:
@@ -119,11 +114,8 @@ def design_sources(cases_state: Mapping[str, Any] | None) -> list[str]:
     return [CURRENT, THESIS] + [f"Case: {n}" for n in (cases_state or {})]
 
 
-def build_request(
-    form: Mapping[str, Any],
-    design_inputs: Mapping[str, Any] | None,
-    cases_state: Mapping[str, Any] | None,
-) -> dict:
+def build_request(form: Mapping[str, Any], design_inputs: Mapping[str, Any] | None,
+                  cases_state: Mapping[str, Any] | None) -> dict:
     """Validate the form and return the run request (plain JSON-able data, the cache key).
 
     Raises ``ValueError`` naming the field, the value and its valid range.
@@ -133,12 +125,8 @@ def build_request(
         inputs = None
     elif source == CURRENT:
         inputs = dict(design_inputs) if design_inputs else None
-    elif (
-        isinstance(source, str)
-        and source.startswith("Case: ")
-        and cases_state
-        and source[6:] in cases_state
-    ):
+    elif isinstance(source, str) and source.startswith("Case: ") and cases_state and \
+            source[6:] in cases_state:
         inputs = dict(cases_state[source[6:]])
     else:
         raise ValueError(f"Design = {source!r} is not available; choose one of the list")
@@ -154,19 +142,11 @@ def build_request(
     if body not in BODIES:
         raise ValueError(f"Body model = {body!r}; valid options {list(BODIES)}")
     req = {
-        "source": source,
-        "inputs": inputs,
-        "scenario": scenario,
-        "profile": profile,
-        "body": body,
-        "speed": _num(form, "speed"),
-        "duration": _num(form, "duration"),
-        "exponent": _num(form, "exponent"),
-        "roughness": _num(form, "roughness"),
-        "segments": _num(form, "segments", integer=True),
-        "damping": _num(form, "damping"),
-        "unsteady": bool(form.get("unsteady", True)),
-        "wall": _num(form, "wall"),
+        "source": source, "inputs": inputs, "scenario": scenario, "profile": profile,
+        "body": body, "speed": _num(form, "speed"), "duration": _num(form, "duration"),
+        "exponent": _num(form, "exponent"), "roughness": _num(form, "roughness"),
+        "segments": _num(form, "segments", integer=True), "damping": _num(form, "damping"),
+        "unsteady": bool(form.get("unsteady", True)), "wall": _num(form, "wall"),
         "modes": bool(form.get("modes", False)),
     }
     if scenario == "varying":
@@ -174,43 +154,31 @@ def build_request(
         if form.get("second_change"):
             t2 = _num(form, "t_change2")
             if t2 < req["changes"][0][0] + req["changes"][0][2]:
-                raise ValueError(
-                    f"Second change starts at = {t2:g} s: it must start after the "
-                    f"first ramp ends ({req['changes'][0][0] + req['changes'][0][2]:g}"
-                    " s)"
-                )
+                raise ValueError(f"Second change starts at = {t2:g} s: it must start after the "
+                                 f"first ramp ends ({req['changes'][0][0] + req['changes'][0][2]:g}"
+                                 " s)")
             req["changes"].append((t2, _num(form, "u_new2"), _num(form, "ramp")))
     elif scenario == "gust":
-        req["gust"] = {
-            "u": _num(form, "gust_u"),
-            "w": _num(form, "gust_w"),
-            "length": _num(form, "gust_length"),
-            "start": _num(form, "gust_start"),
-            "shape": "ramp-hold" if form.get("gust_hold") else "full",
-        }
+        req["gust"] = {"u": _num(form, "gust_u"), "w": _num(form, "gust_w"),
+                       "length": _num(form, "gust_length"), "start": _num(form, "gust_start"),
+                       "shape": "ramp-hold" if form.get("gust_hold") else "full"}
         if req["gust"]["u"] == 0 and req["gust"]["w"] == 0:
-            raise ValueError(
-                "Gust amplitudes are both 0 m/s: give a horizontal or vertical "
-                "amplitude in [-15, 15] / [-10, 10] m/s"
-            )
+            raise ValueError("Gust amplitudes are both 0 m/s: give a horizontal or vertical "
+                             "amplitude in [-15, 15] / [-10, 10] m/s")
     elif scenario == "turbulence":
         inten = form.get("intensity", "moderate")
         if inten not in INTENSITIES:
-            raise ValueError(f"Turbulence intensity = {inten!r}; valid options {list(INTENSITIES)}")
+            raise ValueError(f"Turbulence intensity = {inten!r}; valid options "
+                             f"{list(INTENSITIES)}")
         w20 = _num(form, "w20") if inten == "custom" else DRYDEN_W20[inten]
-        req["turbulence"] = {
-            "intensity": inten,
-            "w20": w20,
-            "seed": _num(form, "seed", integer=True),
-            "max_frequency": _num(form, "max_frequency"),
-            "fade_in": _num(form, "fade_in"),
-            "vertical": bool(form.get("vertical", True)),
-        }
+        req["turbulence"] = {"intensity": inten, "w20": w20,
+                             "seed": _num(form, "seed", integer=True),
+                             "max_frequency": _num(form, "max_frequency"),
+                             "fade_in": _num(form, "fade_in"),
+                             "vertical": bool(form.get("vertical", True))}
     if scenario in ("gust", "turbulence") and req["speed"] < 0.5:
-        raise ValueError(
-            f"Mean wind at the aerostat = {req['speed']:g} m/s: a gust or turbulence "
-            "needs at least 0.5 m/s to be convected; valid range [0.5, 30] m/s"
-        )
+        raise ValueError(f"Mean wind at the aerostat = {req['speed']:g} m/s: a gust or turbulence "
+                         "needs at least 0.5 m/s to be convected; valid range [0.5, 30] m/s")
     return req
 
 
@@ -238,13 +206,8 @@ def _wind(req: Mapping[str, Any], top_height: float) -> WindScenario:
         gust = Gust(g["u"], g["w"], g["length"], g["start"], g["shape"])
     if req["scenario"] == "turbulence":
         t = req["turbulence"]
-        turb = DrydenTurbulence(
-            w20=t["w20"],
-            seed=t["seed"],
-            max_frequency=t["max_frequency"],
-            fade_in=t["fade_in"],
-            vertical=t["vertical"],
-        )
+        turb = DrydenTurbulence(w20=t["w20"], seed=t["seed"], max_frequency=t["max_frequency"],
+                                fade_in=t["fade_in"], vertical=t["vertical"])
     return WindScenario(sched, profile, gust, turb)
 
 
@@ -260,44 +223,33 @@ def _point_from_design(d, speed: float) -> PointAerostat:
     af = d.airframe
     row = min(d.performance.rows(), key=lambda r: abs(r["wind_speed_m_s"] - max(speed, 1.0)))
     q = 0.5 * float(af.air_density) * max(row["wind_speed_m_s"], 1.0) ** 2
-    return PointAerostat(
-        mass=float(af.mass.aerostat),
-        volume=float(af.hull.volume),
-        drag_area=row["drag_N"] / q,
-        added_mass_coefficient=0.5,
-    )
+    return PointAerostat(mass=float(af.mass.aerostat), volume=float(af.hull.volume),
+                         drag_area=row["drag_N"] / q, added_mass_coefficient=0.5)
 
 
 def run(req: Mapping[str, Any], progress: Callable[[float], None] | None = None) -> dict:
     """Build the system, simulate, and collect plain results (arrays as lists for caching)."""
     d = _design_of(req)
     if req["body"] == "hull":
-        system = system_from_design(
-            d,
-            segments=req["segments"],
-            damping_ratio=req["damping"],
-            unsteady_wind_inertia=req["unsteady"],
-        )
+        system = system_from_design(d, segments=req["segments"], damping_ratio=req["damping"],
+                                    unsteady_wind_inertia=req["unsteady"])
         guess = engine_guess(system, d, req["speed"])
     else:
         af = d.airframe
-        teth = TetherModel.from_spec(
-            d.configuration.tether, af.tether_length, req["segments"], req["damping"]
-        )
+        teth = TetherModel.from_spec(d.configuration.tether, af.tether_length, req["segments"],
+                                     req["damping"])
         point = _point_from_design(d, req["speed"])
         point = PointAerostat(point.mass, point.volume, point.drag_area, 0.5, req["unsteady"])
-        system = DynamicSystem(
-            point, teth, g=float(af.g), atmosphere=Atmosphere(float(np.asarray(af.air_density)))
-        )
+        system = DynamicSystem(point, teth, g=float(af.g),
+                               atmosphere=Atmosphere(float(np.asarray(af.air_density))))
         guess = engine_guess(system, d, req["speed"])
     b = system.hull_index
     top_height = float(guess[b + 1])
     if system.is_hull:
         top_height = float(system.nodes(guess)[0][-1, 1])
     wind = _wind(req, top_height)
-    opt = SolverOptions(
-        wall_time_limit=req["wall"], output_interval=0.1 if req["duration"] <= 900 else 0.5
-    )
+    opt = SolverOptions(wall_time_limit=req["wall"], output_interval=0.1 if req["duration"] <= 900
+                        else 0.5)
     res = simulate(system, wind, req["duration"], opt, guess=guess, progress=progress)
     return collect(res, req, d)
 
@@ -333,17 +285,9 @@ def collect(res, req: Mapping[str, Any], d=None) -> dict:
     for k in names:
         label, unit = SIGNALS[k]
         s = stats[k]
-        stat_rows.append(
-            {
-                "signal": label,
-                "unit": unit,
-                "mean": s.mean,
-                "rms_fluctuation": s.std,
-                "peak_excursion": s.peak,
-                "min": s.min,
-                "max": s.max,
-            }
-        )
+        stat_rows.append({"signal": label, "unit": unit, "mean": s.mean,
+                          "rms_fluctuation": s.std, "peak_excursion": s.peak, "min": s.min,
+                          "max": s.max})
     metrics = []
     te = _event_time(req)
     if te is not None and t[-1] > te + 5.0:
@@ -353,60 +297,32 @@ def collect(res, req: Mapping[str, Any], d=None) -> dict:
                 continue
             m = response_metrics(t, res.signal(k), te, 0.05, final=final)
             m2 = response_metrics(t, res.signal(k), te, 0.02, final=final)
-            metrics.append(
-                {
-                    "signal": SIGNALS[k][0],
-                    "unit": SIGNALS[k][1],
-                    "settling_5pct_s": m.settling_time,
-                    "settling_2pct_s": m2.settling_time,
-                    "band_5pct": m.band,
-                    "overshoot_pct": m.overshoot,
-                    "peak_excursion": m.peak_excursion,
-                    "final": m.final,
-                }
-            )
+            metrics.append({"signal": SIGNALS[k][0], "unit": SIGNALS[k][1],
+                            "settling_5pct_s": m.settling_time, "settling_2pct_s": m2.settling_time,
+                            "band_5pct": m.band, "overshoot_pct": m.overshoot,
+                            "peak_excursion": m.peak_excursion, "final": m.final})
     out = {
-        "ok": bool(res.ok),
-        "status": int(res.status),
-        "message": res.message,
-        "t": t.tolist(),
-        "signals": sig,
-        "snapshots": snaps,
-        "stats": stat_rows,
-        "stats_from": t_from,
-        "metrics": metrics,
-        "event_time": te,
+        "ok": bool(res.ok), "status": int(res.status), "message": res.message,
+        "t": t.tolist(), "signals": sig, "snapshots": snaps, "stats": stat_rows,
+        "stats_from": t_from, "metrics": metrics, "event_time": te,
         "solver": {k: (float(v) if isinstance(v, float) else v) for k, v in res.stats.items()},
-        "is_hull": bool(res.system.is_hull),
-        "csv": res.to_csv(),
+        "is_hull": bool(res.system.is_hull), "csv": res.to_csv(),
         "equilibrium_shift_mm": (1e3 * res.equilibrium.shift if res.equilibrium else None),
-        "tether_segments": res.system.tether.segments,
-        "modes": None,
-        "turbulence": None,
+        "tether_segments": res.system.tether.segments, "modes": None, "turbulence": None,
     }
     rec = res.wind.turbulence
     if rec is not None:
         p = rec.params
         fu, fw = rec.variance_fraction
-        out["turbulence"] = {
-            "sigma_u": p.sigma_u,
-            "sigma_w": p.sigma_w,
-            "length_u": p.length_u,
-            "length_w": p.length_w,
-            "height": p.height_used,
-            "clamped": bool(p.clamped),
-            "speed": rec.speed,
-            "seed": rec.seed,
-            "variance_fraction_u": fu,
-            "variance_fraction_w": fw,
-        }
+        out["turbulence"] = {"sigma_u": p.sigma_u, "sigma_w": p.sigma_w, "length_u": p.length_u,
+                             "length_w": p.length_w, "height": p.height_used,
+                             "clamped": bool(p.clamped), "speed": rec.speed, "seed": rec.seed,
+                             "variance_fraction_u": fu, "variance_fraction_w": fw}
     if req.get("modes") and res.system.is_hull is not None:
         try:
             lin = linearise(res.system, wind=res.wind, state=res.y[0])
-            out["modes"] = [
-                {k: (float(v) if isinstance(v, float) else v) for k, v in r.items()}
-                for r in lin.rows()
-            ]
+            out["modes"] = [{k: (float(v) if isinstance(v, float) else v) for k, v in r.items()}
+                            for r in lin.rows()]
             out["stable"] = bool(lin.stable)
         except Exception as exc:  # noqa: BLE001 - shown to the user, never a traceback
             out["modes_error"] = str(exc)
@@ -422,20 +338,15 @@ def cached_run(request_json: str, _progress: Callable[[float], None] | None = No
 
 def turbulence_caption(tb: Mapping[str, Any]) -> str:
     """One line describing the realised Dryden turbulence."""
-    clamp = (
-        " (the hull is above 1000 ft: the low-altitude values at 1000 ft are used)"
-        if tb["clamped"]
-        else ""
-    )
-    return (
-        f"Dryden turbulence (MIL-F-8785C low altitude, 8785C length convention) at "
-        f"h = {tb['height']:.0f} m{clamp}: σ_u = {tb['sigma_u']:.2f} m/s, "
-        f"σ_w = {tb['sigma_w']:.2f} m/s, L_u = {tb['length_u']:.0f} m, "
-        f"L_w = {tb['length_w']:.0f} m, convected at V = {tb['speed']:.1f} m/s (frozen "
-        f"turbulence, same u′, w′ along the tether), seed {tb['seed']}; the synthesised record "
-        f"holds {100 * tb['variance_fraction_u']:.1f} % / {100 * tb['variance_fraction_w']:.1f} % "
-        "of σ_u² / σ_w² (the rest lies above the highest frequency)."
-    )
+    clamp = (" (the hull is above 1000 ft: the low-altitude values at 1000 ft are used)"
+             if tb["clamped"] else "")
+    return (f"Dryden turbulence (MIL-F-8785C low altitude, 8785C length convention) at "
+            f"h = {tb['height']:.0f} m{clamp}: σ_u = {tb['sigma_u']:.2f} m/s, "
+            f"σ_w = {tb['sigma_w']:.2f} m/s, L_u = {tb['length_u']:.0f} m, "
+            f"L_w = {tb['length_w']:.0f} m, convected at V = {tb['speed']:.1f} m/s (frozen "
+            f"turbulence, same u′, w′ along the tether), seed {tb['seed']}; the synthesised record "
+            f"holds {100 * tb['variance_fraction_u']:.1f} % / {100 * tb['variance_fraction_w']:.1f} % "
+            "of σ_u² / σ_w² (the rest lies above the highest frequency).")
 
 
 def current_inputs_or_none(state: Mapping[str, Any]) -> dict | None:
@@ -451,73 +362,38 @@ def current_inputs_or_none(state: Mapping[str, Any]) -> dict | None:
 
 # --- figures ------------------------------------------------------------------------------------
 def _fig(data: list, title: str, xt: str, yt: str, **layout: Any) -> go.Figure:
-    lay = dict(
-        title=dict(text=title),
-        font=_FONT,
-        margin=_MARGIN,
-        template="plotly_white",
-        xaxis=dict(title=dict(text=xt)),
-        yaxis=dict(title=dict(text=yt)),
-        legend=dict(orientation="h", y=-0.2),
-        height=360,
-    )
+    lay = dict(title=dict(text=title), font=_FONT, margin=_MARGIN, template="plotly_white",
+               xaxis=dict(title=dict(text=xt)), yaxis=dict(title=dict(text=yt)),
+               legend=dict(orientation="h", y=-0.2), height=360)
     lay.update(layout)
     return go.Figure(dict(data=data, layout=lay))
 
 
 def _line(x, y, name, colour=ACCENT, **kw) -> dict:
-    return dict(
-        type="scatter",
-        mode="lines",
-        x=x,
-        y=y,
-        name=name,
-        line=dict(color=colour, width=kw.pop("width", 2), dash=kw.pop("dash", None)),
-        **kw,
-    )
+    return dict(type="scatter", mode="lines", x=x, y=y, name=name,
+                line=dict(color=colour, width=kw.pop("width", 2), dash=kw.pop("dash", None)), **kw)
 
 
-def time_figure(
-    out: Mapping[str, Any], names, title: str, ytitle: str, key_names=None
-) -> go.Figure:
+def time_figure(out: Mapping[str, Any], names, title: str, ytitle: str, key_names=None) -> go.Figure:
     """Signals versus time on one axis (a dashed marker at the event time)."""
     cols = (ACCENT, SECOND, THIRD)
-    data = [
-        _line(out["t"], out["signals"][k], (key_names or {}).get(k, SIGNALS[k][0]), cols[i % 3])
-        for i, k in enumerate(names)
-        if k in out["signals"]
-    ]
+    data = [_line(out["t"], out["signals"][k], (key_names or {}).get(k, SIGNALS[k][0]),
+                  cols[i % 3]) for i, k in enumerate(names) if k in out["signals"]]
     shapes = []
     if out.get("event_time") is not None:
-        shapes.append(
-            dict(
-                type="line",
-                xref="x",
-                yref="paper",
-                x0=out["event_time"],
-                x1=out["event_time"],
-                y0=0,
-                y1=1,
-                line=dict(color="#7f7f7f", dash="dot", width=1),
-            )
-        )
+        shapes.append(dict(type="line", xref="x", yref="paper", x0=out["event_time"],
+                           x1=out["event_time"], y0=0, y1=1,
+                           line=dict(color="#7f7f7f", dash="dot", width=1)))
     return _fig(data, title, "Time t [s]", ytitle, shapes=shapes)
 
 
 def position_figure(out: Mapping[str, Any]) -> go.Figure:
     """x_C(t) and z_C(t) (two y axes), as thesis Figs 4.37/4.39/4.41."""
     t = out["t"]
-    data = [
-        _line(t, out["signals"]["x_C"], "blow-by x_C [m]", ACCENT),
-        _line(t, out["signals"]["z_C"], "altitude z_C [m]", SECOND, yaxis="y2"),
-    ]
-    return _fig(
-        data,
-        "Position of the confluence point",
-        "Time t [s]",
-        "Blow-by x_C [m]",
-        yaxis2=dict(title=dict(text="Altitude z_C [m]"), overlaying="y", side="right"),
-    )
+    data = [_line(t, out["signals"]["x_C"], "blow-by x_C [m]", ACCENT),
+            _line(t, out["signals"]["z_C"], "altitude z_C [m]", SECOND, yaxis="y2")]
+    return _fig(data, "Position of the confluence point", "Time t [s]", "Blow-by x_C [m]",
+                yaxis2=dict(title=dict(text="Altitude z_C [m]"), overlaying="y", side="right"))
 
 
 def tether_figure(out: Mapping[str, Any], indices=None, title="Tether profile") -> go.Figure:
@@ -531,62 +407,29 @@ def tether_figure(out: Mapping[str, Any], indices=None, title="Tether profile") 
         c = cols[j % 3]
         data.append(_line(s["x"], s["z"], f"tether, t = {s['t']:.1f} s", c))
         if "hull_x" in s:
-            data.append(
-                dict(
-                    type="scatter",
-                    mode="lines",
-                    x=s["hull_x"],
-                    y=s["hull_z"],
-                    name=f"hull, t = {s['t']:.1f} s",
-                    fill="toself",
-                    line=dict(color=c, width=1),
-                    opacity=0.6,
-                )
-            )
-    return _fig(
-        data,
-        title,
-        "Downwind distance x [m]",
-        "Height z [m]",
-        yaxis=dict(title=dict(text="Height z [m]"), scaleanchor="x", scaleratio=1),
-        height=520,
-    )
+            data.append(dict(type="scatter", mode="lines", x=s["hull_x"], y=s["hull_z"],
+                             name=f"hull, t = {s['t']:.1f} s", fill="toself",
+                             line=dict(color=c, width=1), opacity=0.6))
+    return _fig(data, title, "Downwind distance x [m]", "Height z [m]",
+                yaxis=dict(title=dict(text="Height z [m]"), scaleanchor="x", scaleratio=1),
+                height=520)
 
 
 def hull_zoom_figure(out: Mapping[str, Any], i: int) -> go.Figure:
     """The hull and the top of the tether at snapshot ``i`` (zoomed, to scale), with the path of
     the confluence point."""
     s = out["snapshots"][i]
-    data = [
-        _line(out["signals"]["x_C"], out["signals"]["z_C"], "path of C", "#b0b0b0", width=1),
-        _line(s["x"][-4:], s["z"][-4:], "tether (top)", ACCENT),
-    ]
+    data = [_line(out["signals"]["x_C"], out["signals"]["z_C"], "path of C", "#b0b0b0", width=1),
+            _line(s["x"][-4:], s["z"][-4:], "tether (top)", ACCENT)]
     if "hull_x" in s:
-        data.append(
-            dict(
-                type="scatter",
-                mode="lines",
-                x=s["hull_x"],
-                y=s["hull_z"],
-                name="hull",
-                fill="toself",
-                line=dict(color=SECOND, width=1),
-            )
-        )
+        data.append(dict(type="scatter", mode="lines", x=s["hull_x"], y=s["hull_z"],
+                         name="hull", fill="toself", line=dict(color=SECOND, width=1)))
         data.append(_line(s["rig_x"], s["rig_z"], "confluence lines", "#7f7f7f", width=1))
     xc, zc = s["x"][-1], s["z"][-1]
     half = 20.0 if "hull_x" not in s else max(20.0, 1.3 * (max(s["hull_x"]) - min(s["hull_x"])))
-    return _fig(
-        data,
-        f"Hull at t = {s['t']:.1f} s",
-        "Downwind distance x [m]",
-        "Height z [m]",
-        xaxis=dict(title=dict(text="Downwind distance x [m]"), range=[xc - half, xc + half]),
-        yaxis=dict(
-            title=dict(text="Height z [m]"),
-            scaleanchor="x",
-            scaleratio=1,
-            range=[zc - 0.8 * half, zc + 0.8 * half],
-        ),
-        height=520,
-    )
+    return _fig(data, f"Hull at t = {s['t']:.1f} s", "Downwind distance x [m]", "Height z [m]",
+                xaxis=dict(title=dict(text="Downwind distance x [m]"),
+                           range=[xc - half, xc + half]),
+                yaxis=dict(title=dict(text="Height z [m]"), scaleanchor="x", scaleratio=1,
+                           range=[zc - 0.8 * half, zc + 0.8 * half]),
+                height=520)
