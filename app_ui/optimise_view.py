@@ -27,13 +27,14 @@ import plotly.graph_objects as go
 import streamlit as st
 from plotly.subplots import make_subplots
 
-from aerostat_core import Configuration, Requirement, thesis_baseline
+from aerostat_core import Configuration, Requirement, budget, thesis_baseline
 from aerostat_core.io import inputs_from_dict, inputs_to_dict
 from aerostat_core.optimize import (
     CONSTRAINT_TEXT,
     DEFAULT_BOUNDS,
     OBJECTIVES,
     PERFORMANCE_CURVES,
+    SETTINGS,
     SOLVERS,
     VARIABLE_INFO,
     VARIABLES,
@@ -182,11 +183,13 @@ def build_request(
         req = replace(req, blow_by_limit=float(limit))
     except ValueError as exc:
         raise ValueError(f"Blow-by limit: {exc}") from None
-    OptimisationProblem(req, cfg, bounds, objective)  # raises on bad bounds/objective
+    problem = OptimisationProblem(req, cfg, bounds, objective)  # raises on bad bounds/objective
     if not solvers:
         raise ValueError("Solvers: choose at least one solver")
     if level not in RUN_LEVELS.values():
         raise ValueError(f"Run level {level!r}: choose quick or normal")
+    for solver in solvers:  # the compute budget, before anything runs (BudgetError says why)
+        budget.check_optimisation(problem, solver, SETTINGS[level][solver])
     limits: list[float] = []
     if pareto:
         if not 3 <= int(pareto_points) <= 40:

@@ -311,3 +311,31 @@ def test_cancelling_a_new_run_keeps_the_previous_results(opt):
     assert not opt.exception
     assert any("previous run's results are shown" in w for w in messages(opt, "warning"))
     assert list(table(opt, "Solver")["Solver"]) == ["SLSQP (2 starts)"]
+
+
+def test_an_optimisation_over_the_compute_budget_is_refused_before_it_runs():
+    from dataclasses import replace
+
+    from aerostat_core.budget import BudgetError
+    from app_ui import optimise_view as view
+
+    req, cfg = thesis_baseline()
+    heavy = json.dumps(
+        inputs_to_dict(req, replace(cfg, tether_segments=2000)),
+        sort_keys=True,
+        separators=(",", ":"),
+    )
+    with pytest.raises(BudgetError, match="This optimisation"):
+        view.build_request(
+            heavy,
+            limit=req.blow_by_limit,
+            bounds=DEFAULT_BOUNDS,
+            objective="total_mass",
+            level="quick",
+            seed=0,
+            solvers=["pso"],
+            pareto=False,
+            pareto_points=5,
+            pareto_low=0.8,
+            pareto_high=1.5,
+        )
