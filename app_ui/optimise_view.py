@@ -27,13 +27,14 @@ import plotly.graph_objects as go
 import streamlit as st
 from plotly.subplots import make_subplots
 
-from aerostat_core import Configuration, Requirement, thesis_baseline
+from aerostat_core import Configuration, Requirement, budget, thesis_baseline
 from aerostat_core.io import inputs_from_dict, inputs_to_dict
 from aerostat_core.optimize import (
     CONSTRAINT_TEXT,
     DEFAULT_BOUNDS,
     OBJECTIVES,
     PERFORMANCE_CURVES,
+    SETTINGS,
     SOLVERS,
     VARIABLE_INFO,
     VARIABLES,
@@ -84,8 +85,26 @@ def unit(u: str) -> str:
     return _UNIT.get(u, u)
 
 
+#: Design variables shown in other units than the engine's: the fin position is a percentage of
+#: the hull length on every page (the Design form's unit), the engine keeps the fraction.
+DISPLAY: dict[str, tuple[float, str, str]] = {
+    "position": (100.0, "Fin position Δl_f (root LE)", "% of hull length"),
+}
+
+
+def shown(name: str, value: Any) -> Any:
+    """A design variable's value (scalar or array) in its display unit."""
+    scale = DISPLAY.get(name, (1.0,))[0]
+    if scale == 1.0:
+        return value
+    return np.asarray(value, float) * scale if not np.isscalar(value) else float(value) * scale
+
+
 def var_label(name: str) -> str:
-    """'Fineness ratio f [-]' style label of a design variable."""
+    """'Fineness ratio f [-]' style label of a design variable, in its display unit."""
+    if name in DISPLAY:
+        _, label, u = DISPLAY[name]
+        return f"{label} [{u}]"
     label, u, _ = VARIABLE_INFO[name]
     return f"{label} [{unit(u)}]"
 
@@ -103,18 +122,19 @@ def variable_range_inputs(prefix: str, lower: str, upper: str) -> dict[str, tupl
     out = {}
     for name in VARIABLES:
         lo, hi = DEFAULT_BOUNDS[name]
+        scale = DISPLAY.get(name, (1.0,))[0]
         c = st.columns(2)
         values = [
             col.number_input(
                 f"{var_label(name)} – {word}",
-                value=float(default),
+                value=float(f"{default * scale:.12g}"),
                 key=f"{prefix}_{side}_{name}",
-                format="%.3f",
+                format="%.1f" if scale != 1.0 else "%.3f",
                 persist_state="session",
             )
             for col, word, default, side in ((c[0], lower, lo, "lo"), (c[1], upper, hi, "hi"))
         ]
-        out[name] = (values[0], values[1])
+        out[name] = tuple(float(f"{v / scale:.12g}") for v in values)
     return out
 
 
@@ -164,11 +184,13 @@ def build_request(
         req = replace(req, blow_by_limit=float(limit))
     except ValueError as exc:
         raise ValueError(f"Blow-by limit: {exc}") from None
-    OptimisationProblem(req, cfg, bounds, objective)  # raises on bad bounds/objective
+    problem = OptimisationProblem(req, cfg, bounds, objective)  # raises on bad bounds/objective
     if not solvers:
         raise ValueError("Solvers: choose at least one solver")
     if level not in RUN_LEVELS.values():
         raise ValueError(f"Run level {level!r}: choose quick or normal")
+    for solver in solvers:  # the compute budget, before anything runs (BudgetError says why)
+        budget.check_optimisation(problem, solver, SETTINGS[level][solver])
     limits: list[float] = []
     if pareto:
         if not 3 <= int(pareto_points) <= 40:
@@ -410,7 +432,7 @@ def comparison_frame(results: Sequence[OptimisationResult]) -> pd.DataFrame:
                 "Solver": r["solver"],
                 "f [-]": r["fineness_ratio"],
                 "ΔS_f [%]": r["area_change_pct"],
-                "Δl_f [-]": r["position"],
+                "Δl_f [% of l]": shown("position", r["position"]),
                 "Total mass [kg]": r["total_mass_kg"],
                 "Volume [m³]": r["volume_m3"],
                 "Blow-by [m]": r["blow_by_m"],
@@ -430,13 +452,21 @@ def comparison_frame(results: Sequence[OptimisationResult]) -> pd.DataFrame:
 COMPARISON_FORMAT = {
     "f [-]": st.column_config.NumberColumn(format="%.3f"),
     "ΔS_f [%]": st.column_config.NumberColumn(format="%.2f"),
-    "Δl_f [-]": st.column_config.NumberColumn(format="%.3f"),
+    "Δl_f [% of l]": st.column_config.NumberColumn(format="%.1f"),
     "Total mass [kg]": st.column_config.NumberColumn(format="%.2f"),
     "Volume [m³]": st.column_config.NumberColumn(format="%.1f"),
     "Blow-by [m]": st.column_config.NumberColumn(format="%.2f"),
     "α_eq [deg]": st.column_config.NumberColumn(format="%.2f"),
     "Gas cost [USD]": st.column_config.NumberColumn(format="%.0f"),
     "Time [s]": st.column_config.NumberColumn(format="%.2f"),
+}
+
+
+#: Pareto table: each quantity at the precision it has in the solver comparison.
+PARETO_FORMAT = {
+    "Blow-by limit [m]": st.column_config.NumberColumn(format="%.1f"),
+    "Gas cost [USD]": st.column_config.NumberColumn(format="%.0f"),
+    **{k: v for k, v in COMPARISON_FORMAT.items() if k not in ("Time [s]", "Gas cost [USD]")},
 }
 
 
@@ -485,7 +515,7 @@ def pareto_frame(front: ParetoFront) -> pd.DataFrame:
                 "Gas cost [USD]": r["gas_cost_USD"],
                 "f [-]": r["fineness_ratio"],
                 "ΔS_f [%]": r["area_change_pct"],
-                "Δl_f [-]": r["position"],
+                "Δl_f [% of l]": shown("position", r["position"]),
                 "On front": r["on_front"],
                 "Why infeasible": r["reason"],
             }
@@ -500,7 +530,9 @@ def sweep_frame(res: SensitivityResult) -> pd.DataFrame:
         [
             {
                 "Variable": r["variable"],
-                "Value": r["value"],
+                "Value": shown(r["variable"], r["value"])
+                if r["variable"] in DISPLAY
+                else r["value"],
                 "Volume [m³]": r["volume_m3"],
                 "Total mass [kg]": r["total_mass_kg"],
                 "Blow-by [m]": r["blow_by_m"],
@@ -519,16 +551,16 @@ def summary_frame(res: SensitivityResult) -> pd.DataFrame:
     return pd.DataFrame(
         [
             {
-                "Variable": f"{r['label']} [{unit(r['unit'])}]",
-                "Baseline": r["baseline"],
-                "Low": r["low"],
-                "High": r["high"],
+                "Variable": var_label(r["variable"]),
+                "Baseline": shown(r["variable"], r["baseline"]),
+                "Low": shown(r["variable"], r["low"]),
+                "High": shown(r["variable"], r["high"]),
                 "Mass change at low [%]": r["mass_change_low_pct"],
                 "Mass change at high [%]": r["mass_change_high_pct"],
                 "Volume change at low [%]": r["volume_change_low_pct"],
                 "Volume change at high [%]": r["volume_change_high_pct"],
-                "Feasible from": r["feasible_from"],
-                "Feasible to": r["feasible_to"],
+                "Feasible from": shown(r["variable"], r["feasible_from"]),
+                "Feasible to": shown(r["variable"], r["feasible_to"]),
             }
             for r in res.summary_rows()
         ]
@@ -575,7 +607,7 @@ def sensitivity_figure(res: SensitivityResult) -> go.Figure:
             y = sw.output(key)
             fig.add_trace(
                 go.Scatter(
-                    x=sw.values.tolist(),
+                    x=shown(name, sw.values).tolist(),
                     y=y.tolist(),
                     mode="lines+markers",
                     name=f"{key} vs {name}",
@@ -591,7 +623,7 @@ def sensitivity_figure(res: SensitivityResult) -> go.Figure:
             if (~feas).any():
                 fig.add_trace(
                     go.Scatter(
-                        x=sw.values[~feas].tolist(),
+                        x=shown(name, sw.values[~feas]).tolist(),
                         y=y[~feas].tolist(),
                         mode="markers",
                         name="constraint violated",
@@ -608,7 +640,10 @@ def sensitivity_figure(res: SensitivityResult) -> go.Figure:
                     col=c,
                 )
             fig.add_vline(
-                x=res.baseline[name], line=dict(color="#7f7f7f", dash="dot", width=1), row=r, col=c
+                x=shown(name, res.baseline[name]),
+                line=dict(color="#7f7f7f", dash="dot", width=1),
+                row=r,
+                col=c,
             )
             if c == 1:
                 fig.update_yaxes(
@@ -638,8 +673,8 @@ def map_figure(m: SensitivityMap) -> go.Figure:
     fig = go.Figure()
     fig.add_trace(
         go.Contour(
-            x=m.x.tolist(),
-            y=m.y.tolist(),
+            x=shown(m.x_variable, m.x).tolist(),
+            y=shown(m.y_variable, m.y).tolist(),
             z=m.total_mass.tolist(),
             name="total mass",
             colorscale="Blues",
@@ -651,8 +686,8 @@ def map_figure(m: SensitivityMap) -> go.Figure:
     if not m.resize:
         fig.add_trace(
             go.Contour(
-                x=m.x.tolist(),
-                y=m.y.tolist(),
+                x=shown(m.x_variable, m.x).tolist(),
+                y=shown(m.y_variable, m.y).tolist(),
                 z=m.blow_by.tolist(),
                 name=f"blow-by = limit {m.blow_by_limit:g} m",
                 showscale=False,
@@ -666,7 +701,7 @@ def map_figure(m: SensitivityMap) -> go.Figure:
         )
     bad = ~m.feasible
     if bad.any():
-        X, Y = np.meshgrid(m.x, m.y)
+        X, Y = np.meshgrid(shown(m.x_variable, m.x), shown(m.y_variable, m.y))
         fig.add_trace(
             go.Scatter(
                 x=X[bad].tolist(),
@@ -678,8 +713,8 @@ def map_figure(m: SensitivityMap) -> go.Figure:
         )
     fig.add_trace(
         go.Scatter(
-            x=[m.baseline[m.x_variable]],
-            y=[m.baseline[m.y_variable]],
+            x=[shown(m.x_variable, m.baseline[m.x_variable])],
+            y=[shown(m.y_variable, m.baseline[m.y_variable])],
             mode="markers",
             name="baseline",
             marker=dict(symbol="diamond", size=12, color="#000000"),
@@ -745,12 +780,12 @@ def pareto_figure(
                     front.volume[on][order],
                     front.fineness_ratio[on][order],
                     front.area_change[on][order],
-                    front.position[on][order],
+                    shown("position", front.position[on][order]),
                 ]
             ).tolist(),
             hovertemplate="blow-by %{x:.1f} m: %{y:.2f} " + unit(u) + "<br>V %{customdata[0]:.1f} "
             "m³, f %{customdata[1]:.2f}, ΔS_f %{customdata[2]:.1f} %, Δl_f "
-            "%{customdata[3]:.3f}<extra></extra>",
+            "%{customdata[3]:.1f} % of l<extra></extra>",
         ),
         secondary_y=False,
     )
@@ -1008,7 +1043,12 @@ def render_results(job: Mapping[str, Any], baseline_inputs_json: str) -> None:
             "within that limit (epsilon-constraint method, volume free, every constraint "
             "met); red crosses: limits no design within the bounds can meet."
         )
-        st.dataframe(pareto_frame(front), hide_index=True, key="opt_pareto_table")
+        st.dataframe(
+            pareto_frame(front),
+            hide_index=True,
+            column_config=PARETO_FORMAT,
+            key="opt_pareto_table",
+        )
         st.download_button(
             "Pareto front (CSV)",
             csv_of(front.rows()),

@@ -157,57 +157,72 @@ _POINTS = (
 )
 
 
+def _grid_triangles(n_rows: int, n_cols: int) -> tuple[list[int], list[int], list[int]]:
+    """Two triangles per cell of an (n_rows, n_cols) vertex grid (row-major), as mesh3d i, j, k."""
+    r, c = np.meshgrid(np.arange(n_rows - 1), np.arange(n_cols - 1), indexing="ij")
+    p = (r * n_cols + c).ravel()
+    q, d = p + 1, p + n_cols
+    return (
+        np.concatenate([p, q]).tolist(),
+        np.concatenate([q, q + n_cols]).tolist(),
+        np.concatenate([d, d]).tolist(),
+    )
+
+
 def hull_3d_figure(rep: Mapping[str, Any]) -> go.Figure:
-    """Interactive 3-D view: NPL hull (surface of revolution), fins, CB/CG/confluence point."""
+    """Interactive 3-D view: NPL hull (surface of revolution), fins, CB/CG/confluence point.
+
+    Three WebGL traces only: the hull and the fins are one mesh (face colours), the three points
+    one marker trace, the confluence lines one line trace. In a browser without a GPU (software
+    WebGL, SwiftShader) the time goes into setting up each trace, not into the vertices
+    (benchmarks/bench_app.py: a 16x coarser surface saved little; 9 traces -> 3 about halved it).
+    """
     h = rep["hull"]
-    x, y, z = hull_surface(h["a1"], h["a2"], h["b"], shape=rep.get("shape", "npl"))
+    x, y, z = (np.asarray(a, float) for a in hull_surface(h["a1"], h["a2"], h["b"], shape=rep.get("shape", "npl")))
+    n_rows, n_cols = x.shape
+    vx, vy, vz = x.ravel().tolist(), y.ravel().tolist(), z.ravel().tolist()
+    ii, jj, kk = _grid_triangles(n_rows, n_cols)
+    colours = ["#a9bfdc"] * len(ii)
+    for outline in rep["fins"]["outlines"]:
+        p = np.asarray(outline)[:4]
+        o = len(vx)
+        vx += _l(p[:, 0])
+        vy += _l(p[:, 1])
+        vz += _l(p[:, 2])
+        ii += [o, o]
+        jj += [o + 1, o + 2]
+        kk += [o + 2, o + 3]
+        colours += ["#e69f00", "#e69f00"]
     traces: list[dict] = [
         dict(
-            type="surface",
-            x=x,
-            y=y,
-            z=z,
-            name="hull",
-            showscale=False,
-            surfacecolor=z,
-            colorscale=[[0, "#c9d6e8"], [1, "#8fa9cc"]],
+            type="mesh3d",
+            x=vx,
+            y=vy,
+            z=vz,
+            i=ii,
+            j=jj,
+            k=kk,
+            facecolor=colours,
+            name="hull (blue) and fins (orange)",
+            showlegend=True,
             hoverinfo="skip",
             lighting=dict(ambient=0.6, diffuse=0.6, specular=0.2),
         )
     ]
-    for i, outline in enumerate(rep["fins"]["outlines"]):
-        p = np.asarray(outline)[:4]
-        traces.append(
-            dict(
-                type="mesh3d",
-                x=_l(p[:, 0]),
-                y=_l(p[:, 1]),
-                z=_l(p[:, 2]),
-                i=[0, 0],
-                j=[1, 2],
-                k=[2, 3],
-                color="#e69f00",
-                opacity=0.95,
-                name="fins" if i == 0 else f"fin {i + 1}",
-                showlegend=i == 0,
-                legendgroup="fins",
-                hoverinfo="name",
-                flatshading=True,
-            )
+    pts = [(rep["points"][key], label, colour) for key, label, _s, _sym, colour in _POINTS]
+    traces.append(
+        dict(
+            type="scatter3d",
+            x=[float(p[0][0]) for p in pts],
+            y=[0.0] * len(pts),
+            z=[float(p[0][1]) for p in pts],
+            mode="markers",
+            name="CB (green), CG (black), confluence point C (red)",
+            text=[p[1] for p in pts],
+            hovertemplate="%{text}<extra></extra>",
+            marker=dict(size=5, color=[p[2] for p in pts]),
         )
-    for key, label, _short, _sym, colour in _POINTS:
-        xi, zz = rep["points"][key]
-        traces.append(
-            dict(
-                type="scatter3d",
-                x=[xi],
-                y=[0.0],
-                z=[zz],
-                mode="markers",
-                name=label,
-                marker=dict(size=5, color=colour),
-            )
-        )
+    )
     lx: list = []
     lz: list = []
     for line in rep["confluence_lines"]:

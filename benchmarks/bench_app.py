@@ -203,6 +203,8 @@ def bench_3d_cost(browser: Any) -> dict[str, Any]:
     for t in full["data"]:
         if t.get("type") == "surface":
             verts += len(_rows(t["x"])) * len(_rows(t["x"])[0])
+        elif t.get("type") == "mesh3d":
+            verts += len(t["x"])
     empty = {"data": [{"type": "scatter3d", "x": [0], "y": [0], "z": [0]}], "layout": {}}
     js = (Path(plotly.__file__).parent / "package_data" / "plotly.min.js").read_text()
     page = browser.new_page(viewport={"width": 1000, "height": 700})
@@ -227,6 +229,8 @@ def bench_3d_cost(browser: Any) -> dict[str, Any]:
         return d ? gl.getParameter(d.UNMASKED_RENDERER_WEBGL) : gl.getParameter(gl.RENDERER); }"""
     )
     out = {
+        "traces": len(full["data"]),
+        "has_surface": any(t.get("type") == "surface" for t in full["data"]),
         "renderer": renderer,
         "verts": verts,
         "bytes": len(json.dumps(full)),
@@ -392,11 +396,15 @@ def main() -> None:
             f"browser: 3-D view tab -> WebGL scene drawn:     {_ms(out['3d'])}  target <= 2000 ms"
         )
         for w in out["webgl"]:
+            coarse = (
+                f"4x coarser surface {w['coarse']:.0f} ms, "
+                if w["coarse"] != w["full"] and w.get("has_surface")
+                else ""
+            )
             print(
                 f"3-D cost (plotly.js alone, median of 5): the hull figure {w['full']:.0f} ms "
-                f"({w['verts']} surface vertices, {w['bytes'] / 1e3:.0f} kB JSON), 4x coarser "
-                f"surface {w['coarse']:.0f} ms, an empty 3-D scene {w['empty']:.0f} ms; "
-                f"WebGL renderer: {w['renderer']}"
+                f"({w['traces']} traces, {w['verts']} vertices, {w['bytes'] / 1e3:.0f} kB JSON), "
+                f"{coarse}an empty 3-D scene {w['empty']:.0f} ms; WebGL renderer: {w['renderer']}"
             )
     bench_progress()
 

@@ -60,7 +60,8 @@ def _geometry_tab(rep: dict) -> None:
             plots.geometry_styler(geometry_frame(rep["geometry_rows"])),
             hide_index=True,
             width="stretch",
-            height=460,
+            # every row in sight (it showed 12 of 26): 35 px a row plus the header
+            height=35 * (len(rep["geometry_rows"]) + 1) + 3,
             key="geometry_table",
         )
     with g2:
@@ -109,7 +110,13 @@ def _mass_tab(rep: dict) -> None:
 
 def _performance_tab(rep: dict) -> None:
     pdf = performance_frame(rep["performance_rows"])
-    st.dataframe(performance_styler(pdf), hide_index=True, width="stretch", key="performance_table")
+    st.dataframe(
+        performance_styler(pdf),
+        hide_index=True,
+        width="stretch",
+        height=min(35 * (len(pdf) + 1) + 3, 900),  # every row of a usual sweep in sight
+        key="performance_table",
+    )
     st.caption("Rows with a red background break an operating limit (last column says which).")
     st.download_button(
         "Performance table (CSV)",
@@ -317,8 +324,8 @@ with col_out:
             key="case_name",
             placeholder=default_name,
             max_chars=state.MAX_NAME_CHARS,
-            help="Saved cases are compared on the Compare page. They last for this "
-            "browser session: export them there as JSON to keep them.",
+            help="Saved cases are compared on the Compare page. They are kept in this "
+            "workspace (the page's address): bookmark it to come back to them.",
         )
         c2.form_submit_button(
             "Save case", on_click=_save_case, icon=":material/bookmark_add:", width="stretch"

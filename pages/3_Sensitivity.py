@@ -8,8 +8,10 @@ import json
 import streamlit as st
 
 from aerostat_core.optimize import VARIABLE_INFO, VARIABLES
+from aerostat_core.validation import short
 from app_ui import optimise_view as view
 from app_ui import shapes_view
+from app_ui import widgets
 
 st.title("Sensitivity")
 st.caption(
@@ -92,7 +94,7 @@ st.subheader("One factor at a time", anchor=False)
 try:
     res = view.cached_sensitivity(inputs_json, ranges_json, n_points, sweep_mode == "resize")
 except ValueError as exc:
-    st.error(f"Cannot compute the sweeps: {exc}", icon=":material/error:")
+    st.error(widgets.plain(short(f"Cannot compute the sweeps: {exc}")), icon=":material/error:")
 else:
     if sweep_mode == "resize":
         st.caption(
@@ -142,7 +144,7 @@ else:
     try:
         smap = view.cached_map(inputs_json, x_var, y_var, ranges_json, n_map, map_mode == "resize")
     except ValueError as exc:
-        st.error(f"Cannot compute the map: {exc}", icon=":material/error:")
+        st.error(widgets.plain(short(f"Cannot compute the map: {exc}")), icon=":material/error:")
     else:
         held = [k for k in VARIABLES if k not in (x_var, y_var)][0]
         st.caption(

@@ -7,7 +7,9 @@ import pandas as pd
 import streamlit as st
 
 from aerostat_core.optimize import OBJECTIVES, SOLVERS
+from aerostat_core.validation import short
 from app_ui import optimise_view as view
+from app_ui import widgets
 
 st.title("Optimise")
 st.caption(
@@ -122,7 +124,7 @@ if submitted:
             pareto_high=float(high),
         )
     except ValueError as exc:
-        st.error(f"Cannot run: {exc}", icon=":material/error:")
+        st.error(widgets.plain(short(f"Cannot run: {exc}")), icon=":material/error:")
     else:
         view.start_job(request)
 

@@ -9,6 +9,7 @@ import pandas as pd
 import streamlit as st
 
 from aerostat_core.io import rows_to_csv
+from aerostat_core.validation import short
 from app_ui import widgets
 
 st.title("Method")
@@ -292,7 +293,7 @@ with tab_val:
         ref = _reference_rows()
     except Exception as exc:  # noqa: BLE001 - never show a traceback
         ref = []
-        st.error(f"The reference checks could not be run: {exc}")
+        st.error(widgets.plain(short(f"The reference checks could not be run: {exc}")))
     if ref is None:
         st.info(
             "The live validation table needs `aerostat_core.reference`, which is not "

@@ -85,10 +85,13 @@ def test_sized_volume_follows_the_payload(at):
     side = chart(at, "side_view")
     hull_x = values(trace(side, "hull"), "x")
     assert hull_x.max() == pytest.approx(float(expected.airframe.hull.length))
-    # the 3-D view is the same hull: its surface spans the new length
+    # the 3-D view is the same hull: its mesh spans the new length (fins stay on the hull)
     show_tab(at, "3-D view")
-    surf = next(t for t in chart(at, "hull_3d")["data"] if t["type"] == "surface")
-    assert values(surf, "x").max() == pytest.approx(float(expected.airframe.hull.length))
+    data = chart(at, "hull_3d")["data"]
+    assert len(data) == 3  # one mesh, one marker trace, one line trace (software WebGL cost)
+    mesh = next(t for t in data if t["type"] == "mesh3d")
+    assert values(mesh, "x").max() == pytest.approx(float(expected.airframe.hull.length))
+    assert values(mesh, "x").min() == pytest.approx(0.0, abs=1e-9)
 
 
 def test_performance_plots_show_the_engine_curves(at):

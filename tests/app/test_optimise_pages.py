@@ -49,15 +49,20 @@ def test_sensitivity_sweeps_plot_the_engine_values(sens):
     assert sens.title[0].value == "Sensitivity"
     assert chart_keys(sens) == ["sens_ofat", "sens_map"]
     fig = chart(sens, "sens_ofat")
+    from app_ui.optimise_view import shown
+
     res = one_at_a_time(req, cfg, n_points=7, resize=True)
     for name in VARIABLES:
         mass = _traces(fig, f"total_mass vs {name}")[0]
-        assert np.allclose(values(mass, "x"), res.sweeps[name].values)
+        # x in display units: the fin position in % of the hull length, as on the Design page
+        assert np.allclose(values(mass, "x"), shown(name, res.sweeps[name].values))
         assert np.allclose(values(mass, "y"), res.sweeps[name].designs.total_mass, rtol=1e-9)
         bb = _traces(fig, f"blow_by vs {name}")[0]
         assert np.allclose(values(bb, "y"), req.blow_by_limit, rtol=1e-6)  # re-sized
     df = table(sens, "Variable")
-    assert list(df["Low"]) == [DEFAULT_BOUNDS[k][0] for k in VARIABLES]
+    assert list(df["Low"]) == pytest.approx([shown(k, DEFAULT_BOUNDS[k][0]) for k in VARIABLES])
+    assert df["Variable"].iloc[2] == "Fin position Δl_f (root LE) [% of hull length]"
+    assert df["Low"].iloc[2] == pytest.approx(60.0)
     assert df["Mass change at high [%]"].iloc[1] == pytest.approx(
         res.summary_rows()[1]["mass_change_high_pct"]
     )
@@ -99,7 +104,7 @@ def test_sensitivity_held_sweep_and_other_map(sens):
             {"sens_lo_fineness_ratio": 4.0, "sens_hi_fineness_ratio": 3.0},
             ["lower bound 4", "fineness_ratio"],
         ),
-        ({"sens_hi_position": 0.99}, ["position", "valid range [0.4, 0.95]"]),
+        ({"sens_hi_position": 99.0}, ["position", "valid range [0.4, 0.95]"]),  # % of l
     ],
 )
 def test_sensitivity_bad_range_names_the_field(sens, changes, words):
@@ -306,3 +311,31 @@ def test_cancelling_a_new_run_keeps_the_previous_results(opt):
     assert not opt.exception
     assert any("previous run's results are shown" in w for w in messages(opt, "warning"))
     assert list(table(opt, "Solver")["Solver"]) == ["SLSQP (2 starts)"]
+
+
+def test_an_optimisation_over_the_compute_budget_is_refused_before_it_runs():
+    from dataclasses import replace
+
+    from aerostat_core.budget import BudgetError
+    from app_ui import optimise_view as view
+
+    req, cfg = thesis_baseline()
+    heavy = json.dumps(
+        inputs_to_dict(req, replace(cfg, tether_segments=2000)),
+        sort_keys=True,
+        separators=(",", ":"),
+    )
+    with pytest.raises(BudgetError, match="This optimisation"):
+        view.build_request(
+            heavy,
+            limit=req.blow_by_limit,
+            bounds=DEFAULT_BOUNDS,
+            objective="total_mass",
+            level="quick",
+            seed=0,
+            solvers=["pso"],
+            pareto=False,
+            pareto_points=5,
+            pareto_low=0.8,
+            pareto_high=1.5,
+        )

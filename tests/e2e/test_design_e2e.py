@@ -11,7 +11,8 @@ import re
 import pytest
 from playwright.sync_api import Page, expect
 
-from aerostat_core.io import design_from_json
+from aerostat_core import thesis_baseline
+from aerostat_core.io import design_from_json, design_to_json
 from tests.e2e.helpers import (
     assert_no_exception,
     goto_page,
@@ -164,3 +165,26 @@ def test_screenshots_of_each_page(app_page: Page, console_errors: list[str]):
     expect(page.get_by_text("Design chain.", exact=True)).to_be_visible()
     screenshot(page, "method_equations")
     assert console_errors == []
+
+
+def test_an_upload_message_names_the_file_actually_chosen(app_page: Page):
+    page = app_page
+    page.get_by_text("Design file: export / import").click()
+    good = design_to_json(*thesis_baseline()).encode()
+    dropzone = page.get_by_test_id("stFileUploaderDropzoneInput").first
+    dropzone.set_input_files(
+        files=[{"name": "first-file.json", "mimeType": "application/json", "buffer": good}]
+    )
+    wait_for_rerun(page)
+    expect(page.get_by_text("Loaded the design inputs from first-file.json")).to_be_visible()
+    # a 2 MB file: the browser refuses it (server limit 1 MB); the old message must not stay
+    # next to it as if it were about this file
+    big = b" " * 2_000_000
+    dropzone.set_input_files(
+        files=[{"name": "second-file.json", "mimeType": "application/json", "buffer": big}]
+    )
+    page.wait_for_timeout(500)
+    page.get_by_role("button", name="Update design").first.click()  # any rerun
+    wait_for_rerun(page)
+    expect(page.get_by_text("Loaded the design inputs from first-file.json")).to_have_count(0)
+    assert_no_exception(page, "Design page after a refused upload")
