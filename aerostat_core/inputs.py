@@ -14,7 +14,7 @@ from .materials import Fabric, TetherSpec
 from .mission import POWER_ROUTES, MissionSpec
 from .rules import DEFAULT_RULES, RULE_NAMES, RuleSet, get_rules
 from .shapes import SHAPE_INFO, SHAPES
-from .validation import check_choice, check_int, check_number
+from .validation import InputError, check_choice, check_int, check_number
 
 GAS_KINDS = ("helium", "hydrogen")
 DENSITY_MODELS = ("ideal", "fixed")
@@ -293,8 +293,11 @@ class HullSpec:
         lo, hi = SHAPE_INFO[self.shape].fineness_range
         try:
             check_number(o, "fineness_ratio", self.fineness_ratio, lo, hi)
-        except ValueError as exc:
-            raise ValueError(f"{exc} for shape {self.shape!r}") from None
+        except InputError as exc:
+            raise InputError(
+                f"{exc} for shape {self.shape!r}", owner=o, field="fineness_ratio",
+                value=exc.value, lo=lo, hi=hi, unit="", reason=f"{exc.reason} for shape "
+                f"{self.shape!r}") from None
         check_number(o, "nose_fraction", self.nose_fraction, 0.2, 0.8)
         if self.volume is not None:
             check_number(o, "volume", self.volume, 1.0, 1e5, "m3")

@@ -371,6 +371,7 @@ def design_report(d: Design) -> dict[str, Any]:
     prow = performance_rows(d)
     return {
         "summary": d.summary(),
+        "constraints": d.constraint_rows(),
         "violations": list(d.violations),
         "feasible": bool(d.feasible),
         "sized": bool(d.sized),

@@ -39,6 +39,7 @@ from functools import cache
 import numpy as np
 
 from .aerodynamics import hoerner_volumetric_drag
+from .validation import InputError
 
 #: Gertler parameters (m = station of maximum diameter / l, r0 nose and r1 tail radius
 #: parameters, C_p prismatic coefficient, standard l/d) of the standard envelopes, as tabulated
@@ -198,10 +199,10 @@ def check_fineness(shape: str, fineness_ratio) -> None:
     bad = ~np.isfinite(f) | (f < lo - 1e-9) | (f > hi + 1e-9)
     if np.any(bad):
         v = float(f[bad][0]) if f.ndim else float(f)
-        raise ValueError(
-            f"HullSpec.fineness_ratio = {v:g} is outside the valid range [{lo:g}, {hi:g}] for "
-            f"shape {shape!r} ({shape_info(shape).label})"
-        )
+        reason = (f"is outside the valid range [{lo:g}, {hi:g}] for shape {shape!r} "
+                  f"({shape_info(shape).label})")
+        raise InputError(f"HullSpec.fineness_ratio = {v:g} {reason}", owner="HullSpec",
+                         field="fineness_ratio", value=v, lo=lo, hi=hi, reason=reason)
 
 
 @cache

@@ -139,10 +139,10 @@ def variable_range_inputs(prefix: str, lower: str, upper: str) -> dict[str, tupl
 
 
 def load_inputs() -> tuple[str, Requirement, Configuration]:
-    """The current design inputs (``st.session_state["design_inputs"]``; the thesis baseline when
-    missing or corrupt) as (canonical JSON, Requirement, Configuration)."""
+    """The current design inputs (``st.session_state["design_inputs"]``; the default inputs when
+    missing or corrupt) as (canonical JSON, resolved Requirement, Configuration)."""
     req, cfg = current_inputs()
-    return inputs_key(inputs_to_dict(req, cfg)), req, cfg
+    return inputs_key(inputs_to_dict(req, cfg)), req.resolved(), cfg
 
 
 def is_thesis_preset(req: Requirement, cfg: Configuration) -> bool:

@@ -1153,8 +1153,20 @@ def _choice(key: str, horizontal: bool = False) -> None:
 
 #: Form layout: group -> widgets in order (field keys, choice keys, or the special keys).
 LAYOUT: dict[str, tuple[str, ...]] = {
-    "requirement": ("in_payload", "in_altitude", "in_site", "in_isa"),
-    "wind": ("in_design_wind", "in_blow_by", "in_wind_max", "in_wind_step", "in_min_sf"),
+    "requirement": ("in_rules", "in_payload", "in_altitude", "in_site", "in_isa", "in_site_temp"),
+    "wind": (
+        "in_design_wind",
+        "in_survival_wind",
+        "in_blow_by",
+        "in_loss_limit",
+        "in_free_lift",
+        "in_min_sf",
+        "in_survival_sf",
+        "in_max_angle",
+        "in_wv_margin",
+        "in_wind_max",
+        "in_wind_step",
+    ),
     "configuration": (
         "in_shape",
         VOLUME_MODE_KEY,
@@ -1273,3 +1285,28 @@ def input_form() -> None:
                 for key in keys:
                     _widget(key)
         _submit_button(SUBMIT_KEY + "_bottom")
+
+
+def constraint_table_rows(rows: list[dict]) -> list[dict]:
+    """Display rows of the constraint table (aerostat_core.constraints via the design report):
+    label, where checked, value, limit and margin with the unit (4 significant digits; an
+    unbounded margin shows as a dash), and met."""
+
+    def fmt(x: float) -> str:
+        if x != x or abs(x) == float("inf"):
+            return "–"
+        text = f"{x:.4g}"
+        return "0" if text == "-0" else text
+
+    return [
+        {
+            "Constraint": r["label"],
+            "Checked at": r["checked_at"],
+            "Value": fmt(r["value"]),
+            "Limit": fmt(r["limit"]),
+            "Margin": fmt(r["margin"]),
+            "Unit": r["unit"],
+            "Met": "yes" if r["met"] else "NO",
+        }
+        for r in rows
+    ]

@@ -3,6 +3,7 @@ performance versus wind, tether profiles; save as a case; JSON/CSV export and im
 
 from __future__ import annotations
 
+import pandas as pd
 import streamlit as st
 
 from aerostat_core import thesis_baseline
@@ -228,6 +229,15 @@ with col_out:
     stale = bool(st.session_state.get(widgets.ERROR_KEY))
 
     st.subheader("Result", anchor=False)
+    rules = widgets.RULE_SETS[rep["inputs"]["requirement"]["rules"]]
+    st.caption(
+        f"Rule set: **{rules.name}** ({rules.title}). "
+        + (f"Sized by: {s['binding_constraint'].replace('_', ' ')}." if rep["sized"] else "")
+    )
+    with st.expander("Constraint table: every limit, its margin and where it is checked",
+                     icon=":material/rule:"):
+        st.dataframe(pd.DataFrame(widgets.constraint_table_rows(rep["constraints"])),
+                     hide_index=True, width="stretch", key="constraint_table")
     if stale:
         st.warning(
             "These results are for the last valid inputs: your latest change was not applied "

@@ -10,8 +10,7 @@ import streamlit as st
 from aerostat_core.optimize import VARIABLE_INFO, VARIABLES
 from aerostat_core.validation import short
 from app_ui import optimise_view as view
-from app_ui import shapes_view
-from app_ui import widgets
+from app_ui import shapes_view, widgets
 
 st.title("Sensitivity")
 st.caption(
@@ -30,7 +29,8 @@ vol_txt = f"given volume {cfg.hull.volume:g} m³" if cfg.hull.volume is not None
 st.markdown(
     f"**Baseline:** f = {base['fineness_ratio']:g}, ΔS_f = {base['area_change']:g} %, "
     f"Δl_f = {base['position']:g}, {vol_txt}; payload {req.payload_mass:g} kg at "
-    f"{req.altitude:g} m; blow-by limit {req.blow_by_limit:g} m at {req.design_wind:g} m/s."
+    f"{req.altitude:g} m; blow-by limit {req.blow_by_limit:g} m at {req.design_wind:g} m/s; "
+    f"rule set **{req.rules}** (every constraint of its table applies)."
 )
 
 VOLUME_MODES = {

@@ -15,11 +15,15 @@ st.title("Optimise")
 st.caption(
     "Minimise the total mass over the three design variables of the thesis: fineness ratio f, "
     "fin-area change ΔS_f and fin position Δl_f. The hull volume is not a variable: for each "
-    "design it is the smallest hull that meets the blow-by limit at the design wind with "
-    "positive free lift and a taut tether (nested sizing V*(x)). Three solvers must agree."
+    "design it is the smallest hull that meets every constraint of the rule set's table "
+    "(nested sizing V*(x)). Three solvers must agree."
 )
 
 inputs_json, req, cfg = view.load_inputs()
+st.caption(
+    f"Requirement from the Design page: {req.payload_mass:g} kg at {req.altitude:g} m, rule set "
+    f"**{req.rules}** (same limits and the same sized design as the Design page)."
+)
 
 with st.expander("Problem definition", icon=":material/functions:"):
     st.dataframe(pd.DataFrame(view.problem_rows(req, cfg)), hide_index=True, key="opt_problem")

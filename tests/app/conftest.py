@@ -27,6 +27,22 @@ def at() -> AppTest:
 
 
 @pytest.fixture
+def thesis_at() -> AppTest:
+    """A fresh session with the thesis baseline loaded (what "Load thesis baseline" does): for
+    the tests that check the pages against the thesis' numbers. The app's own default is the
+    practice rule set (tests/app/test_design_page.py::test_opens_on_the_practice_default)."""
+    from aerostat_core import thesis_baseline
+    from aerostat_core.io import inputs_to_dict
+
+    app = AppTest.from_file(str(APP_PATH), default_timeout=TIMEOUT_S)
+    app.session_state["design_inputs"] = inputs_to_dict(*thesis_baseline())
+    app.run()
+    assert not app.exception, [e.value for e in app.exception]
+    assert app.session_state["design_inputs"] == inputs_to_dict(*thesis_baseline())
+    return app
+
+
+@pytest.fixture
 def clear_cache():
     """Start with empty st.cache_data caches (cached results outlive an AppTest session)."""
     st.cache_data.clear()

@@ -9,7 +9,7 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
-from aerostat_core import FABRICS, design, thesis_baseline
+from aerostat_core import FABRICS, Requirement, design, thesis_baseline
 from aerostat_core.io import design_to_json, inputs_from_dict, inputs_to_dict
 from app_ui import state
 from app_ui.widgets import FIELD_BY_KEY
@@ -31,8 +31,39 @@ from tests.app.helpers import (
 )
 
 
+
+
+@pytest.fixture
+def at(thesis_at):
+    """These tests check the page against the thesis' numbers: start from the thesis baseline
+    (the app itself opens on the practice default)."""
+    return thesis_at
+
 def _baseline():
     return design(*thesis_baseline())
+
+
+def test_opens_on_the_practice_default():
+    """A new user sees design(Requirement()): the practice rules, hull sized, limits empty (taken
+    from the rule set), the rule set and the binding constraint named, every margin listed."""
+    from streamlit.testing.v1 import AppTest
+
+    from tests.app.conftest import APP_PATH, TIMEOUT_S
+
+    app = AppTest.from_file(str(APP_PATH), default_timeout=TIMEOUT_S)
+    app.run()
+    assert not app.exception
+    d = design(Requirement())
+    assert app.session_state["design_inputs"] == state.baseline_inputs()
+    assert metric_float(app, "Volume [m³]") == pytest.approx(d.volume, abs=0.05)
+    assert metric_float(app, "Total mass [kg]") == pytest.approx(d.total_mass, abs=0.05)
+    assert app.selectbox(key="in_rules").value == "practice"
+    assert app.radio(key="in_volume_mode").value == "sized"
+    assert any("Rule set: **practice**" in c.value and "free lift" in c.value
+               for c in app.caption)
+    rows = table(app, "Constraint")
+    assert list(rows["Met"]) == ["yes"] * len(d.constraint_rows())
+    assert d.feasible
 
 
 def test_opens_on_the_thesis_baseline(at):
@@ -239,7 +270,7 @@ def test_rejected_input_shows_next_to_its_group_and_changes_nothing(at):
     [
         ({"in_payload": 600.0}, "requirement", "in_payload"),
         ({"in_altitude": 5.0}, "requirement", "in_altitude"),
-        ({"in_wind_max": 45.0}, "wind", "in_wind_max"),
+        ({"in_wind_max": 65.0}, "wind", "in_wind_max"),
         ({"in_purity": 120.0}, "gas", "in_purity"),
         ({"in_hull_fabric": "Custom", "in_hull_gsm": 0.0}, "materials", "in_hull_gsm"),
         ({"in_fineness": 9.0}, "configuration", "in_fineness"),
@@ -390,8 +421,9 @@ def test_corrupt_state_falls_back_to_the_baseline(at):
     at.session_state["design_inputs"] = {"requirement": {"payload_mass": "x"}}
     at.run()
     assert not at.exception
-    assert at.session_state["design_inputs"] == inputs_to_dict(*thesis_baseline())
-    assert metric(at, "Volume [m³]") == "170.0"
+    # the corrupt inputs are replaced by the app's default (practice rules, hull sized)
+    assert at.session_state["design_inputs"] == state.baseline_inputs()
+    assert metric_float(at, "Volume [m³]") == pytest.approx(design(Requirement()).volume, abs=0.05)
 
 
 def test_downloads_are_offered_in_every_tab(at):

@@ -19,6 +19,14 @@ SENS_PAGE = "pages/3_Sensitivity.py"
 OPT_PAGE = "pages/4_Optimise.py"
 
 
+
+
+@pytest.fixture
+def at(thesis_at):
+    """These tests check the page against the thesis' numbers: start from the thesis baseline
+    (the app itself opens on the practice default)."""
+    return thesis_at
+
 def _set(at, key, value):
     for kind in ("number_input", "radio", "selectbox", "text_input", "checkbox", "multiselect"):
         for el in getattr(at, kind):

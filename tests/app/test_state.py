@@ -14,6 +14,7 @@ from aerostat_core.io import (
     MAX_JSON_BYTES,
     cases_to_json,
     design_to_json,
+    inputs_from_dict,
     inputs_to_dict,
 )
 from aerostat_core.report import thesis_gui_cases
@@ -32,7 +33,9 @@ def _snapshot(d: dict) -> str:
 
 
 def test_init_state_sets_the_contract(s):
-    assert s["design_inputs"] == inputs_to_dict(*thesis_baseline())
+    # the default: the practice rules, 10 kg at 300 m, hull sized (the CLI's and design()'s)
+    assert s["design_inputs"] == state.baseline_inputs()
+    assert s["design_inputs"]["requirement"]["rules"] == "practice"
     assert s["cases"] == {}
     s["design_inputs"]["requirement"]["payload_mass"] = 99.0
     state.init_state(s)  # never overwrites
@@ -50,7 +53,7 @@ def test_current_and_set_inputs_round_trip(s):
 
 def test_corrupt_inputs_fall_back_to_the_baseline(s):
     s["design_inputs"] = {"requirement": {"payload_mass": "lots"}}
-    assert state.current_inputs(s) == thesis_baseline()
+    assert state.current_inputs(s) == inputs_from_dict(state.baseline_inputs())
 
 
 def test_save_rename_delete(s):
@@ -159,7 +162,7 @@ def test_import_cases_file(s):
     level, msg = state.import_file(cases_to_json(thesis_gui_cases()).encode(), s)
     assert level == "success" and "Added 4 case(s)" in msg
     assert list(s["cases"]) == list(thesis_gui_cases())
-    assert s["design_inputs"] == inputs_to_dict(*thesis_baseline())
+    assert s["design_inputs"] == state.baseline_inputs()
 
 
 HOSTILE = [
