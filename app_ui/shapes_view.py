@@ -20,6 +20,7 @@ from aerostat_core.export import design_stl, gore_csv, gore_dxf, gore_pattern, g
 from aerostat_core.io import inputs_from_dict
 from aerostat_core.shape_comparison import (
     TABLE_SHAPES,
+    THESIS_SHAPE_PRESET,  # noqa: F401 - re-exported for pages/7_Shapes.py
     comparison_notes,
     full_model_shape_comparison,
     shape_dimensions_rows,

@@ -984,7 +984,10 @@ def form_error(exc: _validation.InputError) -> InputError:
         rng = _range_words(exc.lo * f.scale, exc.hi * f.scale, exc.lo_open, exc.hi_open)
         if "too small" in exc.reason:
             return InputError(f.group, f"{f.label}: {value} is too small to compute with.", f.key)
-        return InputError(f.group, f"{f.label}: {value} is not allowed; it must be {rng}.", f.key)
+        where = exc.reason[exc.reason.find(" for shape"):] if " for shape" in exc.reason else ""
+        return InputError(
+            f.group, f"{f.label}: {value} is not allowed; it must be {rng}{where}.", f.key
+        )
     return InputError(f.group, f"{f.label}: {humanise(exc.reason)}.", f.key)
 
 

@@ -31,8 +31,6 @@ from tests.app.helpers import (
 )
 
 
-
-
 @pytest.fixture
 def at(thesis_at):
     """These tests check the page against the thesis' numbers: start from the thesis baseline

@@ -4,9 +4,8 @@ a diverging case end with a clear message, never a traceback."""
 
 from __future__ import annotations
 
-import re
-
 import math
+import re
 
 import numpy as np
 import pytest

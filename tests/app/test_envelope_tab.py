@@ -10,7 +10,7 @@ import numpy as np
 from aerostat_core import design
 from aerostat_core.io import inputs_from_dict
 from aerostat_core.site_wind import flyable_time
-from tests.app.helpers import chart, messages, metric, show_tab, trace, values
+from tests.app.helpers import chart, metric, raw_messages, show_tab, trace, values
 
 
 def test_envelope_tab_shows_heat_map_flyable_time_and_bands(at):
@@ -54,4 +54,5 @@ def test_bad_wind_csv_gets_a_message_not_a_traceback(at):
     at.run()
     assert not at.exception
     # the cell is quoted as plain text, its markdown escaped
-    assert any(r"row 1: '\*\*gusty\*\*' is not a wind speed" in m for m in messages(at, "error"))
+    assert any(r"row 1: '\*\*gusty\*\*' is not a wind speed" in m
+               for m in raw_messages(at, "error"))

@@ -12,6 +12,11 @@ from app_ui import state
 from tests.app.helpers import messages, metric, metric_float, show_tab, table
 
 
+@pytest.fixture
+def at(thesis_at):
+    """The thesis baseline (given volume), as these checks assume."""
+    return thesis_at
+
 def test_mission_tab_shows_the_design_mission_outputs(at):
     show_tab(at, "Mission")
     assert not at.exception

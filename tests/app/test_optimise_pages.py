@@ -66,7 +66,11 @@ def test_sensitivity_sweeps_plot_the_engine_values(sens):
         assert np.allclose(values(mass, "x"), shown(name, res.sweeps[name].values))
         assert np.allclose(values(mass, "y"), res.sweeps[name].designs.total_mass, rtol=1e-9)
         bb = _traces(fig, f"blow_by vs {name}")[0]
-        assert np.allclose(values(bb, "y"), req.blow_by_limit, rtol=1e-6)  # re-sized
+        # re-sized: on the blow-by limit wherever it sets the size, below it elsewhere
+        y = values(bb, "y")
+        assert np.all(y <= req.blow_by_limit * (1 + 1e-6))
+        on = res.sweeps[name].designs.binding == "blow_by"
+        assert on.sum() >= 4 and np.allclose(y[on], req.blow_by_limit, rtol=1e-6)
     df = table(sens, "Variable")
     assert list(df["Low"]) == pytest.approx([shown(k, DEFAULT_BOUNDS[k][0]) for k in VARIABLES])
     assert df["Variable"].iloc[2] == "Fin position Δl_f (root LE) [% of hull length]"
