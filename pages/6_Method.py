@@ -41,6 +41,14 @@ def _reference_rows() -> list[dict] | None:
     return reference_checks()
 
 
+@st.cache_data(show_spinner="Sizing the fielded aerostats...")
+def _fielded_rows() -> list[dict]:
+    from aerostat_core.fielded import validate_fielded
+
+    v = validate_fielded()
+    return [v.median_abs_length_error, v.max_abs_length_error, v.table()]
+
+
 tab_eq, tab_val, tab_src = st.tabs(
     ["Equations and assumptions", "Validation (live)", "Sources and confidence"]
 )
@@ -347,6 +355,38 @@ with tab_val:
             on_click="ignore",
             icon=":material/download:",
             key="dl_validation",
+        )
+
+    st.markdown(
+        "**Fielded aerostats (thesis Table 2.3).** Each system sized from its payload and "
+        "altitude alone with the default *practice* rule set, against its published hull "
+        "length. The practice fineness ratio and fabric were fitted on the systems marked "
+        "*fit*; the others are predictions (docs/validation.md §7)."
+    )
+    try:
+        med, worst, rows = _fielded_rows()
+    except Exception as exc:  # noqa: BLE001 - never show a traceback
+        st.error(widgets.plain(short(f"The fielded-aerostat harness could not be run: {exc}")))
+    else:
+        c = widgets.metric_row(2)
+        c[0].metric("Median |hull-length error| [%]", f"{100 * med:.1f}",
+                    help="Target: within 10 %.")
+        c[1].metric("Worst |hull-length error| [%]", f"{100 * worst:.1f}",
+                    help="Target: none worse than 25 %.")
+        st.dataframe(
+            pd.DataFrame([{
+                "System": r["system"], "Role": r["role"], "Payload [kg]": r["payload_kg"],
+                "Altitude [m]": r["altitude_m"], "Published length [m]": r["published_length_m"],
+                "Predicted length [m]": r["predicted_length_m"],
+                "Error [%]": r["length_error_pct"], "Predicted volume [m³]":
+                r["predicted_volume_m3"], "Sized by": r["sized_by"], "Source": r["source"],
+            } for r in rows]),
+            hide_index=True, width="stretch", key="fielded_table",
+            column_config={
+                "Predicted length [m]": st.column_config.NumberColumn(format="%.2f"),
+                "Error [%]": st.column_config.NumberColumn(format="%+.1f"),
+                "Predicted volume [m³]": st.column_config.NumberColumn(format="%.1f"),
+            },
         )
 
 with tab_src:

@@ -162,6 +162,7 @@ PAGE_FACES = (
     "aerostat_core.optimize",
     "aerostat_core.budget",
     "aerostat_core.validation",
+    "aerostat_core.fielded",
 )
 
 

@@ -80,3 +80,21 @@ def test_missing_reference_module_shows_a_message(at, clear_cache, monkeypatch):
     assert not at.exception
     assert any("aerostat_core.reference" in i for i in messages(at, "info"))
     assert len(at.latex) >= 20  # the equations are still there
+
+
+def test_fielded_harness_is_shown_live():
+    """The Method page runs the fielded-aerostat harness and shows its figures (issue 8)."""
+    from streamlit.testing.v1 import AppTest
+
+    from aerostat_core.fielded import validate_fielded
+    from tests.app.conftest import APP_PATH, TIMEOUT_S
+
+    app = AppTest.from_file(str(APP_PATH), default_timeout=TIMEOUT_S)
+    app.run()
+    app.switch_page("pages/6_Method.py").run()
+    assert not app.exception
+    v = validate_fielded()
+    shown = {m.label: m.value for m in app.metric}
+    assert shown["Median |hull-length error| [%]"] == f"{100 * v.median_abs_length_error:.1f}"
+    df = next(d.value for d in app.dataframe if "Published length [m]" in d.value.columns)
+    assert list(df["System"]) == [r.system.name for r in v.rows]
