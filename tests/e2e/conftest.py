@@ -224,3 +224,22 @@ def app_page(page: Page, console_errors: list[str]) -> Page:
     page.goto("/")
     wait_for_rerun(page)
     return page
+
+
+@pytest.fixture
+def thesis_page(app_page: Page) -> Page:
+    """The app with the thesis baseline loaded by its button (the app opens on the practice
+    default): for the tests that check pages against the thesis' 170 m3 baseline."""
+    from playwright.sync_api import expect
+
+    from tests.e2e.helpers import wait_for_rerun as _wait
+
+    app_page.get_by_role("button", name="Load thesis baseline").click()
+    _wait(app_page)
+    volume = (
+        app_page.get_by_test_id("stMetric")
+        .filter(has=app_page.get_by_test_id("stMetricLabel").get_by_text("Volume [m³]", exact=True))
+        .get_by_test_id("stMetricValue")
+    )
+    expect(volume).to_have_text("170.0")
+    return app_page

@@ -31,9 +31,9 @@ def set_payload(page: Page, value: float) -> None:
     wait_for_rerun(page)
 
 
-def test_save_two_cases_and_compare_them(app_page: Page, console_errors: list[str]):
-    page = app_page
-    page.get_by_text("Sized to meet the blow-by limit", exact=True).click()
+def test_save_two_cases_and_compare_them(thesis_page: Page, console_errors: list[str]):
+    page = thesis_page
+    page.get_by_text("Sized: smallest hull meeting every constraint", exact=True).click()
     set_payload(page, 10)
     save_case(page, "light")
     set_payload(page, 30)

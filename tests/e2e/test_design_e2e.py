@@ -49,11 +49,11 @@ def submit(page: Page) -> None:
     wait_for_rerun(page)
 
 
-def test_payload_change_changes_the_sized_volume(app_page: Page, console_errors: list[str]):
-    page = app_page
+def test_payload_change_changes_the_sized_volume(thesis_page: Page, console_errors: list[str]):
+    page = thesis_page
     volume = metric_value(page, "Volume [m³]")
     expect(volume).to_have_text("170.0")  # thesis baseline: volume given
-    page.get_by_text("Sized to meet the blow-by limit", exact=True).click()
+    page.get_by_text("Sized: smallest hull meeting every constraint", exact=True).click()
     submit(page)
     assert_no_exception(page, "Design page after sizing")
     expect(volume).not_to_have_text("170.0")
@@ -69,8 +69,8 @@ def test_payload_change_changes_the_sized_volume(app_page: Page, console_errors:
     assert console_errors == []
 
 
-def test_download_tables_and_design_file(app_page: Page):
-    page = app_page
+def test_download_tables_and_design_file(thesis_page: Page):
+    page = thesis_page
     blow_by = number(metric_value(page, "Blow-by [m]").inner_text())
     page.get_by_role("tab", name="Performance").click()
     wait_for_rerun(page)
@@ -101,8 +101,8 @@ def test_download_tables_and_design_file(app_page: Page):
     assert (req.payload_mass, req.altitude, cfg.hull.volume) == (10.0, 300.0, 170.0)
 
 
-def test_bad_json_upload_shows_a_message_and_changes_nothing(app_page: Page):
-    page = app_page
+def test_bad_json_upload_shows_a_message_and_changes_nothing(thesis_page: Page):
+    page = thesis_page
     volume = metric_value(page, "Volume [m³]")
     expect(volume).to_have_text("170.0")
     page.get_by_text("Design file: export / import").click()
@@ -123,19 +123,20 @@ def test_bad_json_upload_shows_a_message_and_changes_nothing(app_page: Page):
     assert_no_exception(page, "Design page after a bad upload")
 
 
-def test_a_rejected_input_is_reported_in_its_group(app_page: Page):
-    page = app_page
-    set_number(page, "Blow-by limit at the design wind [m]", 400)  # above the 300 m altitude
+def test_a_rejected_input_is_reported_in_its_group(thesis_page: Page):
+    page = thesis_page
+    label = "Blow-by limit at the design wind [m] (empty = rule set)"
+    set_number(page, label, 400)  # above the 300 m altitude
     submit(page)
     expect(
-        page.get_by_text(re.compile(r"Not applied: Blow-by limit at the design wind \[m\]: 400"))
+        page.get_by_text(re.compile(r"Not applied: " + re.escape(label) + ": 400"))
     ).to_be_visible()
     expect(metric_value(page, "Volume [m³]")).to_have_text("170.0")
     assert_no_exception(page, "Design page after a rejected input")
 
 
-def test_screenshots_of_each_page(app_page: Page, console_errors: list[str]):
-    page = app_page
+def test_screenshots_of_each_page(thesis_page: Page, console_errors: list[str]):
+    page = thesis_page
     page.set_viewport_size(SHOT_VIEWPORT)
     expect(metric_value(page, "Volume [m³]")).to_have_text("170.0")
     expect(page.locator(".js-plotly-plot").filter(visible=True).first).to_be_visible()

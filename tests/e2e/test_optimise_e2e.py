@@ -18,8 +18,8 @@ pytestmark = pytest.mark.e2e
 RUN_TIMEOUT_MS = 120_000
 
 
-def test_sensitivity_then_quick_optimisation(app_page: Page, console_errors: list[str]):
-    page = app_page
+def test_sensitivity_then_quick_optimisation(thesis_page: Page, console_errors: list[str]):
+    page = thesis_page
 
     goto_page(page, "Sensitivity", timeout=RUN_TIMEOUT_MS)
     assert_no_exception(page, "Sensitivity page")
