@@ -10,12 +10,11 @@ from __future__ import annotations
 import argparse
 import json
 import os
-import stat
 import sys
 from dataclasses import replace
 from pathlib import Path
 
-from .commands import add_design_options, add_subcommands, monte_carlo_summary
+from .commands import add_design_options, add_subcommands, monte_carlo_summary, read_capped
 from .commands import run as run_subcommand
 from .design import Design, design
 from .dynamics import cli as simulate_cli
@@ -176,21 +175,6 @@ def _write_exports(args, d: Design) -> list[str]:
     return done
 
 
-def _read_config(path: Path) -> bytes:
-    """Read a design file: a regular file of at most CONFIG_SIZE_CAP bytes."""
-    try:
-        fd = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0))
-    except OSError as exc:
-        raise ValueError(f"--config {path}: {exc.strerror}") from None
-    with os.fdopen(fd, "rb") as fh:
-        if not stat.S_ISREG(os.fstat(fh.fileno()).st_mode):
-            raise ValueError(f"--config {path}: not a regular file")
-        data = fh.read(CONFIG_SIZE_CAP + 1)
-    if len(data) > CONFIG_SIZE_CAP:
-        raise ValueError(f"--config {path}: larger than {CONFIG_SIZE_CAP} bytes")
-    return data
-
-
 def main(argv: list[str] | None = None) -> int:
     """Entry point; returns the exit code (0 ok, 2 bad input). A closed pipe (``| head``) ends
     quietly."""
@@ -209,7 +193,7 @@ def _main(argv: list[str] | None) -> int:
         return args.handler(args)
     try:
         if args.config is not None:
-            req, cfg = design_from_json(_read_config(args.config))
+            req, cfg = design_from_json(read_capped(args.config, CONFIG_SIZE_CAP, "--config"))
         else:
             req, cfg = Requirement(), None
         changes = {f: getattr(args, o) for o, f in _OPTIONS.items() if getattr(args, o) is not None}

@@ -104,7 +104,9 @@ def _add_site_options(p: argparse.ArgumentParser) -> None:
     )
 
 
-def _read_capped(path: Path, cap: int, option: str) -> bytes:
+def read_capped(path: Path, cap: int, option: str, hint: str = "") -> bytes:
+    """Read at most ``cap`` bytes of a regular file named by a CLI ``option`` (``/dev/zero``, a
+    FIFO or a directory is refused); ``ValueError`` naming the option otherwise."""
     try:
         fd = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0))
     except OSError as exc:
@@ -114,7 +116,7 @@ def _read_capped(path: Path, cap: int, option: str) -> bytes:
             raise ValueError(f"{option} {path}: not a regular file")
         data = fh.read(cap + 1)
     if len(data) > cap:
-        raise ValueError(f"{option} {path}: larger than {cap} bytes (about 200 000 hourly rows)")
+        raise ValueError(f"{option} {path}: larger than {cap} bytes{hint}")
     return data
 
 
@@ -125,7 +127,8 @@ def site_from_args(args):
     if args.wind_csv is not None:
         if args.weibull_k is not None or args.weibull_c is not None:
             raise ValueError("give either --wind-csv or --weibull-k/--weibull-c, not both")
-        data = _read_capped(args.wind_csv, MAX_CSV_BYTES, "--wind-csv")
+        data = read_capped(args.wind_csv, MAX_CSV_BYTES, "--wind-csv",
+                           " (about 200 000 hourly rows)")
         try:
             return read_wind_csv(data, args.reference_height, args.shear_exponent)
         except ValueError as exc:

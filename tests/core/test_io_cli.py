@@ -127,3 +127,31 @@ def test_cli_default_limits_scale_with_the_altitude(capsys):
 def test_cli_unwritable_csv_exits_2(capsys):
     assert main(["design", "--volume", "170", "--csv", "/nonexistent/dir/x.csv"]) == 2
     assert "--csv" in capsys.readouterr().err
+
+
+def test_cli_config_reads_only_a_bounded_regular_file(tmp_path, capsys):
+    assert main(["design", "--config", "/dev/zero"]) == 2
+    assert "not a regular file" in capsys.readouterr().err
+    big = tmp_path / "big.json"
+    big.write_bytes(b" " * 1_000_001)
+    assert main(["design", "--config", str(big)]) == 2
+    assert "larger than 1000000 bytes" in capsys.readouterr().err
+
+
+def test_cli_closed_pipe_exits_quietly():
+    """A reader that goes away (``| head``) before the output is written: exit 0, no BrokenPipe
+    traceback. The read end is closed before the child has computed its design, so its first
+    write meets a closed pipe."""
+    import subprocess
+    import sys
+    from pathlib import Path
+
+    root = Path(__file__).resolve().parents[2]
+    proc = subprocess.Popen(
+        [sys.executable, "-m", "aerostat_core", "design", "--json"],
+        cwd=root, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+    )
+    proc.stdout.close()
+    _, err = proc.communicate(timeout=120)
+    assert proc.returncode == 0, err
+    assert b"Traceback" not in err and b"BrokenPipe" not in err
