@@ -20,6 +20,7 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 
+from ..geometry import lamb_factors
 from .checks import check_number
 from .layout import T_ROWS
 
@@ -247,14 +248,7 @@ def ellipsoid_hull(
     length = fineness_ratio * d
     a, b = 0.5 * length, 0.5 * d
     i_air = rho * volume * (a * a + b * b) / 5.0
-    e = math.sqrt(1.0 - 1.0 / fineness_ratio**2)
-    at = math.atanh(e)
-    alpha0 = 2.0 * (1.0 - e**2) / e**3 * (at - e)
-    beta0 = 1.0 / e**2 - (1.0 - e**2) / e**3 * at
-    k1 = alpha0 / (2.0 - alpha0)
-    k2 = beta0 / (2.0 - beta0)
-    dba = beta0 - alpha0
-    kr = e**4 * dba / ((2.0 - e**2) * (2.0 * e**2 - (2.0 - e**2) * dba))
+    k1, k2, kr = (float(k) for k in lamb_factors(fineness_ratio))  # Lamb, prolate spheroid
     # strips over the ellipse: x = a sin(phi), 2 r dx = 2 a b cos^2(phi) dphi
     gx, gw = np.polynomial.legendre.leggauss(32)
     phi = 0.5 * math.pi * gx
