@@ -42,7 +42,7 @@ import numpy as np
 from .airframe import build_airframe
 from .constraints import NAMES, constraint_state
 from .design import Design, design
-from .inputs import Configuration, Requirement
+from .inputs import RULE_FIELDS, Configuration, Requirement
 from .performance import evaluate
 from .presets import rules_configuration
 from .rules import RULE_NAMES
@@ -509,17 +509,9 @@ def histogram_percentiles(edges: np.ndarray, counts: np.ndarray, pct) -> np.ndar
 
 
 def mission_requirement(req: Requirement, rules: str) -> Requirement:
-    """The mission of ``req`` (payload, altitude, site, sweep) under rule set ``rules``, with
-    every limit left to that rule set."""
-    return Requirement(
-        payload_mass=req.payload_mass,
-        altitude=req.altitude,
-        site_elevation=req.site_elevation,
-        isa_offset=req.isa_offset,
-        wind_max=req.wind_max,
-        wind_step=req.wind_step,
-        rules=rules,
-    )
+    """The mission of ``req`` (payload, altitude, site, sweep, power, endurance) under rule set
+    ``rules``, with every limit (inputs.RULE_FIELDS) left to that rule set."""
+    return replace(req, rules=rules, **{k: None for k in RULE_FIELDS})
 
 
 def rule_set_spread(req: Requirement, n: int = 2000, seed: int = 0, client=None) -> list[dict]:

@@ -136,3 +136,16 @@ def test_histogram_reduction_agrees_with_the_exact_percentiles(d):
         assert np.all(np.abs(x - y) <= 2e-3 * (x[2] - x[0]))
     assert np.abs(a.free_lift - b.free_lift).max() <= 2e-3 * (a.free_lift[2] - a.free_lift[0])
     assert b.blow_by_design.shape == (3,)
+
+
+def test_rule_set_comparison_keeps_the_mission_and_frees_the_limits():
+    from aerostat_core import Requirement
+    from aerostat_core.inputs import RULE_FIELDS
+    from aerostat_core.uncertainty import mission_requirement
+
+    req = Requirement(payload_mass=12, altitude=400, site_temperature=30.0, payload_power=50.0,
+                      blow_by_limit=20.0).resolved()
+    t = mission_requirement(req, "thesis")
+    assert t.rules == "thesis" and all(getattr(t, k) is None for k in RULE_FIELDS)
+    assert (t.payload_mass, t.altitude, t.site_temperature, t.payload_power) == (12, 400, 30.0, 50.0)
+    assert t.resolved().blow_by_limit == pytest.approx(0.178 * 400, rel=1e-3)
