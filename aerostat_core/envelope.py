@@ -82,15 +82,6 @@ def point_state(req: Requirement, cfg: Configuration, volume: float, wind) -> tu
     ev = evaluate(req, cfg, af, wind)
     wq = wind_quantities(req, cfg, ev)
     sq = static_quantities(req, af, cfg)
-    # The table normalises the moment slopes with q at max(U, 1 m/s) while the slopes scale with
-    # q at U, which below 1 m/s shrinks C_m_alpha by (U / 1 m/s)^2 and fails a stable hull on the
-    # weathervane margin near calm. C_m_alpha of a moment ~ q does not depend on U: undo it.
-    fix = np.where((wind > 0) & (wind < 1.0), 1.0 / np.maximum(wind, 1e-6) ** 2, 1.0)
-    slow = fix != 1.0
-    for name in ("stability", "weathervane"):
-        value, limit, gk = (np.asarray(x, float).reshape(-1) for x in wq[name][:3])
-        gk = np.where(slow, value * fix - limit, gk)
-        wq = {**wq, name: (value * fix, limit, gk, -gk)}
     g = np.empty(wind.shape + (len(ENVELOPE_NAMES),))
     m = np.empty_like(g)
     for k, c in enumerate(ENVELOPE_CONSTRAINTS):
