@@ -116,23 +116,37 @@ STANDARD_PRESSURE = 101325.0
 #: Hours per day and seconds per day.
 HOURS_PER_DAY = 24.0
 SECONDS_PER_DAY = 86400.0
-#: Reel speed of DC-motor winches for synthetic tethers [m/s]: "around 60 feet per minute"
-#: (thesis §2.2.4) = 0.3048 m/s.
+#: Reel speed of DC-motor winches for synthetic tethers [m/s]: "The DC Electric motors are used
+#: for synthetic tethers that can provide extension and retrieval speeds around 60 feet per
+#: minutes" (thesis §2.2.4, read in the seed text; the thesis cites no source for the figure)
+#: = 0.3048 m/s.
 THESIS_WINCH_SPEED = 60.0 * 0.3048 / 60.0
 #: Operating altitude below which an aerostat "can be flown without a ballonet" [m]
 #: (thesis §2.2.1(c), citing Bajoria et al. 2017).
 BALLONET_RULE_ALTITUDE = 500.0
-#: Safety factor on envelope fabric strength [-]: Carichner & Nicolai, Fundamentals of Aircraft
-#: and Airship Design Vol. 2 (AIAA 2013), envelope design chapter, use 4 on the ultimate strength.
+#: Safety factor on envelope fabric strength [-], 4: the value issue 13 attributes to Carichner
+#: & Nicolai, Fundamentals of Aircraft and Airship Design Vol. 2 (AIAA 2013). That book was NOT
+#: available here, so the attribution is unverified; it is an input
+#: (MissionSpec.envelope_safety_factor). The one regulation read, 14 CFR §31.25 (manned free
+#: balloons; stored copy of the eCFR text, faraim.org), asks at least five for "all fibrous or
+#: non-metallic parts of the rigging" (§31.25(c)) and applies the envelope factor of §31.25(b)
+#: "to the more critical of the maximum operating pressure or envelope stress"; the number of
+#: §31.25(b) itself was cut off in the copy read, so it is not quoted here. Unmanned tethered
+#: aerostats are outside Part 31.
 ENVELOPE_SAFETY_FACTOR = 4.0
 #: Internal pressure / dynamic pressure needed to keep a non-rigid hull's nose from dimpling
-#: [-]: the rule of thumb p >= 1.2 q (+ the hydrostatic gas head) quoted in issue 13. Airship
-#: texts (Khoury & Gillett, Airship Technology, CUP 1999; Carichner & Nicolai 2013) require the
-#: internal pressure to exceed the nose dynamic pressure; the factor 1.2 itself is NOT verified
-#: against a primary source here, so it is an input (MissionSpec.pressure_dynamic_factor).
+#: [-]: the rule of thumb p >= 1.2 q (+ the hydrostatic gas head) quoted in issue 13. NO primary
+#: source for the factor 1.2 was found: Khoury & Gillett (Airship Technology, CUP 1999),
+#: Carichner & Nicolai (2013), FAA-P-8110-2 (Airship Design Criteria) and the ADRDE envelope
+#: paper (Kumar, Sati & Ghosh, Defence Sci. J. 66(2) 2016) were searched for but only their
+#: titles or abstracts were readable. The physics it encodes (the nose stagnation pressure is
+#: about q, so the gas must exceed q there) is standard; 1.2 is an engineering margin, kept as
+#: an input (MissionSpec.pressure_dynamic_factor).
 PRESSURE_DYNAMIC_FACTOR = 1.2
 #: Pack-level specific energy of an onboard Li-ion battery [Wh/kg], ASSUMED order of magnitude
-#: (cells about 250 Wh/kg; packs with wiring, case and management 150-200 Wh/kg).
+#: (cells about 250 Wh/kg; packs with wiring, case and management 150-200 Wh/kg). No pack data
+#: sheet or review was read for it: an engineering choice, an input
+#: (MissionSpec.battery_energy_density).
 BATTERY_ENERGY_DENSITY = 150.0
 #: Usable fraction of a battery's rated energy [-], ASSUMED (long cycle life).
 BATTERY_DEPTH_OF_DISCHARGE = 0.8
@@ -147,5 +161,11 @@ MAX_CURRENT_DENSITY = 5.0e6
 GAS_SUPERHEAT = 10.0
 #: Winch motor x drive efficiency [-], ASSUMED (motor 0.85 x gearbox 0.9).
 WINCH_EFFICIENCY = 0.75
-#: Tether minimum bend radius / diameter [-], ASSUMED (use the cable's data sheet).
-TETHER_BEND_RADIUS_RATIO = 10.0
+#: Tether minimum bend radius / diameter [-] on the winch drum: 20, the "Dynamic: 20 x cable
+#: diameter" of a published fibre-optic cable specification ("Min. bending radius for
+#: installation Static: 10 x cable diameter, Dynamic: 20 x cable diameter", Tech.
+#: Specification 2020102013 rev 1.0, ADSS single-jacket cable CFOA-SM-AS-S-KP, §3.1; public copy
+#: github.com/andretavaresrj/imagens/files/14474304). A drum winds the tether under tension while
+#: it moves, the dynamic case. An aerostat tether with optical fibres is held to its fibres'
+#: limit; use the tether's own data sheet where it has one (MissionSpec.bend_radius_ratio).
+TETHER_BEND_RADIUS_RATIO = 20.0

@@ -1,7 +1,9 @@
 """Envelope/fin fabrics and tethers: the data types and a small catalogue.
 
-Catalogue values are typical published orders of magnitude, not a supplier's data sheet; every
-entry can be replaced by custom values in the app or a JSON design file.
+Every catalogue value carries its source (:data:`FABRIC_SOURCES`, :data:`TETHER_SOURCES`):
+a published figure where one was found, otherwise INFERRED (from a thesis number), ASSUMED (an
+engineering choice) or COMPUTED (from the project's own models). Every entry can be replaced by
+custom values in the app or a JSON design file.
 """
 
 from __future__ import annotations
@@ -46,13 +48,18 @@ class Fabric:
 
 
 #: Default envelope strength [N/m], ASSUMED for fabrics without a published figure (the thesis
-#: fabric, the calibrated practice laminate): half of the weakest aerostat laminate measured by
-#: Lv et al. 2022 (HV150, 80.5 kN/m), i.e. a light coated fabric with a margin for seams.
+#: fabric, the calibrated practice laminate): about half of the lightest (150 g/m2 class)
+#: laminate measured by Lv et al. 2022, HV150 (82.13 kgf/cm = 80.5 kN/m; the weakest new sample
+#: there is FV1175, 76.15 kgf/cm = 74.7 kN/m), i.e. a light coated fabric with a margin for
+#: seams. An engineering choice, not a published number.
 ASSUMED_TENSILE_STRENGTH = 40000.0
 assert Fabric().tensile_strength == ASSUMED_TENSILE_STRENGTH
-#: Default helium permeability [L/(m2 day atm)]: the ADRDE envelope figure of 2.5 L/m2/day quoted
-#: in issue 13 (primary source not located); conservative against the 0.64-0.88 L/(m2 day atm)
-#: Lv et al. 2022 measured on new laminates, and it leaves room for seams and valves.
+#: Default helium permeability [L/(m2 day atm)]: the ADRDE envelope figure of 2.5 L/m2/day. Its
+#: primary source was NOT found: the only place it was seen is a reference list in the public
+#: repository empyrealgalaxy/Aerostat-Sizing (data/reference.js, docs/methods.md S8), which
+#: credits "IIT Bombay / ADRDE envelope design papers ... leak 2.5 L/m2/day"; the paper itself
+#: was not readable. Kept as the default because it is conservative against the 0.64-0.88
+#: L/(m2 day atm) Lv et al. 2022 measured on new laminates, leaving room for seams and valves.
 ADRDE_HELIUM_PERMEABILITY = 2.5
 assert Fabric().helium_permeability == ADRDE_HELIUM_PERMEABILITY
 #: kgf/cm -> N/m (Lv et al. quote strengths in kgf/cm).
@@ -102,15 +109,7 @@ class TetherSpec:
             check_number(o, "axial_stiffness", self.axial_stiffness, 1e3, 1e9, "N")
 
 
-#: Fabric catalogue. Thesis value INFERRED from Table 2.2 (13.54 kg sphere hull / 104.19 m2);
-#: heavier laminates from the IIT-B/ADRDE range 280-385 g/m2 (docs/methods.md S8). Strengths and
-#: helium permeabilities: the generic entries take the assumed defaults above; the three named
-#: laminates are the new-sample values of Lv, Zhou, Zhang, Nie & Wang, "Study of performance of
-#: aerostat envelope materials on the coast", Front. Mater. 9:992984 (2022), doi
-#: 10.3389/fmats.2022.992984 (3216LV 101.43 kgf/cm and 0.8818 L/(m2 day atm); FV1175 76.15
-#: kgf/cm and 0.6360; HV150 82.13 kgf/cm, permeability not given, default kept). Their areal
-#: densities are not in that paper: 3216LV and FV1175 take the 200 g/m2 class of the catalogue
-#: and HV150 150 g/m2 from its name (ASSUMED, replace with the supplier's data sheet).
+#: Fabric catalogue. Each entry's source, value by value, is in :data:`FABRIC_SOURCES`.
 FABRICS: dict[str, Fabric] = {
     f.name: f
     for f in (
@@ -125,10 +124,70 @@ FABRICS: dict[str, Fabric] = {
     )
 }
 
-#: Tether catalogue. The thesis tether mass (20 g/m, 6 kg per 300 m) is INFERRED from Table 2.2;
-#: its diameter, strength and stiffness are assumed (docs/methods.md G10): 20 kN is the order of a
-#: 5 mm HMPE (Dyneema-type) braid, which weighs about 15-20 g/m. The 4 mm Dyneema data come
-#: from OpenSourceAWE KiteModels settings (docs/dynamics.md D12); breaking loads are typical values.
+#: Lv, Zhou, Zhang, Nie & Wang, "Study of performance of aerostat envelope materials on the
+#: coast", Front. Mater. 9:992984 (2022), doi 10.3389/fmats.2022.992984, abstract: new-sample
+#: tensile strengths 101.43 (3216LV), 76.15 (FV1175), 82.13 (HV150) kgf/cm; helium
+#: permeabilities 0.8818 (3216LV) and 0.6360 (FV1175) L/(m2 day atm), none for HV150.
+LV_2022 = "Lv et al. 2022, Front. Mater. 9:992984, doi 10.3389/fmats.2022.992984 (abstract)"
+#: Source of every catalogue fabric, field by field: "areal_density", "tensile_strength",
+#: "helium_permeability". ASSUMED marks an engineering choice with no published figure behind
+#: it (tests/core/test_sources.py checks that every entry and field has one).
+FABRIC_SOURCES: dict[str, dict[str, str]] = {
+    "Thesis fabric (130 g/m2)": {
+        "areal_density": "INFERRED from thesis Table 2.2: 13.54 kg sphere hull / 104.19 m2 "
+        "(docs/methods.md §3.2, G3)",
+        "tensile_strength": "ASSUMED (ASSUMED_TENSILE_STRENGTH; the thesis gives none)",
+        "helium_permeability": "ADRDE 2.5 L/m2/day, second-hand (ADRDE_HELIUM_PERMEABILITY)",
+    },
+    "Light PU-coated nylon (100 g/m2)": {
+        "areal_density": "ASSUMED order of magnitude of a light coated nylon (no data sheet)",
+        "tensile_strength": "ASSUMED (ASSUMED_TENSILE_STRENGTH)",
+        "helium_permeability": "ADRDE 2.5 L/m2/day, second-hand (ADRDE_HELIUM_PERMEABILITY)",
+    },
+    "Medium laminate (200 g/m2)": {
+        "areal_density": "ASSUMED order of magnitude (no data sheet)",
+        "tensile_strength": "ASSUMED (ASSUMED_TENSILE_STRENGTH)",
+        "helium_permeability": "ADRDE 2.5 L/m2/day, second-hand (ADRDE_HELIUM_PERMEABILITY)",
+    },
+    "Heavy laminate (300 g/m2)": {
+        "areal_density": "IIT-B/ADRDE range 280-385 g/m2, second-hand (docs/methods.md S8)",
+        "tensile_strength": "ASSUMED (ASSUMED_TENSILE_STRENGTH)",
+        "helium_permeability": "ADRDE 2.5 L/m2/day, second-hand (ADRDE_HELIUM_PERMEABILITY)",
+    },
+    "Multi-layer laminate (385 g/m2)": {
+        "areal_density": "IIT-B/ADRDE range 280-385 g/m2, second-hand (docs/methods.md S8)",
+        "tensile_strength": "ASSUMED (ASSUMED_TENSILE_STRENGTH)",
+        "helium_permeability": "ADRDE 2.5 L/m2/day, second-hand (ADRDE_HELIUM_PERMEABILITY)",
+    },
+    "Uretek 3216LV laminate (Lv 2022)": {
+        "areal_density": "ASSUMED 200 g/m2 class (not in Lv 2022; use the data sheet)",
+        "tensile_strength": LV_2022 + ": 101.43 kgf/cm",
+        "helium_permeability": LV_2022 + ": 0.8818 L/(m2 day atm)",
+    },
+    "FV1175 laminate (Lv 2022)": {
+        "areal_density": "ASSUMED 200 g/m2 class (not in Lv 2022; use the data sheet)",
+        "tensile_strength": LV_2022 + ": 76.15 kgf/cm",
+        "helium_permeability": LV_2022 + ": 0.6360 L/(m2 day atm)",
+    },
+    "HV150 laminate (Lv 2022)": {
+        "areal_density": "ASSUMED 150 g/m2 from the name (not in Lv 2022)",
+        "tensile_strength": LV_2022 + ": 82.13 kgf/cm",
+        "helium_permeability": "not in Lv 2022; ADRDE default kept (ADRDE_HELIUM_PERMEABILITY)",
+    },
+}
+#: The laminates' published figures as Lv et al. 2022 print them (kgf/cm, L/(m2 day atm)), for
+#: the tests that check the catalogue against its source.
+LV_2022_FIGURES = {
+    "Uretek 3216LV laminate (Lv 2022)": (101.43, 0.8818),
+    "FV1175 laminate (Lv 2022)": (76.15, 0.6360),
+    "HV150 laminate (Lv 2022)": (82.13, None),
+}
+
+#: Tether catalogue. Each entry's source is in :data:`TETHER_SOURCES`. No power or
+#: electro-optic tether data sheet with mass per metre, diameter and breaking load was found in
+#: the stored sources (searched: Linden Photonics, Elistair, TCOM, tethered-drone cable pages,
+#: power/fibre-optic tether patents); the power tethers are COMPUTED examples and the
+#: electro-optic tether an ASSUMED order of magnitude, named so in their labels' sources.
 TETHERS: dict[str, TetherSpec] = {
     t.name: t
     for t in (
@@ -141,6 +200,30 @@ TETHERS: dict[str, TetherSpec] = {
         TetherSpec("Power tether 2 x 2.5 mm2 Cu on Dyneema 6 mm (71 g/m)", 0.0709, 0.00681,
                    1.0, 0.01, 30345.0, 1.4e6),
     )
+}
+
+#: OpenSourceAWE KiteUtils.jl data/settings.yaml, "tether:" block (docs/dynamics.md D12): a
+#: 4 mm Dyneema tether, d_tether 4 mm, rho_tether 724 kg/m3 (so 9.10 g/m), axial_stiffness
+#: 614600 N, cd_tether 0.958. It gives no breaking load.
+KITEUTILS_TETHER = {"diameter": 0.004, "density": 724.0, "axial_stiffness": 614600.0,
+                    "drag_coefficient": 0.958}
+#: Source of every catalogue tether (one line each: where each number comes from).
+TETHER_SOURCES: dict[str, str] = {
+    "Thesis tether (20 g/m)": "mass INFERRED from thesis Table 2.2 (6 kg per 300 m); diameter, "
+    "strength and EA ASSUMED for a 5 mm HMPE braid (docs/methods.md G10)",
+    "Dyneema 4 mm (9 g/m)": "diameter, mass (724 kg/m3) and EA from OpenSourceAWE KiteUtils.jl "
+    "data/settings.yaml (docs/dynamics.md D12); C_dn 1.0 and breaking load 14 kN ASSUMED "
+    "(typical 4 mm HMPE braid; no data sheet read)",
+    "Dyneema 6 mm (21 g/m)": "ASSUMED: the 4 mm entry scaled with d^2 (mass 20.5 g/m) and a "
+    "typical 6 mm HMPE breaking load; no data sheet read",
+    "Electro-optic tether 8 mm (60 g/m)": "ASSUMED order of magnitude of an electro-optic "
+    "aerostat tether; no product data sheet was found",
+    "Power tether 2 x 1.5 mm2 Cu on Dyneema 6 mm (52 g/m)": "COMPUTED example, not a product: "
+    "the Dyneema 6 mm entry plus two 1.5 mm2 ETFE-insulated copper conductors "
+    "(aerostat_core.power.power_tether)",
+    "Power tether 2 x 2.5 mm2 Cu on Dyneema 6 mm (71 g/m)": "COMPUTED example, not a product: "
+    "the Dyneema 6 mm entry plus two 2.5 mm2 ETFE-insulated copper conductors "
+    "(aerostat_core.power.power_tether)",
 }
 
 #: Copper area of each of the two conductors of the catalogue's power tethers [m2]. These

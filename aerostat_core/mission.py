@@ -77,7 +77,8 @@ class MissionSpec:
         Day-time gas superheat at the operating altitude [K], valid [0, 40]; 10 K (ASSUMED,
         clear-sky order of magnitude).
     envelope_safety_factor : float
-        On the fabric tensile strength [-], valid [1, 20]; 4 (Carichner & Nicolai 2013).
+        On the fabric tensile strength [-], valid [1, 20]; 4 (constants.ENVELOPE_SAFETY_FACTOR;
+        attributed to Carichner & Nicolai 2013, not verified).
     pressure_dynamic_factor : float
         Required internal pressure / dynamic pressure [-], valid [1, 3]; 1.2
         (constants.PRESSURE_DYNAMIC_FACTOR).
@@ -86,8 +87,8 @@ class MissionSpec:
     winch_efficiency : float
         Motor x drive efficiency [-], valid (0, 1]; 0.75 (ASSUMED: motor 0.85 x gearbox 0.9).
     bend_radius_ratio : float
-        Tether minimum bend radius / tether diameter [-], valid [2, 100]; 10 (ASSUMED, common
-        for synthetic and electro-mechanical cables; use the cable data sheet).
+        Tether minimum bend radius / tether diameter [-], valid [2, 100]; 20
+        (constants.TETHER_BEND_RADIUS_RATIO: a cable data sheet's dynamic bend radius).
     drum_layers : int
         Layers of tether on the drum, valid [1, 100]; 10.
     """

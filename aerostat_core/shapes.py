@@ -13,12 +13,31 @@ Shapes (``SHAPES``):
   Gillett, *Airship Technology*, 1999; thesis §2.4.3(a), §3.1.3(a)). Keeps the closed forms of
   :mod:`aerostat_core.geometry`.
 * ``gnvr``, ``wang``, ``zhiyuan-1``, ``lotte``: Gertler (1950, DTMB Report 604) sixth-order
-  polynomial profiles with the parameters (m, r0, r1, C_p, l/d) tabulated for the standard
-  envelopes by Alam & Pant (2017), "Multi-objective multidisciplinary design analyses and
-  optimization of high altitude airships", *Aerospace Science and Technology* 78 (the thesis' Fig.
-  2.16 set). Original shapes: GNVR, Ram & Pant (2010) (ellipse + circle + parabola); Wang et al.
-  (2009) (GA-optimised); Zhiyuan-1, Wang & Shan (2006), Wang et al. (2010); Lotte, Lutz et al.,
-  University of Stuttgart solar airship (via Alam & Pant 2017).
+  polynomial FITS of the standard envelopes (the thesis' Fig. 2.16 set), with the parameters
+  (m, r0, r1, C_p, l/d) of ``GERTLER_TABLE``.
+
+  Where these numbers come from (docs/methods.md §1.13, S7, S14): the table is the
+  ``STANDARD_ENVELOPES`` table of public Gertler-envelope generator code (S7), which states no
+  source; a second public copy of such a table gives GNVR (0.4143, 0.5999, 0.1762, 0.6163,
+  3.0500), Zhiyuan-1 (0.4193, 0.3306, 0.2500, 0.6489, 3.2592) and Wang (0.4040, 0.6000, 0.1000,
+  0.6100, 3.8540), within 0.4 % of ours on C_p and l/d. The project attributes the table to
+  Alam & Pant (2017), "Multi-objective multidisciplinary design analyses and optimization of
+  high altitude airships", *Aerosp. Sci. Technol.* 78, whose comparison set it matches; that
+  paper was NOT seen, so the attribution is unverified.
+
+  GNVR is NOT Ram & Pant's definition. The thesis (§2.4.3(a)) describes GNVR, after G. N. V.
+  Rao, as "a combination of an ellipse, circle, and parabola (Ram and Pant, 2010)" (Ram C.V.,
+  Pant R.S., "Multidisciplinary shape optimization of aerostat envelopes", J. Aircraft 47(3),
+  2010, as issue 12 cites it; not seen). That piecewise profile and its coefficients were not
+  found in any stored source (searched: the thesis seed text, stored pages, documentation and
+  code), so it is not implemented. The Gertler fit is an engineering choice: one smooth
+  polynomial family for all four streamlined shapes, volume and area from one quadrature. Its
+  C_p = 0.615 and l/d = 3.044 are the fit's, not figures published for the piecewise GNVR.
+
+  Other original shapes: Wang et al. (2009) (GA-optimised); Zhiyuan-1, Wang & Shan (2006), Wang
+  et al. (2010); Lotte, Lutz et al., University of Stuttgart solar airship. None of these papers
+  was seen either: no volume or surface-area coefficient published for them was found, so the
+  tests check the fits against the two public tables (C_p, m, l/d) and the closed forms.
 * ``sphere``: f = 1. ``oblate``: oblate spheroid of revolution about the wind axis, f < 1 (the
   spheroid family below the sphere; a pumpkin-shaped balloon flattened vertically is not a body
   of revolution about x and is outside this model).
@@ -42,8 +61,10 @@ from .aerodynamics import hoerner_volumetric_drag
 from .validation import InputError
 
 #: Gertler parameters (m = station of maximum diameter / l, r0 nose and r1 tail radius
-#: parameters, C_p prismatic coefficient, standard l/d) of the standard envelopes, as tabulated
-#: by Alam & Pant (2017) (Aerosp. Sci. Technol. 78) after Gertler (1950); docs/methods.md source S7.
+#: parameters, C_p prismatic coefficient, standard l/d) of the standard envelopes: the table of
+#: public Gertler-envelope code (docs/methods.md S7, no source stated there), attributed by the
+#: project to Alam & Pant (2017) (Aerosp. Sci. Technol. 78; not seen, unverified). Fits, not the
+#: shapes' original definitions (module docstring).
 GERTLER_TABLE = {
     "sphere": (0.5, 0.5, 0.5, 0.667, 1.000),
     "gnvr": (0.415, 0.600, 0.180, 0.615, 3.044),
@@ -109,7 +130,9 @@ SHAPE_INFO: dict[str, ShapeInfo] = {
             3.044,
             True,
             False,
-            "Ram & Pant (2010); Gertler parameters from Alam & Pant (2017)",
+            "Gertler fit, public table (docs/methods.md S7, attributed to Alam & Pant 2017, "
+            "unverified); GNVR itself: Ram & Pant (2010), ellipse + circle + parabola, not "
+            "implemented",
         ),
         ShapeInfo(
             "wang",
@@ -119,7 +142,8 @@ SHAPE_INFO: dict[str, ShapeInfo] = {
             3.859,
             True,
             False,
-            "Wang et al. (2009); Gertler parameters from Alam & Pant (2017)",
+            "Wang et al. (2009); Gertler fit, public table (docs/methods.md S7, attributed to "
+            "Alam & Pant 2017, unverified)",
         ),
         ShapeInfo(
             "zhiyuan-1",
@@ -129,7 +153,8 @@ SHAPE_INFO: dict[str, ShapeInfo] = {
             3.266,
             True,
             False,
-            "Wang & Shan (2006), Wang et al. (2010); Gertler parameters from Alam & Pant (2017)",
+            "Wang & Shan (2006), Wang et al. (2010); Gertler fit, public table "
+            "(docs/methods.md S7, attributed to Alam & Pant 2017, unverified)",
         ),
         ShapeInfo(
             "lotte",
@@ -139,7 +164,8 @@ SHAPE_INFO: dict[str, ShapeInfo] = {
             3.9019,
             True,
             False,
-            "Lutz et al. (Univ. Stuttgart); Gertler parameters from Alam & Pant (2017)",
+            "Lutz et al. (Univ. Stuttgart); Gertler fit, public table (docs/methods.md S7, "
+            "attributed to Alam & Pant 2017, unverified)",
         ),
         ShapeInfo(
             "sphere",
@@ -251,7 +277,7 @@ def profile_coefficients(shape: str) -> np.ndarray:
 
     Spheroids (sphere, oblate, Helikite hull) have P = x - x^2 at every fineness ratio (an
     ellipse stretched along x); the Gertler shapes use :func:`gertler_coefficients` with the
-    Alam & Pant (2017) parameters (``GERTLER_TABLE``).
+    parameters of ``GERTLER_TABLE`` (public table, docs/methods.md S7).
     """
     if shape in ("sphere", "oblate", "helikite"):
         return np.array([0.0, 1.0, -1.0])

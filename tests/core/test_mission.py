@@ -225,7 +225,8 @@ def test_winch_pull_is_the_largest_winch_tension_survival_included():
     ev = d.constraints.evaluation
     assert m.winch_pull == pytest.approx(float(np.max(ev.tether.tension_winch)))
     assert m.winch.power == pytest.approx(m.winch_pull * 0.3048 / 0.75)
-    assert m.winch.drum_diameter == pytest.approx(20 * d.airframe.tether.diameter)
+    # drum core = 2 x (dynamic bend radius 20 d), constants.TETHER_BEND_RADIUS_RATIO
+    assert m.winch.drum_diameter == pytest.approx(40 * d.airframe.tether.diameter)
     assert m.winch.reel_time == pytest.approx(300.0 / 0.3048)
 
 
