@@ -8,6 +8,12 @@ and damage leak more than the fabric (measured leaks of whole aerostats exceed t
 figure); use a higher effective permeability to cover them. With hydrogen the fabric's figure
 is applied as given (hydrogen permeates faster than helium through most films: enter its own
 figure).
+
+Permeability figures (docs/methods.md §1.14): the measured ones are Lv et al. 2022 (S15), 0.8818
+and 0.6360 L/(m2 day atm) on new 3216LV and FV1175 laminates, about 0.2 after 18 months of
+coastal ageing. The default 2.5 L/m2/day "ADRDE" figure was seen only second-hand (S8); its
+primary source was not found (S18). Model: Fick's-law flux proportional to the helium partial
+pressure difference, the definition of a permeability quoted per atmosphere.
 """
 
 from __future__ import annotations

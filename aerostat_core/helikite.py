@@ -2,8 +2,9 @@
 
 The hull is the ``helikite`` shape of :mod:`aerostat_core.shapes` (a prolate spheroid, l/d 1.24
 by default: Table 2.2's 6.2 m x 5 m). The kite is a flat low-aspect-ratio sail bridled to fly at a
-fixed incidence to the wind (the keel aligns the craft with the wind, Rogers 2001), so its
-coefficients do not depend on the hull's pitch:
+fixed incidence to the wind (the keel "aids in aligning the entire system in the wind
+direction": IIT Bombay DIC Helikite page, diciitb.wordpress.com/helikite), so its coefficients
+do not depend on the hull's pitch:
 
     C_L = C_L_alpha(AR) * alpha_k  (Helmbold/DATCOM lift slope, alpha_k <= stall),
     C_D = C_L^2 / (pi e AR)  (Oswald e from Raymer's fit; the hull carries the profile drag),
@@ -15,6 +16,13 @@ CALIBRATED to that lift and scales with V^(2/3) (geometric similarity); the kite
 S_k. Limits (Table 2.1): wind <= 25 m/s, payload < 30 kg, altitude about 2 km;
 :func:`helikite_limits` lists those a requirement breaks. The aspect ratio (1.5) and bridle
 incidence (15 deg) are ASSUMED (constants.py); only their product with S_k is pinned by Table 2.2.
+
+Sources: the one published Helikite performance figure held is the thesis' Table 2.2 (48 kg of
+dynamic lift at 15 m/s, kite 11.38 kg, after the Allsopp Helikites "Aerostar" web page, which
+was not read here) and its Table 2.1 limits. No published lift or drag coefficient of a
+Helikite sail was found (docs/methods.md S18), so C_L and C_D follow from the Helmbold slope
+and Oswald's induced drag at the assumed AR and incidence, and only the lift is pinned by the
+thesis; the kite's drag is a prediction of that model, not a calibrated number.
 """
 
 from __future__ import annotations

@@ -4,6 +4,11 @@ Onboard: the battery stores the payload energy over the time between recharges. 
 tether: a go-and-return pair of copper conductors, sized for a supply voltage and an allowed
 resistive loss (with a current-density ceiling), is bundled with the strength member; it adds
 mass per metre, diameter (drag) and some strength.
+
+No power or electro-optic tether product with a published mass per metre, diameter and
+breaking load was found (docs/methods.md §1.14, S18): the catalogue's power tethers are
+:func:`power_tether` applied to the Dyneema 6 mm entry, COMPUTED examples labelled so in
+``materials.TETHER_SOURCES``.
 """
 
 from __future__ import annotations
@@ -39,8 +44,10 @@ def battery_mass(power, hours, energy_density, depth_of_discharge=1.0):
 
     Notes
     -----
-    Valid for any chemistry given its pack-level figure (cells, wiring, case and management;
-    Li-ion packs are about 150-200 Wh/kg). Source: definition of specific energy.
+    Valid for any chemistry given its pack-level figure (cells, wiring, case and management).
+    Source: definition of specific energy. The default 150 Wh/kg for a Li-ion pack
+    (constants.BATTERY_ENERGY_DENSITY) is ASSUMED: no pack data sheet or review was read for it
+    (docs/methods.md §1.14, S18).
 
     Examples
     --------

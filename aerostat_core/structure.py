@@ -1,5 +1,9 @@
 """Envelope structure: the internal pressure the hull needs, the membrane stresses it makes and
-the fabric strength that carries them (issue 13 item 4).
+the fabric strength that carries them (issue 13 item 4; docs/methods.md §1.14).
+
+Where the rules come from: the membrane loads are thin-shell statics; the pressure factor 1.2
+and the safety factor 4 have no primary source found (docs/methods.md S18) and are inputs with
+those defaults (constants.PRESSURE_DYNAMIC_FACTOR, constants.ENVELOPE_SAFETY_FACTOR).
 """
 
 from __future__ import annotations
@@ -31,8 +35,10 @@ def required_pressure(q, rho_air, rho_gas, g, diameter, factor):
     -----
     Valid for a non-rigid, streamlined hull trimmed at small angle of attack (the stagnation
     pressure on the nose is about q); gusts and pitch raise the local pressure, which the
-    factor and the fabric safety factor cover. Sources: the rule of thumb quoted in issue 13
-    (constants.PRESSURE_DYNAMIC_FACTOR); hydrostatics of a gas column of height d.
+    factor and the fabric safety factor cover. Sources: the head term is the hydrostatics of a
+    gas column of height d; the factor 1.2 is the rule of thumb quoted in issue 13, for which
+    no primary source was found (constants.PRESSURE_DYNAMIC_FACTOR, docs/methods.md S18), so it
+    is an engineering margin over the stagnation pressure q.
 
     Examples
     --------
@@ -47,7 +53,10 @@ def membrane_loads(pressure, radius, moment=0.0):
     """Hoop and longitudinal membrane loads of a pressurised hull section [N/m].
 
     N_hoop = p r; N_long = p r/2 + |M|/(pi r^2) (thin-walled cylinder of radius r with a
-    bending moment M about the section; Carichner & Nicolai 2013, envelope design).
+    bending moment M about the section: the hoop and axial membrane loads of a closed pressure
+    vessel, and the peak axial load M/(pi r^2) of a thin circular section in bending, of
+    second moment pi r^3 per unit wall thickness). Source: thin-shell statics, derived here;
+    no airship text was available to cross-check it.
 
     Valid for a thin membrane (fabric thickness << r), away from the nose and tail caps and the
     fin and confluence-line attachments (local patches carry those loads).
@@ -60,6 +69,16 @@ def membrane_loads(pressure, radius, moment=0.0):
         Section radius [m] (the hull's maximum radius is the critical section for hoop load).
     moment : array_like
         Bending moment at the section [N m].
+
+    Returns
+    -------
+    n_hoop, n_long : ndarray
+        Hoop and longitudinal membrane loads [N/m].
+
+    Examples
+    --------
+    >>> [float(x) for x in membrane_loads(200.0, 2.0)]
+    [400.0, 200.0]
     """
     p, r = np.asarray(pressure, float), np.asarray(radius, float)
     return p * r, 0.5 * p * r + np.abs(np.asarray(moment, float)) / (np.pi * r**2)
@@ -75,7 +94,8 @@ def allowable_pressure(strength, safety_factor, radius, moment=0.0):
     strength : float
         Fabric tensile strength F [N/m] (the weaker warp/fill direction).
     safety_factor : float
-        [-] (Carichner & Nicolai: 4).
+        [-] (default 4, constants.ENVELOPE_SAFETY_FACTOR: attributed to Carichner & Nicolai,
+        unverified).
     radius : array_like
         [m].
     moment : array_like
