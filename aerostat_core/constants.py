@@ -143,11 +143,28 @@ ENVELOPE_SAFETY_FACTOR = 4.0
 #: about q, so the gas must exceed q there) is standard; 1.2 is an engineering margin, kept as
 #: an input (MissionSpec.pressure_dynamic_factor).
 PRESSURE_DYNAMIC_FACTOR = 1.2
-#: Pack-level specific energy of an onboard Li-ion battery [Wh/kg], ASSUMED order of magnitude
-#: (cells about 250 Wh/kg; packs with wiring, case and management 150-200 Wh/kg). No pack data
-#: sheet or review was read for it: an engineering choice, an input
-#: (MissionSpec.battery_energy_density).
+#: Pack-level specific energy of an onboard battery [Wh/kg]: 150, an engineering choice between
+#: the two pack figures read (BATTERY_PACK_REFERENCES): an enclosed LiFePO4 pack with its
+#: management system, 107 Wh/kg, and a bare lithium-polymer drone pack, 216 Wh/kg. An input
+#: (MissionSpec.battery_energy_density); enter the pack's own data sheet figure.
 BATTERY_ENERGY_DENSITY = 150.0
+#: Published pack figures behind BATTERY_ENERGY_DENSITY: name -> (nominal energy [Wh], mass
+#: [kg], source). The CONSSIN sheet prints "Nominal Energy 1280 Wh" and "Weight 12 kg"; the
+#: DJI Mavic figure is second-hand, from the README of the public repository
+#: kopern/smarter_mavic_battery ("a weight for 202grams and provide 43.6 Watts [Wh]").
+BATTERY_PACK_REFERENCES = {
+    "CONSSIN CSP1280-12.8-A LiFePO4 pack, IP65": (
+        1280.0,
+        12.0,
+        "FUZHOU CONSSIN LIGHTING CO., LTD product specification, public copy "
+        "github.com/conssin2003-oss/conssin-files (CSP1280-12.8 datasheet.pdf)",
+    ),
+    "DJI Mavic flight pack, LiPo": (
+        43.6,
+        0.202,
+        "second-hand: README of github.com/kopern/smarter_mavic_battery",
+    ),
+}
 #: Usable fraction of a battery's rated energy [-], ASSUMED (long cycle life).
 BATTERY_DEPTH_OF_DISCHARGE = 0.8
 #: Ground supply voltage of a power tether [V], ASSUMED (low-voltage DC/AC class).

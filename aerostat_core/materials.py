@@ -183,11 +183,13 @@ LV_2022_FIGURES = {
     "HV150 laminate (Lv 2022)": (82.13, None),
 }
 
-#: Tether catalogue. Each entry's source is in :data:`TETHER_SOURCES`. No power or
+#: Tether catalogue. Each entry's source is in :data:`TETHER_SOURCES`. No aerostat power or
 #: electro-optic tether data sheet with mass per metre, diameter and breaking load was found in
 #: the stored sources (searched: Linden Photonics, Elistair, TCOM, tethered-drone cable pages,
-#: power/fibre-optic tether patents); the power tethers are COMPUTED examples and the
-#: electro-optic tether an ASSUMED order of magnitude, named so in their labels' sources.
+#: power/fibre-optic tether patents). The one power tether product with published figures is an
+#: underwater one, VideoRay's ROV tethers (:data:`VIDEORAY_TETHERS`); the two Dyneema-based
+#: power tethers are COMPUTED examples and the electro-optic tether an ASSUMED order of
+#: magnitude, named so in their sources.
 TETHERS: dict[str, TetherSpec] = {
     t.name: t
     for t in (
@@ -201,6 +203,53 @@ TETHERS: dict[str, TetherSpec] = {
                    1.0, 0.01, 30345.0, 1.4e6),
     )
 }
+
+#: VideoRay ROV tethers (docs/methods.md S20), 400 V DC power on two poles of paired conductors inside a Kevlar
+#: strength member (kb.videoray.com/knowledge-base/tether-specifications: diameters, minimum
+#: bend radii and conductor gauges; .../tether-care-and-handling: "Tether cable = 450 kg (1,000
+#: pounds) (internal rated Kevlar)", the maker's maximum strength rating; download.videoray.com
+#: MSS Defender manual: Neutral and Performance tethers are "neutrally buoyant in fresh water").
+#: name -> (diameter [m], min bend radius [m], AWG of each of the 2 conductors per power pole).
+#: Mass per metre is DERIVED from the neutral buoyancy: rho_water pi d^2/4 (fresh water
+#: 998 kg/m3 at 20 degC). The Negative tether is left out: its mass is not published.
+VIDEORAY_TETHERS = {
+    "VideoRay Neutral ROV tether 11.2 mm (400 V DC)": (0.01118, 0.114, 20),
+    "VideoRay Performance ROV tether 8.2 mm (400 V DC)": (0.00818, 0.0825, 24),
+}
+#: [kg] the maker's maximum strength rating of the tether cable (tether-care-and-handling page).
+VIDEORAY_STRENGTH_RATING_KG = 450.0
+#: [kg/m3] fresh water at 20 degC (the medium the tethers are neutral in).
+FRESH_WATER_DENSITY = 998.0
+
+
+def awg_area(gauge: int) -> float:
+    """Cross-section of a solid round wire of American Wire Gauge ``gauge`` [m2].
+
+    d = 0.127 mm x 92^((36 - n)/39) (ASTM B258 definition of the gauge), A = pi d^2/4.
+
+    Examples
+    --------
+    >>> round(awg_area(20) * 1e6, 4)
+    0.5176
+    """
+    d = 0.127e-3 * 92.0 ** ((36 - gauge) / 39.0)
+    return math.pi * d * d / 4.0
+
+
+TETHERS.update(
+    {
+        name: TetherSpec(
+            name,
+            FRESH_WATER_DENSITY * math.pi * d * d / 4.0,
+            d,
+            1.0,
+            0.01,
+            VIDEORAY_STRENGTH_RATING_KG * 9.80665,
+            5.0e5,
+        )
+        for name, (d, _, _) in VIDEORAY_TETHERS.items()
+    }
+)
 
 #: OpenSourceAWE KiteUtils.jl data/settings.yaml, "tether:" block (docs/dynamics.md D12): a
 #: 4 mm Dyneema tether, d_tether 4 mm, rho_tether 724 kg/m3 (so 9.10 g/m), axial_stiffness
@@ -224,6 +273,13 @@ TETHER_SOURCES: dict[str, str] = {
     "Power tether 2 x 2.5 mm2 Cu on Dyneema 6 mm (71 g/m)": "COMPUTED example, not a product: "
     "the Dyneema 6 mm entry plus two 2.5 mm2 ETFE-insulated copper conductors "
     "(aerostat_core.power.power_tether)",
+    **{
+        name: "VideoRay LLC ROV tether (underwater product, not an aerostat tether): diameter "
+        "and conductor gauge from kb.videoray.com/knowledge-base/tether-specifications; "
+        "strength = the maker's 450 kg maximum rating (tether-care-and-handling); mass DERIVED "
+        "from its published neutral buoyancy in fresh water; C_dn 1.0 and EA 0.5 MN ASSUMED"
+        for name in VIDEORAY_TETHERS
+    },
 }
 
 #: Copper area of each of the two conductors of the catalogue's power tethers [m2]. These
@@ -235,4 +291,6 @@ TETHER_SOURCES: dict[str, str] = {
 POWER_TETHER_CONDUCTORS: dict[str, float] = {
     "Power tether 2 x 1.5 mm2 Cu on Dyneema 6 mm (52 g/m)": 1.5e-6,
     "Power tether 2 x 2.5 mm2 Cu on Dyneema 6 mm (71 g/m)": 2.5e-6,
+    # VideoRay: each power pole (400 V DC +, ground) is two conductors of the published gauge
+    **{name: 2.0 * awg_area(awg) for name, (_, _, awg) in VIDEORAY_TETHERS.items()},
 }

@@ -53,9 +53,9 @@ class MissionSpec:
     Parameters
     ----------
     battery_energy_density : float
-        Pack-level specific energy of the onboard battery [Wh/kg], valid [20, 1000]. Default 150:
-        Li-ion packs (cells about 250 Wh/kg, packs 150-200 Wh/kg with wiring, case and
-        management; order of magnitude, ASSUMED).
+        Pack-level specific energy of the onboard battery [Wh/kg], valid [20, 1000]. Default 150
+        (constants.BATTERY_ENERGY_DENSITY: between an enclosed LiFePO4 pack's 107 and a LiPo
+        drone pack's 216 Wh/kg).
     battery_depth_of_discharge : float
         Usable fraction of the rated energy [-], valid (0, 1]; 0.8 for long cycle life (ASSUMED).
     battery_hours : float or None

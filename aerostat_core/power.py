@@ -45,9 +45,9 @@ def battery_mass(power, hours, energy_density, depth_of_discharge=1.0):
     Notes
     -----
     Valid for any chemistry given its pack-level figure (cells, wiring, case and management).
-    Source: definition of specific energy. The default 150 Wh/kg for a Li-ion pack
-    (constants.BATTERY_ENERGY_DENSITY) is ASSUMED: no pack data sheet or review was read for it
-    (docs/methods.md §1.14, S18).
+    Source: definition of specific energy. The default 150 Wh/kg
+    (constants.BATTERY_ENERGY_DENSITY) is an engineering choice between two published packs,
+    107 Wh/kg (enclosed LiFePO4) and 216 Wh/kg (LiPo drone pack) (docs/methods.md §1.14, S19).
 
     Examples
     --------

@@ -19,6 +19,9 @@ from aerostat_core.materials import (
     POWER_TETHER_CONDUCTORS,
     TETHER_SOURCES,
     TETHERS,
+    VIDEORAY_STRENGTH_RATING_KG,
+    VIDEORAY_TETHERS,
+    awg_area,
 )
 from aerostat_core.power import Conductors, power_tether
 
@@ -41,9 +44,13 @@ def test_every_catalogue_tether_names_a_source():
     assert set(TETHER_SOURCES) == set(TETHERS)
     for name, text in TETHER_SOURCES.items():
         assert len(text) > 20, name
-    # the power tethers are the project's own computation, not a product, and say so
+    # the Dyneema power tethers are the project's own computation, not a product, and say so;
+    # the VideoRay ones are a product and name its maker and pages
     for name in POWER_TETHER_CONDUCTORS:
-        assert TETHER_SOURCES[name].startswith("COMPUTED example, not a product"), name
+        if name in VIDEORAY_TETHERS:
+            assert "kb.videoray.com" in TETHER_SOURCES[name], name
+        else:
+            assert TETHER_SOURCES[name].startswith("COMPUTED example, not a product"), name
     assert "ASSUMED" in TETHER_SOURCES["Electro-optic tether 8 mm (60 g/m)"]
 
 
@@ -96,7 +103,38 @@ def test_dyneema_4mm_matches_the_kiteutils_settings():
     assert t6.axial_stiffness == pytest.approx(KITEUTILS_TETHER["axial_stiffness"] * 2.25, rel=0.02)
 
 
-@pytest.mark.parametrize("name", sorted(POWER_TETHER_CONDUCTORS))
+@pytest.mark.parametrize("name", sorted(VIDEORAY_TETHERS))
+def test_videoray_tethers_match_the_published_figures(name):
+    """kb.videoray.com tether specifications: Neutral 11.18 mm (bend radius 114 mm, 2 x 20 AWG
+    per power pole), Performance 8.18 mm (82.5 mm, 2 x 24 AWG); 450 kg strength rating;
+    neutrally buoyant in fresh water, so their mass per metre is the water they displace."""
+    published = {
+        "VideoRay Neutral ROV tether 11.2 mm (400 V DC)": (0.01118, 0.114, 20),
+        "VideoRay Performance ROV tether 8.2 mm (400 V DC)": (0.00818, 0.0825, 24),
+    }[name]
+    assert VIDEORAY_TETHERS[name] == published
+    d, r_bend, awg = published
+    t = TETHERS[name]
+    assert t.diameter == d
+    assert t.breaking_strength == pytest.approx(450.0 * 9.80665, rel=1e-12)
+    assert VIDEORAY_STRENGTH_RATING_KG == 450.0
+    # neutral in fresh water (998-1000 kg/m3): mass per metre within 0.3 % of the displaced water
+    assert t.linear_density == pytest.approx(1000.0 * math.pi * d * d / 4, rel=3e-3)
+    # the maker's minimum bend radius is about 10 d: the static figure of S17, below the drum's
+    assert 10.0 <= r_bend / d <= 10.5 < c.TETHER_BEND_RADIUS_RATIO
+    # the conductors the mission model uses are the published pairs per pole
+    assert POWER_TETHER_CONDUCTORS[name] == pytest.approx(2 * awg_area(awg), rel=1e-12)
+
+
+def test_awg_areas_match_the_gauge_table():
+    """ASTM B258 diameters: 16 AWG 1.291 mm, 20 AWG 0.812 mm, 24 AWG 0.511 mm."""
+    for gauge, dia_mm in ((16, 1.291), (20, 0.812), (24, 0.511)):
+        assert awg_area(gauge) == pytest.approx(math.pi / 4 * (dia_mm * 1e-3) ** 2, rel=3e-3)
+
+
+@pytest.mark.parametrize(
+    "name", sorted(n for n in POWER_TETHER_CONDUCTORS if n not in VIDEORAY_TETHERS)
+)
 def test_computed_power_tethers_are_what_power_tether_gives(name):
     """The catalogue's power tethers are the Dyneema 6 mm entry plus two ETFE-insulated copper
     conductors (0.25 mm wall), exactly as aerostat_core.power.power_tether bundles them."""
@@ -146,7 +184,16 @@ def test_unverified_rules_stay_inputs_with_their_stated_values():
     assert c.PRESSURE_DYNAMIC_FACTOR == 1.2
     assert c.ENVELOPE_SAFETY_FACTOR == 4.0
     assert ADRDE_HELIUM_PERMEABILITY == 2.5
-    assert c.BATTERY_ENERGY_DENSITY == 150.0
     src = Path(c.__file__).read_text(encoding="utf-8")
-    for marker in ("NO primary", "attribution is unverified", "No pack data"):
+    for marker in ("NO primary", "attribution is unverified"):
         assert marker in src, marker
+
+
+def test_battery_default_lies_between_the_published_packs():
+    """CONSSIN CSP1280-12.8-A: 1280 Wh, 12 kg (107 Wh/kg); DJI Mavic pack: 43.6 Wh, 202 g
+    (216 Wh/kg, second-hand). The default 150 Wh/kg is a choice between them."""
+    figures = {k: e / m for k, (e, m, _) in c.BATTERY_PACK_REFERENCES.items()}
+    assert figures["CONSSIN CSP1280-12.8-A LiFePO4 pack, IP65"] == pytest.approx(106.67, abs=0.01)
+    assert figures["DJI Mavic flight pack, LiPo"] == pytest.approx(215.8, abs=0.1)
+    assert min(figures.values()) < c.BATTERY_ENERGY_DENSITY < max(figures.values())
+    assert all(src for _, _, src in c.BATTERY_PACK_REFERENCES.values())
