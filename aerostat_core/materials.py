@@ -160,7 +160,8 @@ FABRIC_SOURCES: dict[str, dict[str, str]] = {
         "helium_permeability": "ADRDE 2.5 L/m2/day, second-hand (ADRDE_HELIUM_PERMEABILITY)",
     },
     "Uretek 3216LV laminate (Lv 2022)": {
-        "areal_density": "ASSUMED 200 g/m2 class (not in Lv 2022; use the data sheet)",
+        "areal_density": "ASSUMED 200 g/m2 class (not in Lv 2022; use the data sheet). Lv 2022 "
+        "names the laminate 3216LV; the maker 'Uretek' in the label is not in the abstract read",
         "tensile_strength": LV_2022 + ": 101.43 kgf/cm",
         "helium_permeability": LV_2022 + ": 0.8818 L/(m2 day atm)",
     },

@@ -1,5 +1,5 @@
 """Catalogue entries and sourced constants carry their source, and match it where it states the
-number (issues 12 and 13; docs/methods.md §1.14, S14-S18)."""
+number (issues 12 and 13; docs/methods.md §1.14, S14-S20)."""
 
 from __future__ import annotations
 
