@@ -131,8 +131,11 @@ BALLONET_RULE_ALTITUDE = 500.0
 #: balloons; stored copy of the eCFR text, faraim.org), asks at least five for "all fibrous or
 #: non-metallic parts of the rigging" (§31.25(c)) and applies the envelope factor of §31.25(b)
 #: "to the more critical of the maximum operating pressure or envelope stress"; the number of
-#: §31.25(b) itself was cut off in the copy read, so it is not quoted here. Unmanned tethered
-#: aerostats are outside Part 31.
+#: §31.25(b) itself was cut off in the copy read, so it is not quoted here. EASA CS 31GB.25
+#: (gas balloons, ED Decision 2011/012/R; balloonwiki.org copy of the CS text) tabulates an
+#: envelope factor of 5.00 (integral load tapes included), suspension 2.25 (fibrous) and 1.50
+#: (metallic): the published figure for manned gas balloons, one step more conservative than
+#: 4. Unmanned tethered aerostats are outside Part 31 and CS-31GB.
 ENVELOPE_SAFETY_FACTOR = 4.0
 #: Internal pressure / dynamic pressure needed to keep a non-rigid hull's nose from dimpling
 #: [-]: the rule of thumb p >= 1.2 q (+ the hydrostatic gas head) quoted in issue 13. NO primary
