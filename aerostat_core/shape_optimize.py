@@ -26,7 +26,7 @@ from .inputs import Configuration, Requirement
 from .optimize import (
     DEFAULT_BOUNDS,
     OBJECTIVES,
-    OptimisationProblem,
+    OptimizationProblem,
     evaluate_designs,
     solve,
 )
@@ -176,7 +176,7 @@ def optimise_shapes(
         if not info.streamlined:
             out[s] = _grid_optimum(req, c, s, objective, int(grid_points))
             continue
-        problem = OptimisationProblem(req, c, shape_bounds(s, bounds), objective)
+        problem = OptimizationProblem(req, c, shape_bounds(s, bounds), objective)
         r = solve(problem, solver, setting, seed=seed)
         out[s] = ShapeOptimum(
             s,

@@ -16,7 +16,7 @@ from aerostat_core.dynamics.thesis import (
     comparison_rows,
     run_thesis_case,
 )
-from aerostat_core.optimize import DEFAULT_BOUNDS, OptimisationProblem, solve
+from aerostat_core.optimize import DEFAULT_BOUNDS, OptimizationProblem, solve
 from aerostat_core.presets import THESIS_OPTIMUM, thesis_optimised_label
 
 CLI_KEYS = {
@@ -33,7 +33,7 @@ CLI_KEYS = {
 def test_one_thesis_optimised_design_matches_the_optimiser():
     """presets.THESIS_OPTIMUM is what the optimiser returns for the thesis preset (SLSQP), and
     the Dynamics page, the CLI and cases.thesis_design() all use it."""
-    r = solve(OptimisationProblem(*thesis_baseline()), "slsqp", "quick")
+    r = solve(OptimizationProblem(*thesis_baseline()), "slsqp", "quick")
     # the optimum sits in a flat valley (fin area against fin position at equal weathervane
     # margin): the mass agrees to 0.1 %, the variables to 10 % of their bound ranges
     assert r.objective == pytest.approx(design(*thesis_optimised()).total_mass, rel=1e-3)

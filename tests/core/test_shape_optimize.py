@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import pytest
 
-from aerostat_core.optimize import OptimisationProblem, solve
+from aerostat_core.optimize import OptimizationProblem, solve
 from aerostat_core.presets import thesis_configuration, thesis_requirement
 from aerostat_core.shape_optimize import optimise_shapes, shape_bounds
 
@@ -32,7 +32,7 @@ def test_best_per_shape_and_overall(study):
 
 def test_npl_optimum_is_the_plain_optimiser(study):
     req, cfg = thesis_requirement(), thesis_configuration(None)
-    r = solve(OptimisationProblem(req, cfg), "slsqp", "quick")
+    r = solve(OptimizationProblem(req, cfg), "slsqp", "quick")
     assert study.per_shape["npl"].objective == pytest.approx(r.objective, rel=1e-9)
     # the streamlined thesis hull beats the bluff ones at this blow-by limit (Figure 2.5)
     assert study.per_shape["npl"].objective < study.per_shape["helikite"].objective
