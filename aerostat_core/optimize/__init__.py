@@ -63,9 +63,7 @@ Python names use the US spelling of ``optimize`` (as scipy.optimize and pymoo do
 
 from __future__ import annotations
 
-import warnings
-from typing import Any
-
+from ..deprecation import deprecated_aliases
 from .batch import (
     ACTIVE_TOL,
     CONSTRAINT_TEXT,
@@ -149,16 +147,4 @@ DEPRECATED_NAMES = {
     "OptimisationCancelled": "OptimizationCancelled",
 }
 
-
-def __getattr__(name: str) -> Any:
-    """Resolve a deprecated name (:data:`DEPRECATED_NAMES`) to its current object, with a
-    ``DeprecationWarning``; any other unknown name raises AttributeError as usual."""
-    new = DEPRECATED_NAMES.get(name)
-    if new is None:
-        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-    warnings.warn(
-        f"aerostat_core.optimize.{name} is deprecated; use {new} (US spelling, as scipy.optimize)",
-        DeprecationWarning,
-        stacklevel=2,
-    )
-    return globals()[new]
+__getattr__ = deprecated_aliases(__name__, globals(), DEPRECATED_NAMES)

@@ -72,7 +72,7 @@ def solve(
     if setting not in SETTINGS:
         raise ValueError(f"setting = {setting!r}: choose one of {', '.join(SETTINGS)}")
     kw = {**SETTINGS[setting][solver], **overrides}
-    budget.check_optimisation(problem, solver, kw)
+    budget.check_optimization(problem, solver, kw)
     return SOLVERS[solver][1](problem, seed=seed, progress=progress, stop=stop, **kw)
 
 

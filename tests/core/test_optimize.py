@@ -121,28 +121,6 @@ def test_finite_difference_stencil_is_second_order_everywhere() -> None:
         assert np.allclose(fd_gradient(vals, kind, h), exact, atol=2e-5)
 
 
-@pytest.mark.parametrize(
-    ("old", "new"),
-    [
-        ("OptimisationProblem", "OptimizationProblem"),
-        ("OptimisationResult", "OptimizationResult"),
-        ("OptimisationCancelled", "OptimizationCancelled"),
-    ],
-)
-def test_british_spellings_are_deprecated_aliases_of_the_us_names(old, new) -> None:
-    import aerostat_core.optimize as opt
-
-    with pytest.warns(DeprecationWarning, match=f"{old} is deprecated; use {new}"):
-        obj = getattr(opt, old)
-    assert obj is getattr(opt, new)
-    with pytest.warns(DeprecationWarning):
-        exec(f"from aerostat_core.optimize import {old} as alias", ns := {})
-    assert ns["alias"] is obj
-    assert old not in opt.__all__ and new in opt.__all__
-    with pytest.raises(AttributeError, match="no attribute 'Optimisation'"):
-        opt.Optimisation  # noqa: B018 - an unknown name still fails
-
-
 def test_cancel_returns_the_best_so_far() -> None:
     p, _, _ = box_problem()
     calls = []

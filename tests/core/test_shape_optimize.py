@@ -6,12 +6,12 @@ import pytest
 
 from aerostat_core.optimize import OptimizationProblem, solve
 from aerostat_core.presets import thesis_configuration, thesis_requirement
-from aerostat_core.shape_optimize import optimise_shapes, shape_bounds
+from aerostat_core.shape_optimize import optimize_shapes, shape_bounds
 
 
 @pytest.fixture(scope="module")
 def study():
-    return optimise_shapes(
+    return optimize_shapes(
         thesis_requirement(),
         thesis_configuration(None),
         shapes=("npl", "gnvr", "sphere", "helikite"),
@@ -46,9 +46,9 @@ def test_bounds_are_cut_to_the_shape_range_and_inputs_checked():
     )
     req, cfg = thesis_requirement(), thesis_configuration(None)
     with pytest.raises(ValueError, match="not a known hull shape"):
-        optimise_shapes(req, cfg, shapes=("cigar",))
+        optimize_shapes(req, cfg, shapes=("cigar",))
     with pytest.raises(ValueError, match="objective"):
-        optimise_shapes(req, cfg, objective="cost")
+        optimize_shapes(req, cfg, objective="cost")
 
 
 def test_fineness_sweeps_per_shape():
