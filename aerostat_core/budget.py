@@ -20,6 +20,8 @@ import math
 from collections.abc import Mapping
 from typing import Any
 
+from .deprecation import deprecated_aliases
+
 #: Largest request [units = segments x wind speeds x cases]. The thesis baseline is 1 100;
 #: 200 saved baseline cases 220 000; 5000 segments at 0.1 m/s steps (201 speeds) 1 005 000.
 MAX_UNITS = 500_000
@@ -119,10 +121,10 @@ def check_cases(cases: Mapping[str, Any], what: str = "This comparison") -> int:
     return check(worst[0], worst[1], max(n, math.ceil(total / units(*worst))), what)
 
 
-def optimisation_evaluations(solver: str, settings: Mapping[str, Any]) -> int:
+def optimization_evaluations(solver: str, settings: Mapping[str, Any]) -> int:
     """Upper estimate of the designs one optimiser run evaluates (each at the design wind).
 
-    >>> optimisation_evaluations("pso", {"pop_size": 20, "max_generations": 40})
+    >>> optimization_evaluations("pso", {"pop_size": 20, "max_generations": 40})
     820
     """
     if solver == "slsqp":  # finite-difference gradient: 3 variables + 1 per iteration
@@ -135,12 +137,21 @@ def optimisation_evaluations(solver: str, settings: Mapping[str, Any]) -> int:
     return 1
 
 
-def check_optimisation(problem: Any, solver: str, settings: Mapping[str, Any]) -> int:
+def check_optimization(problem: Any, solver: str, settings: Mapping[str, Any]) -> int:
     """:func:`check` for one optimiser run on ``problem`` (a problem without a configuration,
     e.g. a test function, costs nothing)."""
     cfg = getattr(problem, "configuration", None) or getattr(problem, "cfg", None)
     segments = getattr(cfg, "tether_segments", None)
     if segments is None:
         return 0
-    n = optimisation_evaluations(solver, settings)
+    n = optimization_evaluations(solver, settings)
     return check(segments, 1, n, f"This optimisation ({solver})")
+
+
+#: Deprecated British spellings -> the current names (docs/architecture.md §7).
+DEPRECATED_NAMES = {
+    "optimisation_evaluations": "optimization_evaluations",
+    "check_optimisation": "check_optimization",
+}
+
+__getattr__ = deprecated_aliases(__name__, globals(), DEPRECATED_NAMES)

@@ -22,6 +22,7 @@ from __future__ import annotations
 
 from dataclasses import replace
 
+from .deprecation import deprecated_aliases
 from .inputs import Configuration, FinSpec, HullSpec, LiftingGas, Requirement
 from .materials import TETHERS, Fabric
 from .rules import THESIS_BLOW_BY_FRACTION, get_rules
@@ -113,15 +114,24 @@ def thesis_baseline() -> tuple[Requirement, Configuration]:
 THESIS_OPTIMUM = {"fineness_ratio": 2.5027, "area_change": -32.405, "position": 0.68504}
 
 
-def thesis_optimised_label() -> str:
+def thesis_optimized_label() -> str:
     """Short name of the thesis optimised design, from ``THESIS_OPTIMUM`` (its one definition,
     shared by the Dynamics and Optimise pages and the ``simulate`` CLI)."""
     return (f"Thesis optimised design (f = {THESIS_OPTIMUM['fineness_ratio']:g}, volume sized to "
             "the blow-by limit: about 120 m³)")
 
 
-def thesis_optimised() -> tuple[Requirement, Configuration]:
+def thesis_optimized() -> tuple[Requirement, Configuration]:
     """(Requirement, Configuration) of the optimised design (volume sized to the blow-by limit)."""
     req, cfg = thesis_baseline()
     cfg = cfg.with_design_variables(volume=None, **THESIS_OPTIMUM)
     return req, replace(cfg)
+
+
+#: Deprecated British spellings -> the current names (docs/architecture.md §7).
+DEPRECATED_NAMES = {
+    "thesis_optimised": "thesis_optimized",
+    "thesis_optimised_label": "thesis_optimized_label",
+}
+
+__getattr__ = deprecated_aliases(__name__, globals(), DEPRECATED_NAMES)

@@ -23,8 +23,8 @@ import numpy as np
 
 from . import budget
 from .inputs import Configuration, Requirement
-from .optimize import DEFAULT_BOUNDS, VARIABLE_INFO, VARIABLES, DesignBatch, _check_bounds
-from .optimize import evaluate_designs as _evaluate
+from .optimize.batch import DEFAULT_BOUNDS, VARIABLE_INFO, VARIABLES, DesignBatch, check_bounds
+from .optimize.batch import evaluate_designs as _evaluate
 
 #: Sweep outputs: key of :class:`DesignBatch` -> (label, unit).
 OUTPUTS: dict[str, tuple[str, str]] = {
@@ -73,8 +73,8 @@ def _ranges(ranges: Mapping[str, Sequence[float]] | None) -> dict[str, tuple[flo
     if ranges is not None:
         if not isinstance(ranges, Mapping):
             raise ValueError("ranges must be a mapping {variable: (low, high)}")
-        full.update(_check_bounds(ranges) if len(ranges) else {})
-    return _check_bounds(full)
+        full.update(check_bounds(ranges) if len(ranges) else {})
+    return check_bounds(full)
 
 
 @dataclass(frozen=True)

@@ -22,11 +22,12 @@ from typing import Any
 
 import numpy as np
 
+from .deprecation import deprecated_aliases
 from .inputs import Configuration, Requirement
 from .optimize import (
     DEFAULT_BOUNDS,
     OBJECTIVES,
-    OptimisationProblem,
+    OptimizationProblem,
     evaluate_designs,
     solve,
 )
@@ -127,7 +128,7 @@ def _grid_optimum(req, cfg, shape, objective, grid_points) -> ShapeOptimum:
     return ShapeOptimum(shape, "grid", x, float(obj[i]), bool(ok[i]), batch.row(i), msg, fs.size)
 
 
-def optimise_shapes(
+def optimize_shapes(
     req: Requirement,
     cfg: Configuration,
     shapes: Sequence[str] | None = None,
@@ -176,7 +177,7 @@ def optimise_shapes(
         if not info.streamlined:
             out[s] = _grid_optimum(req, c, s, objective, int(grid_points))
             continue
-        problem = OptimisationProblem(req, c, shape_bounds(s, bounds), objective)
+        problem = OptimizationProblem(req, c, shape_bounds(s, bounds), objective)
         r = solve(problem, solver, setting, seed=seed)
         out[s] = ShapeOptimum(
             s,
@@ -234,3 +235,9 @@ def fineness_sweeps(
             s, fs, b.volume, b.total_mass, b.blow_by, b.feasible, info.default_fineness
         )
     return out
+
+
+#: Deprecated British spelling -> the current name (docs/architecture.md §7).
+DEPRECATED_NAMES = {"optimise_shapes": "optimize_shapes"}
+
+__getattr__ = deprecated_aliases(__name__, globals(), DEPRECATED_NAMES)

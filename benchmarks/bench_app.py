@@ -351,7 +351,7 @@ def bench_progress() -> None:
     try:
         from aerostat_core import thesis_baseline
         from aerostat_core.io import inputs_to_dict
-        from aerostat_core.optimize import DEFAULT_BOUNDS, OptimisationProblem, solve
+        from aerostat_core.optimize import DEFAULT_BOUNDS, OptimizationProblem, solve
     except ImportError as exc:
         print(f"optimisation progress: skipped ({exc})")
         return
@@ -360,7 +360,7 @@ def bench_progress() -> None:
     for solver in ("slsqp", "surrogate", "pso"):
         for level in ("quick", "normal"):
             stamps = [time.perf_counter()]
-            p = OptimisationProblem(*thesis_baseline(), DEFAULT_BOUNDS)
+            p = OptimizationProblem(*thesis_baseline(), DEFAULT_BOUNDS)
             solve(
                 p, solver, level, 0, progress=lambda f, t, s=stamps: s.append(time.perf_counter())
             )

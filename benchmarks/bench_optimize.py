@@ -20,7 +20,7 @@ os.environ.setdefault("OMP_NUM_THREADS", "1")
 
 from aerostat_core import thesis_baseline  # noqa: E402
 from aerostat_core.optimize import (  # noqa: E402
-    OptimisationProblem,
+    OptimizationProblem,
     agreement,
     pareto_front,
     solve,
@@ -51,7 +51,7 @@ def main() -> None:
     args = ap.parse_args()
     n = max(args.repeats, 1)
     req, cfg = thesis_baseline()
-    problem = OptimisationProblem(req, cfg)
+    problem = OptimizationProblem(req, cfg)
     print(
         f"machine: {platform.machine()}, {os.cpu_count()} cores, "
         f"Python {platform.python_version()}; thesis preset, blow-by limit "

@@ -15,6 +15,8 @@ if not os.environ.get("AEROSTAT_DATA_DIR"):
     os.environ["AEROSTAT_DATA_DIR"] = tempfile.mkdtemp(prefix="aerostat-test-data-")
 os.environ.pop("AEROSTAT_DATABASE_URL", None)
 
-settings.register_profile("ci", derandomize=True, print_blob=True)
-settings.register_profile("dev", print_blob=True)
+# No per-example deadline: hypothesis' default 200 ms is a wall-clock threshold, and on the shared
+# 2-core machine a design() took 279 ms under load (speed belongs in benchmarks/).
+settings.register_profile("ci", derandomize=True, print_blob=True, deadline=None)
+settings.register_profile("dev", print_blob=True, deadline=None)
 settings.load_profile("ci" if os.environ.get("CI") else "dev")

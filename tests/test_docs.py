@@ -267,6 +267,44 @@ def test_no_import_cycles_in_the_core() -> None:
     assert not cycle, "module-level import cycle: " + " -> ".join(cycle)
 
 
+def test_no_core_module_imports_another_modules_private_names() -> None:
+    """``from aerostat_core.x import _name`` (or ``module._name`` of an imported core module)
+    couples a module to another's internals; helpers shared between modules are public."""
+    bad = []
+    for f in _python_files("aerostat_core"):
+        tree = ast.parse(f.read_text(encoding="utf-8"))
+        package = _module_name(f) if f.name == "__init__.py" else _module_name(f).rpartition(".")[0]
+        core_aliases = set()
+        for node in ast.walk(tree):
+            if isinstance(node, ast.ImportFrom):
+                if node.level:
+                    base = package.split(".")[: len(package.split(".")) - (node.level - 1)]
+                    target = ".".join(base + ([node.module] if node.module else []))
+                else:
+                    target = node.module or ""
+                if _top(target) != "aerostat_core":
+                    continue
+                for a in node.names:
+                    if a.name.startswith("_") and not a.name.startswith("__"):
+                        bad.append(f"{f.relative_to(ROOT)}:{node.lineno} imports {target}.{a.name}")
+                    elif _is_module(f"{target}.{a.name}"):
+                        core_aliases.add(a.asname or a.name)
+            elif isinstance(node, ast.Import):
+                core_aliases |= {
+                    a.asname or a.name for a in node.names if _top(a.name) == "aerostat_core"
+                }
+        for node in ast.walk(tree):
+            if (
+                isinstance(node, ast.Attribute)
+                and isinstance(node.value, ast.Name)
+                and node.value.id in core_aliases
+                and node.attr.startswith("_")
+                and not node.attr.startswith("__")
+            ):
+                bad.append(f"{f.relative_to(ROOT)}:{node.lineno} uses {node.value.id}.{node.attr}")
+    assert not bad, "\n".join(bad)
+
+
 def test_ui_layer_imports_the_core_and_ui_libraries_only() -> None:
     bad = _violations(
         _python_files("app_ui"),

@@ -2,10 +2,10 @@
 
 Typical use::
 
-    from aerostat_core import design, thesis_optimised
+    from aerostat_core import design, thesis_optimized
     from aerostat_core.dynamics import (Gust, SpeedSchedule, WindScenario, engine_guess,
                                         simulate, system_from_design)
-    d = design(*thesis_optimised())
+    d = design(*thesis_optimized())
     system = system_from_design(d, segments=20)
     wind = WindScenario(SpeedSchedule.constant(10.0), gust=Gust(5.0, 0.0, 60.0, 20.0))
     res = simulate(system, wind, 150.0, guess=engine_guess(system, d, 10.0))

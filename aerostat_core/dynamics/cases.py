@@ -70,13 +70,13 @@ R3_TOP0 = (0.0, 319.5)
 
 
 def thesis_design(volume: float | None = None, fineness_ratio: float | None = None):
-    """The thesis' optimised aerostat: the static engine's ``thesis_optimised()`` preset (about
+    """The thesis' optimised aerostat: the static engine's ``thesis_optimized()`` preset (about
     120 m3, 10 kg payload at 300 m, volume sized to the calibrated blow-by limit). ``volume`` [m3]
     and ``fineness_ratio`` [-] override the preset (e.g. 120 m3 with f = 4, the issue's reading of
     the thesis)."""
-    from .. import design, thesis_optimised
+    from .. import design, thesis_optimized
 
-    req, cfg = thesis_optimised()
+    req, cfg = thesis_optimized()
     if volume is not None:
         cfg = cfg.with_design_variables(volume=volume)
     if fineness_ratio is not None:

@@ -3,7 +3,7 @@
     python -m aerostat_core simulate --scenario {steady,varying,gust,turbulence}
         [--design design.json] [--duration S] [--seed N] [--csv out.csv] [--json]
 
-The default design is the thesis optimised design (:func:`aerostat_core.presets.thesis_optimised`)
+The default design is the thesis optimised design (:func:`aerostat_core.presets.thesis_optimized`)
 and each scenario has the thesis comparison's settings (:mod:`.thesis`). ``--json`` prints
 settling_time_s, pitch_range_deg [min, max], u_peak_mps, w_peak_mps, pitch_peak_deg (peak
 deviations from the mean over the stated window), tension_range_N [min, max], status, the

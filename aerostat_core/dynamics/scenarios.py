@@ -81,10 +81,10 @@ def design_of(req: Mapping[str, Any]):
     """The static-engine design of a request (the thesis optimised design when no inputs)."""
     from .. import design
     from ..io import inputs_from_dict
-    from ..presets import thesis_optimised
+    from ..presets import thesis_optimized
 
     if req.get("inputs") is None:
-        return design(*thesis_optimised())
+        return design(*thesis_optimized())
     return design(*inputs_from_dict(req["inputs"]))
 
 
@@ -177,7 +177,7 @@ def request_header(req: Mapping[str, Any], res: SimulationResult) -> dict:
     """Scenario and every parameter of a run, as plain text (the CSV header)."""
     h = {
         "scenario": req["scenario"],
-        "design": "thesis optimised (presets.thesis_optimised)"
+        "design": "thesis optimised (presets.thesis_optimized)"
         if req.get("inputs") is None
         else "given inputs",
     }

@@ -9,7 +9,7 @@ import pytest
 
 from aerostat_core import budget, design, thesis_baseline
 from aerostat_core.io import inputs_to_dict
-from aerostat_core.optimize import OptimisationProblem, solve
+from aerostat_core.optimize import OptimizationProblem, solve
 from aerostat_core.report import case_designs
 from aerostat_core.sensitivity import one_at_a_time, two_variable_map
 
@@ -67,4 +67,4 @@ def test_sweeps_maps_and_optimisations_are_checked_before_work():
     with pytest.raises(budget.BudgetError, match="This map"):
         two_variable_map(req, cfg, n=20)  # 400 designs x 5000
     with pytest.raises(budget.BudgetError, match="optimisation"):
-        solve(OptimisationProblem(req, cfg), "pso")
+        solve(OptimizationProblem(req, cfg), "pso")

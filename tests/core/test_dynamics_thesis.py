@@ -6,7 +6,7 @@ import json
 import numpy as np
 import pytest
 
-from aerostat_core import design, thesis_baseline, thesis_optimised
+from aerostat_core import design, thesis_baseline, thesis_optimized
 from aerostat_core.cli import main
 from aerostat_core.dynamics import cases
 from aerostat_core.dynamics.scenarios import default_request, design_of
@@ -16,8 +16,8 @@ from aerostat_core.dynamics.thesis import (
     comparison_rows,
     run_thesis_case,
 )
-from aerostat_core.optimize import DEFAULT_BOUNDS, OptimisationProblem, solve
-from aerostat_core.presets import THESIS_OPTIMUM, thesis_optimised_label
+from aerostat_core.optimize import DEFAULT_BOUNDS, OptimizationProblem, solve
+from aerostat_core.presets import THESIS_OPTIMUM, thesis_optimized_label
 
 CLI_KEYS = {
     "settling_time_s",
@@ -33,20 +33,20 @@ CLI_KEYS = {
 def test_one_thesis_optimised_design_matches_the_optimiser():
     """presets.THESIS_OPTIMUM is what the optimiser returns for the thesis preset (SLSQP), and
     the Dynamics page, the CLI and cases.thesis_design() all use it."""
-    r = solve(OptimisationProblem(*thesis_baseline()), "slsqp", "quick")
+    r = solve(OptimizationProblem(*thesis_baseline()), "slsqp", "quick")
     # the optimum sits in a flat valley (fin area against fin position at equal weathervane
     # margin): the mass agrees to 0.1 %, the variables to 10 % of their bound ranges
-    assert r.objective == pytest.approx(design(*thesis_optimised()).total_mass, rel=1e-3)
+    assert r.objective == pytest.approx(design(*thesis_optimized()).total_mass, rel=1e-3)
     for k, v in THESIS_OPTIMUM.items():
         assert r.x[k] == pytest.approx(v, abs=0.1 * np.ptp(DEFAULT_BOUNDS[k]))
-    d = design(*thesis_optimised())
+    d = design(*thesis_optimized())
     assert float(d.volume) == pytest.approx(r.design["volume_m3"], rel=0.01)
     for other in (cases.thesis_design(), design_of(default_request())):
         assert float(other.volume) == pytest.approx(float(d.volume))
         assert float(
             np.asarray(other.airframe.hull.fineness_ratio).reshape(-1)[0]
         ) == pytest.approx(THESIS_OPTIMUM["fineness_ratio"])
-    assert f"f = {THESIS_OPTIMUM['fineness_ratio']:g}" in thesis_optimised_label()
+    assert f"f = {THESIS_OPTIMUM['fineness_ratio']:g}" in thesis_optimized_label()
 
 
 @pytest.fixture(scope="module")

@@ -18,9 +18,7 @@ from aerostat_core.optimize import (
     FEASIBILITY_TOL,
     THESIS_REPORTED,
     FunctionProblem,
-    OptimisationProblem,
-    _fd_gradient,
-    _stencil,
+    OptimizationProblem,
     agreement,
     baseline_vs_optimum,
     compare_solvers,
@@ -38,6 +36,7 @@ from aerostat_core.optimize import (
     solve_surrogate,
     thesis_comparison_rows,
 )
+from aerostat_core.optimize.lockstep import fd_gradient, fd_stencil
 from aerostat_core.presets import THESIS_BLOW_BY_LIMIT, THESIS_OPTIMUM
 
 SOLVER_FUNCS = (solve_slsqp, solve_surrogate, solve_pso)
@@ -115,11 +114,11 @@ def test_solvers_are_reproducible_with_a_seed(solver) -> None:
 def test_finite_difference_stencil_is_second_order_everywhere() -> None:
     h = 1e-3
     for u in (np.array([0.5, 0.5, 0.5]), np.array([0.0, 1.0, 0.9995]), np.array([5e-4, 0.3, 1.0])):
-        pts, kind = _stencil(u, h)
+        pts, kind = fd_stencil(u, h)
         assert np.all((pts >= 0) & (pts <= 1))
         vals = np.sin(3 * pts[:, 0]) + pts[:, 1] ** 3 + np.exp(pts[:, 2])
         exact = np.array([3 * np.cos(3 * u[0]), 3 * u[1] ** 2, np.exp(u[2])])
-        assert np.allclose(_fd_gradient(vals, kind, h), exact, atol=2e-5)
+        assert np.allclose(fd_gradient(vals, kind, h), exact, atol=2e-5)
 
 
 def test_cancel_returns_the_best_so_far() -> None:
@@ -135,8 +134,8 @@ def test_cancel_returns_the_best_so_far() -> None:
 
 
 @pytest.fixture(scope="module")
-def thesis_problem() -> OptimisationProblem:
-    return OptimisationProblem(*thesis_baseline())
+def thesis_problem() -> OptimizationProblem:
+    return OptimizationProblem(*thesis_baseline())
 
 
 @pytest.fixture(scope="module")
@@ -211,7 +210,7 @@ def test_baseline_to_optimum_changes_match_the_thesis_order(thesis_results) -> N
     t = {r["quantity"]: r for r in thesis_comparison_rows(list(rows.values()))}
     assert t["Gas fill cost"]["thesis_change"] == -1925.0
     assert t["Total mass"]["thesis_change"] == pytest.approx(71.6 - 90.65)
-    req_o, cfg_o = optimum_inputs(OptimisationProblem(req, cfg), best)
+    req_o, cfg_o = optimum_inputs(OptimizationProblem(req, cfg), best)
     assert cfg_o.hull.volume is None and cfg_o.fins.area_change == best.x["area_change"]
 
 
@@ -337,7 +336,7 @@ def test_default_limits_include_the_requirement() -> None:
 )
 def test_bad_bounds_raise_a_clear_value_error(bounds, words) -> None:
     with pytest.raises(ValueError) as exc:
-        OptimisationProblem(*thesis_baseline(), bounds=bounds)
+        OptimizationProblem(*thesis_baseline(), bounds=bounds)
     for w in words:
         assert w in str(exc.value)
 
@@ -346,7 +345,7 @@ def test_bad_bounds_raise_a_clear_value_error(bounds, words) -> None:
 @given(st.sampled_from(sorted(DEFAULT_BOUNDS)), st.floats(-1e3, 1e3), st.floats(-1e3, 1e3))
 def test_any_bounds_are_accepted_or_rejected_with_the_variable_named(name, lo, hi) -> None:
     try:
-        p = OptimisationProblem(*thesis_baseline(), bounds={name: (lo, hi)})
+        p = OptimizationProblem(*thesis_baseline(), bounds={name: (lo, hi)})
     except ValueError as exc:
         assert name in str(exc)
     else:
@@ -356,8 +355,8 @@ def test_any_bounds_are_accepted_or_rejected_with_the_variable_named(name, lo, h
 def test_other_bad_requests() -> None:
     req, cfg = thesis_baseline()
     with pytest.raises(ValueError, match="objective"):
-        OptimisationProblem(req, cfg, objective="cost")
-    p = OptimisationProblem(req, cfg)
+        OptimizationProblem(req, cfg, objective="cost")
+    p = OptimizationProblem(req, cfg)
     with pytest.raises(ValueError, match="solver"):
         solve(p, "newton")
     with pytest.raises(ValueError, match="setting"):
@@ -373,7 +372,7 @@ def test_other_bad_requests() -> None:
 def test_infeasible_limit_returns_an_infeasible_result_naming_the_binding_constraint() -> None:
     req, cfg = thesis_baseline()
     req = dataclasses.replace(req, blow_by_limit=5.0)
-    p = OptimisationProblem(req, cfg)
+    p = OptimizationProblem(req, cfg)
     small = {
         "slsqp": {"maxiter": 8},
         "surrogate": {"max_evaluations": 40},
@@ -388,7 +387,7 @@ def test_infeasible_limit_returns_an_infeasible_result_naming_the_binding_constr
 
 def test_fixed_variables_are_held_at_the_configuration() -> None:
     req, cfg = thesis_baseline()
-    p = OptimisationProblem(req, cfg, bounds={"area_change": (-50.0, 100.0)})
+    p = OptimizationProblem(req, cfg, bounds={"area_change": (-50.0, 100.0)})
     r = solve(p, "slsqp", "quick")
     assert r.x["fineness_ratio"] == 4.0 and r.x["position"] == 0.68
     assert len(CONSTRAINTS) == p.n_constr and p.n_var == 1

@@ -4,14 +4,14 @@ from __future__ import annotations
 
 import pytest
 
-from aerostat_core.optimize import OptimisationProblem, solve
+from aerostat_core.optimize import OptimizationProblem, solve
 from aerostat_core.presets import thesis_configuration, thesis_requirement
-from aerostat_core.shape_optimize import optimise_shapes, shape_bounds
+from aerostat_core.shape_optimize import optimize_shapes, shape_bounds
 
 
 @pytest.fixture(scope="module")
 def study():
-    return optimise_shapes(
+    return optimize_shapes(
         thesis_requirement(),
         thesis_configuration(None),
         shapes=("npl", "gnvr", "sphere", "helikite"),
@@ -32,7 +32,7 @@ def test_best_per_shape_and_overall(study):
 
 def test_npl_optimum_is_the_plain_optimiser(study):
     req, cfg = thesis_requirement(), thesis_configuration(None)
-    r = solve(OptimisationProblem(req, cfg), "slsqp", "quick")
+    r = solve(OptimizationProblem(req, cfg), "slsqp", "quick")
     assert study.per_shape["npl"].objective == pytest.approx(r.objective, rel=1e-9)
     # the streamlined thesis hull beats the bluff ones at this blow-by limit (Figure 2.5)
     assert study.per_shape["npl"].objective < study.per_shape["helikite"].objective
@@ -46,9 +46,9 @@ def test_bounds_are_cut_to_the_shape_range_and_inputs_checked():
     )
     req, cfg = thesis_requirement(), thesis_configuration(None)
     with pytest.raises(ValueError, match="not a known hull shape"):
-        optimise_shapes(req, cfg, shapes=("cigar",))
+        optimize_shapes(req, cfg, shapes=("cigar",))
     with pytest.raises(ValueError, match="objective"):
-        optimise_shapes(req, cfg, objective="cost")
+        optimize_shapes(req, cfg, objective="cost")
 
 
 def test_fineness_sweeps_per_shape():
