@@ -52,3 +52,22 @@ def deprecated_aliases(
         return namespace[new]
 
     return __getattr__
+
+
+
+def deprecated_method(old: str, new: str) -> Callable[..., Any]:
+    """A method kept under its ``old`` name for one release: calls ``self.<new>`` and emits a
+    ``DeprecationWarning`` (e.g. ``realise = deprecated_method("realise", "realize")`` in a
+    class body)."""
+
+    def method(self: Any, *args: Any, **kwargs: Any) -> Any:
+        warnings.warn(
+            f"{type(self).__name__}.{old} is deprecated; use {new} (US spelling)",
+            DeprecationWarning,
+            stacklevel=2,
+        )
+        return getattr(self, new)(*args, **kwargs)
+
+    method.__name__ = method.__qualname__ = old
+    method.__doc__ = f"Deprecated alias of :meth:`{new}` (US spelling); kept for one release."
+    return method

@@ -15,7 +15,7 @@ Modules: :mod:`.wind` (profiles, ramps, gusts, the wind kernels), :mod:`.turbule
 Dryden field with IEC 61400-1 coherence), :mod:`.tether` (lumped-mass line), :mod:`.bodies`
 (point aerostat, rigid hull), :mod:`.kernel` (equations of motion), :mod:`.system` (assembly),
 :mod:`.solver` (TR-BDF2, banded Jacobian), :mod:`.simulate` (equilibrium, runs), :mod:`.results`
-(time histories, statistics, events, limits), :mod:`.linearise` (modes), :mod:`.cases`
+(time histories, statistics, events, limits), :mod:`.linearize` (modes), :mod:`.cases`
 (reference cases R1-R4), :mod:`.thesis` (the thesis comparison), :mod:`.scenarios` (runs from
 plain settings: the app and the CLI), :mod:`.moordyn_check` (live MoorDyn cross-check).
 
@@ -31,7 +31,7 @@ from importlib import import_module
 _EXPORTS = {
     "HullModel": "bodies", "PointAerostat": "bodies", "ellipsoid_hull": "bodies",
     "hull_from_airframe": "bodies", "point_from_design": "bodies",
-    "Linearisation": "linearise", "Mode": "linearise", "linearise": "linearise",
+    "Linearization": "linearize", "Mode": "linearize", "linearize": "linearize",
     "SIGNALS": "results", "SimulationResult": "results", "response_metrics": "results",
     "signal_stats": "results", "Limits": "results", "limit_flags": "results",
     "SolverOptions": "options",
@@ -44,9 +44,20 @@ _EXPORTS = {
 }
 
 
+#: Old (British) names kept for one release (docs/architecture.md §7).
+DEPRECATED_NAMES = {"Linearisation": "Linearization", "linearise": "linearize"}
+
+
 def __getattr__(name: str):
     if name in _EXPORTS:
         return getattr(import_module(f".{_EXPORTS[name]}", __name__), name)
+    if name in DEPRECATED_NAMES:
+        import warnings
+
+        new = DEPRECATED_NAMES[name]
+        warnings.warn(f"{__name__}.{name} is deprecated; use {new} (US spelling)",
+                      DeprecationWarning, stacklevel=2)
+        return getattr(import_module(f".{_EXPORTS[new]}", __name__), new)
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
@@ -57,7 +68,7 @@ def warm_up() -> float:
 
     from . import cases
     from .bodies import ellipsoid_hull
-    from .linearise import linearise
+    from .linearize import linearize
     from .simulate import simulate, straight_state
     from .system import Atmosphere, DynamicSystem
     from .tether import TetherModel
@@ -71,7 +82,7 @@ def warm_up() -> float:
                        atmosphere=Atmosphere(1.19))
     turb = WindScenario(SpeedSchedule.constant(5.0), turbulence=DrydenTurbulence(fade_in=0.0))
     simulate(hs, turb, 1.0, initial_state=straight_state(hs, (0.0, 300.3)))
-    linearise(system, 5.0)
+    linearize(system, 5.0)
     return time.perf_counter() - t0
 
 

@@ -278,10 +278,10 @@ def simulate(
     else:
         y_tmp = initial_state if initial_state is not None else guess
         if y_tmp is None:
-            y_tmp = straight_guess(system, wind.realise(system.tether.length, 60.0))
+            y_tmp = straight_guess(system, wind.realize(system.tether.length, 60.0))
         y_tmp = np.asarray(y_tmp, float)
         b = system.hull_index
-        field_ = wind.realise(float(y_tmp[b + 1]), duration, x_ref=float(y_tmp[b]))
+        field_ = wind.realize(float(y_tmp[b + 1]), duration, x_ref=float(y_tmp[b]))
     if initial_state is None:
         g0 = guess if guess is not None else straight_guess(system, field_)
         y0, info = equilibrium(system, field_, g0)
@@ -390,7 +390,7 @@ def warm_kernels() -> float:
     t0 = time.perf_counter()
     system = case_p_system(4)
     y = straight_state(system, (0.0, 319.5))
-    data = system.data(WindScenario.steady(5.0).realise(319.5, 1.0))
+    data = system.data(WindScenario.steady(5.0).realize(319.5, 1.0))
     n = system.n_state
     f = np.empty(n)
     diag = np.empty(ND)
@@ -405,7 +405,7 @@ def warm_kernels() -> float:
                     np.zeros((n, band_width(kl, ku))), np.zeros(n, np.int64), np.ones(n), kl, ku)
     band_jacobian(0.0, y, f, data, kl, ku, np.zeros((n, n)), np.ones(n))
     system.nodes(y)
-    WindScenario.steady(5.0).realise(319.5, 1.0).at(0.0, 100.0)
+    WindScenario.steady(5.0).realize(319.5, 1.0).at(0.0, 100.0)
     _WARM.append(True)
     return time.perf_counter() - t0
 

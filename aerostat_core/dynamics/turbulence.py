@@ -36,6 +36,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..deprecation import deprecated_method
 from .checks import check_number as _check
 
 #: One knot [m/s] (international knot, 1852 m/h).
@@ -257,7 +258,7 @@ class DrydenTurbulence:
         sw = p.sigma_w if self.sigma_w is None else float(self.sigma_w)
         return DrydenParameters(p.length_u, p.length_w, su, sw, p.height_used, p.clamped)
 
-    def realise(
+    def realize(
         self,
         height: float,
         speed: float,
@@ -336,6 +337,8 @@ class DrydenTurbulence:
             target_var_w=var_w.sum(axis=1),
             model=self.model_name(),
         )
+
+    realise = deprecated_method("realise", "realize")
 
     def _w(self, w20):
         return self.w20 if self.w20 is not None else w20

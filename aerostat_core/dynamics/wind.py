@@ -34,6 +34,7 @@ from dataclasses import dataclass, field
 import numpy as np
 from numba import njit
 
+from ..deprecation import deprecated_method
 from .checks import check_number as _check
 from .turbulence import (
     DRYDEN_W20,
@@ -389,7 +390,7 @@ class WindScenario:
         """Mean wind at 20 ft (6.1 m) at t = 0 [m/s], from the profile (MIL-HDBK-1797's W20)."""
         return abs(self.initial_speed() * float(self.profile.factor(W20_HEIGHT)))
 
-    def realise(self, hull_height: float, duration: float, x_ref: float = 0.0) -> WindField:
+    def realize(self, hull_height: float, duration: float, x_ref: float = 0.0) -> WindField:
         """Fix the convection speed U_c (mean wind at ``hull_height`` [m] at t = 0) and the
         reference x_ref [m] (the hull's initial x) and synthesise the turbulence for a run of
         ``duration`` [s]."""
@@ -401,9 +402,11 @@ class WindScenario:
             )
         rec = None
         if self.turbulence is not None:
-            rec = self.turbulence.realise(hull_height, abs(uc), duration, w20=self.w20(),
+            rec = self.turbulence.realize(hull_height, abs(uc), duration, w20=self.w20(),
                                           x_ref=x_ref)
         return WindField(self, abs(uc), hull_height, rec, float(x_ref))
+
+    realise = deprecated_method("realise", "realize")
 
 
 @dataclass(frozen=True, eq=False)

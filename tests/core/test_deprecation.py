@@ -68,3 +68,21 @@ def test_library_tests_and_benchmarks_use_the_new_names_only() -> None:
                 ):
                     uses.append(f"{f.relative_to(ROOT)}:{n}: {line.strip()}")
     assert not uses, "\n".join(uses)
+
+
+def test_dynamics_british_names_warn_and_resolve_to_the_us_ones():
+    """``linearise``/``Linearisation`` and the ``realise`` methods keep working for one release."""
+    from aerostat_core import dynamics
+    from aerostat_core.dynamics import linearize as lin
+    from aerostat_core.dynamics.wind import WindScenario
+
+    with pytest.warns(DeprecationWarning, match="linearize"):
+        assert dynamics.linearise is lin.linearize
+    with pytest.warns(DeprecationWarning, match="Linearization"):
+        from aerostat_core.dynamics.linearise import Linearisation
+    assert Linearisation is lin.Linearization
+    scenario = WindScenario.steady(5.0)
+    with pytest.warns(DeprecationWarning, match="realize"):
+        old = scenario.realise(300.0, 10.0)
+    new = scenario.realize(300.0, 10.0)
+    assert (old.convection_speed, old.hull_height) == (new.convection_speed, new.hull_height) == (5.0, 300.0)

@@ -8,7 +8,7 @@ import pytest
 
 from aerostat_core import aerodynamics as ad
 from aerostat_core.dynamics import cases
-from aerostat_core.dynamics.linearise import linearise
+from aerostat_core.dynamics.linearize import linearize
 from aerostat_core.dynamics.model import (
     Atmosphere,
     DynamicSystem,
@@ -44,7 +44,7 @@ def _row(design, speed):
 
 
 def _eq(system, design, speed):
-    field = WindScenario.steady(speed).realise(300.0, 10.0)
+    field = WindScenario.steady(speed).realize(300.0, 10.0)
     y, info = equilibrium(system, field, engine_guess(system, design, speed))
     return y, info, system.rhs(0.0, y, field)[1]
 
@@ -62,7 +62,7 @@ def test_tables_reproduce_engine_aero(design, system):
         b = system.hull_index
         y = y.copy()
         y[b + 2] = a
-        field = WindScenario.steady(v).realise(300.0, 10.0)
+        field = WindScenario.steady(v).realize(300.0, 10.0)
         d = system.rhs(0.0, y, field)[1]
         assert d["alpha"] == pytest.approx(a, abs=1e-12)
         # fin lift through the same tables
@@ -144,7 +144,7 @@ def _energy_system(munk="kirchhoff", damping=0.0, drag=False, aero=False):
 
 
 def _perturbed(system):
-    field = WindScenario.steady(0.0).realise(320.0, 10.0)
+    field = WindScenario.steady(0.0).realize(320.0, 10.0)
     yeq, _ = equilibrium(system, field, straight_state(system, (0.0, 320.4)))
     y = yeq.copy()
     b = system.hull_index
@@ -174,7 +174,7 @@ def test_v4_energy_conserved_and_converges_with_rtol():
 
 def _zero_wind_decay(design, **options):
     system = system_from_design(design, segments=10, **options)
-    field = WindScenario.steady(0.0).realise(300.0, 10.0)
+    field = WindScenario.steady(0.0).realize(300.0, 10.0)
     yeq, _ = equilibrium(system, field, engine_guess(system, design, 0.0))
     y = yeq.copy()
     b = system.hull_index
@@ -226,7 +226,7 @@ def test_v8_added_mass_and_froude_krylov(fineness, mass_ratio, g):
     m = hull.mass + system.m_top
     expected = (rho * vol + mx) / (m + mx)
     a = 0.5  # m/s2: wind ramps 0 -> 5 m/s over 10 s
-    field = WindScenario(SpeedSchedule((0.0, 10.0), (0.0, 5.0))).realise(60.0, 20.0)
+    field = WindScenario(SpeedSchedule((0.0, 10.0), (0.0, 5.0))).realize(60.0, 20.0)
     y = straight_state(system, (0.0, 50.0))
     dy, _ = system.rhs(5.0, y, field)
     b = system.hull_index
@@ -244,7 +244,7 @@ def test_v8_point_aerostat_fluid_acceleration():
     teth = TetherModel(length=50.0, segments=2, axial_stiffness=1e-9, damping_ratio=0.0,
                        drag=False, linear_density=1e-6)
     system = DynamicSystem(p, teth, g=0.0, atmosphere=Atmosphere(1.2))
-    field = WindScenario(SpeedSchedule((0.0, 10.0), (0.0, 5.0))).realise(60.0, 20.0)
+    field = WindScenario(SpeedSchedule((0.0, 10.0), (0.0, 5.0))).realize(60.0, 20.0)
     dy, _ = system.rhs(5.0, straight_state(system, (0.0, 50.0)), field)
     ca = 0.5 * 1.2 * 100.0
     assert dy[-2] / 0.5 == pytest.approx((1.2 * 100.0 + ca) / (10.0 + ca + system.m_top),
@@ -258,7 +258,7 @@ def test_frame_updraft_angle_of_attack(design, system):
     from aerostat_core.dynamics.wind import Gust
 
     g = WindScenario(SpeedSchedule.constant(10.0), gust=Gust(0.0, 1.5, 10.0, 0.0, "ramp-hold"))
-    field = g.realise(300.0, 60.0)
+    field = g.realize(300.0, 60.0)
     d = system.rhs(30.0, y, field)[1]
     assert d["alpha"] == pytest.approx(theta + math.atan2(1.5, 10.0), abs=1e-12)
 
@@ -266,7 +266,7 @@ def test_frame_updraft_angle_of_attack(design, system):
 def test_pitch_rate_is_damped_by_fins_and_crossflow(design, system):
     """A nose-up pitch rate makes a nose-down aerodynamic moment (pitch damping from geometry)."""
     y, _, _ = _eq(system, design, 10.0)
-    field = WindScenario.steady(10.0).realise(300.0, 10.0)
+    field = WindScenario.steady(10.0).realize(300.0, 10.0)
     m0 = system.rhs(0.0, y, field)[1]["aero_moment"]
     y2 = y.copy()
     y2[system.hull_index + 5] = 0.05
@@ -291,7 +291,7 @@ def test_v7_linearisation_stable_and_matches_time_response():
     oscillatory mode (surge of the point aerostat) has the period and log-decrement of a
     small-step time response within a few %."""
     system = cases.case_p_system(16)
-    lin = linearise(system, 10.0)
+    lin = linearize(system, 10.0)
     assert lin.stable
     surge = lin.rigid_modes()[0]
     assert surge.label == "surge"
@@ -312,7 +312,7 @@ def test_v7_linearisation_stable_and_matches_time_response():
 
 
 def test_v7_hull_modes_stable(design, system):
-    lin = linearise(system, 10.0, guess=engine_guess(system, design, 10.0))
+    lin = linearize(system, 10.0, guess=engine_guess(system, design, 10.0))
     assert lin.stable
     labels = {m.label for m in lin.rigid_modes()}
     assert {"surge", "heave"} <= labels
@@ -372,10 +372,10 @@ def test_independent_prototype_step_response(unsteady):
     from aerostat_core.dynamics.simulate import straight_guess
 
     system = _prototype_hull(unsteady)
-    f10 = WindScenario.steady(10.0).realise(320.0, 10.0)
+    f10 = WindScenario.steady(10.0).realize(320.0, 10.0)
     y10, _ = equilibrium(system, f10, straight_guess(system, f10, theta=0.05))
     assert math.degrees(y10[system.hull_index + 2]) == pytest.approx(3.43, abs=0.03)
-    f5 = WindScenario.steady(5.0).realise(320.0, 10.0)
+    f5 = WindScenario.steady(5.0).realize(320.0, 10.0)
     y5, _ = equilibrium(system, f5, straight_guess(system, f5, theta=0.05))
     res = simulate(system, WindScenario(SpeedSchedule.step(5.0, 10.0, 20.0, 1.0)), 120.0,
                    initial_state=y5)

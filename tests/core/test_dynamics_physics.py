@@ -45,7 +45,7 @@ def test_frozen_gust_gives_no_froude_krylov_force_on_a_body_carried_with_the_flo
         SpeedSchedule.constant(10.0), gust=Gust(5.0, 0.0, 60.0, 20.0, "full", convected=convected)
     )
     on, off = _point_system(True), _point_system(False)
-    field = sc.realise(319.5, 100.0, x_ref=0.0)
+    field = sc.realize(319.5, 100.0, x_ref=0.0)
     y = straight_state(on, (0.0, 319.5))
     t = 23.0  # a quarter of the way: the gust's largest slope at the point
     b = on.hull_index

@@ -30,7 +30,7 @@ def test_jacobian_band_contains_every_coupling(design, hull):
     """The declared (kl, ku) band holds every nonzero of a dense finite-difference Jacobian, at a
     generic state with every segment taut and every velocity nonzero."""
     system = system_from_design(design, segments=8) if hull else cases.case_p_system(8)
-    field = WindScenario.steady(8.0).realise(300.0, 10.0)
+    field = WindScenario.steady(8.0).realize(300.0, 10.0)
     guess = engine_guess(system, design, 8.0) if hull else straight_guess(system, field)
     y, _ = equilibrium(system, field, guess)
     rng = np.random.default_rng(1)

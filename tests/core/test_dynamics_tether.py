@@ -20,7 +20,7 @@ from aerostat_core.dynamics.tether import TetherModel
 
 
 def _static(system, scenario):
-    field = scenario.realise(system.tether.length, 10.0)
+    field = scenario.realize(system.tether.length, 10.0)
     y, info = equilibrium(system, field, straight_guess(system, field))
     return system.rhs(0.0, y, field)[1], info
 
@@ -112,7 +112,7 @@ def test_anchor_force_balance_r1():
     """Winch force = aerostat drag + total tether drag (x); net lift - tether weight - downward
     normal drag (z) (docs/dynamics.md §3.1 analytic cross-check)."""
     system = cases.case_p_system(32)
-    field = cases.r1_wind().realise(320.0, 10.0)
+    field = cases.r1_wind().realize(320.0, 10.0)
     y, _ = equilibrium(system, field, straight_guess(system, field))
     d = system.rhs(0.0, y, field)[1]
     t = system.tether

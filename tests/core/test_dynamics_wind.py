@@ -57,7 +57,7 @@ def test_schedule_validation_names_field():
 def test_one_minus_cosine_gust_shape():
     """g = (A/2)(1 - cos(pi x/d_m)), x = U_c (t - t0): peak A at x = d_m, back to 0 at 2 d_m."""
     sc = WindScenario(SpeedSchedule.constant(10.0), gust=Gust(4.0, 1.0, 50.0, 20.0, "full"))
-    f = sc.realise(300.0, 60.0)
+    f = sc.realize(300.0, 60.0)
     t = np.array([19.0, 20.0, 22.5, 25.0, 30.0, 31.0])
     ux, uz, dux, _, ax, az = f.at(t, 300.0)
     assert ux == pytest.approx([10.0, 10.0, 12.0, 14.0, 10.0, 10.0])
@@ -69,18 +69,18 @@ def test_one_minus_cosine_gust_shape():
     assert f.at(17.5, 300.0, x=-50.0)[0][0] == pytest.approx(12.0)
     # a uniform (not convected) gust accelerates the air everywhere at once: Du/Dt = dg/dt
     uni = WindScenario(SpeedSchedule.constant(10.0),
-                       gust=Gust(4.0, 1.0, 50.0, 20.0, "full", convected=False)).realise(300.0, 60.0)
+                       gust=Gust(4.0, 1.0, 50.0, 20.0, "full", convected=False)).realize(300.0, 60.0)
     ux2, _, dux2, _, ax2, _ = uni.at(t, 300.0, x=-50.0)
     assert ux2 == pytest.approx(ux) and ax2 == pytest.approx(dux2)
     hold = WindScenario(SpeedSchedule.constant(10.0), gust=Gust(4.0, 0.0, 50.0, 20.0,
-                                                               "ramp-hold")).realise(300.0, 60.0)
+                                                               "ramp-hold")).realize(300.0, 60.0)
     assert hold.at(40.0, 300.0)[0][0] == pytest.approx(14.0)
 
 
 def test_gust_needs_mean_wind():
     sc = WindScenario(SpeedSchedule.constant(0.0), gust=Gust())
     with pytest.raises(ValueError, match="gust needs a mean wind"):
-        sc.realise(300.0, 60.0)
+        sc.realize(300.0, 60.0)
 
 
 def test_dryden_parameters_8785c_convention():
@@ -105,7 +105,7 @@ def test_psd_integrates_to_variance():
 @pytest.fixture(scope="module")
 def hour_record():
     turb = DrydenTurbulence.from_intensity("moderate", seed=7, max_frequency=2.0)
-    rec = turb.realise(300.0, 10.0, 3600.0)
+    rec = turb.realize(300.0, 10.0, 3600.0)
     t, u, w = rec.grid(2**16)
     return rec, t, u, w
 
@@ -159,7 +159,7 @@ def test_turbulence_evaluate_matches_grid_and_fade(hour_record):
     assert uu == pytest.approx(u[idx], abs=1e-9)
     assert ww == pytest.approx(w[idx], abs=1e-9)
     # fade-in: zero at t = 0, the analytic derivative matches finite differences
-    short = DrydenTurbulence(seed=2, fade_in=20.0).realise(300.0, 10.0, 300.0)
+    short = DrydenTurbulence(seed=2, fade_in=20.0).realize(300.0, 10.0, 300.0)
     tt = np.linspace(0.0, 30.0, 6001)
     uf, _, duf, _ = short.evaluate(tt)
     assert uf[0] == 0.0
@@ -167,21 +167,21 @@ def test_turbulence_evaluate_matches_grid_and_fade(hour_record):
 
 
 def test_same_seed_same_record_and_validation():
-    a = DrydenTurbulence(seed=3).realise(300.0, 10.0, 300.0)
-    b = DrydenTurbulence(seed=3).realise(300.0, 10.0, 300.0)
-    c = DrydenTurbulence(seed=4).realise(300.0, 10.0, 300.0)
+    a = DrydenTurbulence(seed=3).realize(300.0, 10.0, 300.0)
+    b = DrydenTurbulence(seed=3).realize(300.0, 10.0, 300.0)
+    c = DrydenTurbulence(seed=4).realize(300.0, 10.0, 300.0)
     assert np.array_equal(a.coef_u, b.coef_u) and not np.array_equal(a.coef_u, c.coef_u)
     with pytest.raises(ValueError, match="w20"):
         DrydenTurbulence(w20=-1.0)
     with pytest.raises(ValueError, match="at least 0.5 m/s"):
-        DrydenTurbulence().realise(300.0, 0.1, 300.0)
+        DrydenTurbulence().realize(300.0, 0.1, 300.0)
 
 
 def test_kernel_turbulence_table_matches_cosine_sum():
     """The kernel's Hermite-interpolated table reproduces the cosine sum and its derivative."""
     sc = WindScenario(SpeedSchedule.constant(10.0),
                       turbulence=DrydenTurbulence.from_intensity("severe", seed=5, fade_in=0.0))
-    field = sc.realise(300.0, 200.0)
+    field = sc.realize(300.0, 200.0)
     t = np.linspace(0.0, 400.0, 7919)  # beyond one period too (the table is periodic)
     ux, uz, dux, duz, ax, az = field.at(t, 300.0)
     u, w, du, dw = field.turbulence.evaluate(t)
@@ -196,7 +196,7 @@ def test_kernel_turbulence_table_matches_cosine_sum():
 def spatial_field():
     sc = WindScenario(SpeedSchedule.constant(10.0),
                       turbulence=DrydenTurbulence.from_intensity("moderate", seed=11, fade_in=0.0))
-    return sc.realise(300.0, 1200.0, x_ref=40.0)
+    return sc.realize(300.0, 1200.0, x_ref=40.0)
 
 
 def test_field_is_frozen_and_convected(spatial_field):
@@ -219,7 +219,7 @@ def test_field_varies_with_height_and_levels_have_target_variance(spatial_field)
     _t, u, w = f.grid(2**15)
     assert np.var(u) == pytest.approx(f.target_var_u[f.hull_level], rel=1e-9)
     assert np.var(w) == pytest.approx(f.target_var_w[f.hull_level], rel=1e-9)
-    fields = [DrydenTurbulence(seed=s, fade_in=0.0).realise(300.0, 10.0, 600.0)
+    fields = [DrydenTurbulence(seed=s, fade_in=0.0).realize(300.0, 10.0, 600.0)
               for s in range(30)]
     for lev in (f.hull_level - 10, 3):
         vu = np.mean([np.sum(np.abs(g.coef_u[lev]) ** 2) / 2 for g in fields])
@@ -250,7 +250,7 @@ def test_vertical_coherence_matches_iec_model():
 
     sums = None
     for seed in range(100):
-        f = DrydenTurbulence(seed=seed, fade_in=0.0).realise(300.0, 10.0, 300.0)
+        f = DrydenTurbulence(seed=seed, fade_in=0.0).realize(300.0, 10.0, 300.0)
         a, b = f.coef_u[f.hull_level], f.coef_u[f.hull_level - 2]  # 20 m apart
         s = np.stack([a * np.conj(b), np.abs(a) ** 2, np.abs(b) ** 2])
         sums = s if sums is None else sums + s
@@ -272,7 +272,7 @@ def test_w20_from_the_profile_and_model_name():
     """``w20=None`` takes MIL-HDBK-1797's W20 from the run's own mean profile at 20 ft."""
     sc = WindScenario(SpeedSchedule.constant(10.0), MeanProfile("power", 300.0, 1.0 / 7.0),
                       turbulence=DrydenTurbulence.from_intensity("profile", seed=1))
-    f = sc.realise(300.0, 120.0)
+    f = sc.realize(300.0, 120.0)
     w20 = 10.0 * (20 * FOOT / 300.0) ** (1 / 7)
     assert f.turbulence.params.sigma_w == pytest.approx(0.1 * w20)
     assert "MIL-HDBK-1797" in f.turbulence.model and "IEC 61400-1" in f.turbulence.model
