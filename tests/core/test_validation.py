@@ -45,7 +45,7 @@ def test_input_error_is_a_value_error_with_the_details():
         "kg",
     )
     assert e.lo_open and not e.hi_open and e.valid_range == "(0, 500] kg"
-    assert e.label == "payload mass" and e.reason == "is outside the valid range (0, 500] kg"
+    assert e.label == "Payload mass" and e.reason == "is outside the valid range (0, 500] kg"
 
 
 def test_not_a_number_keeps_the_old_message_and_is_capped():
