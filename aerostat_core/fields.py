@@ -313,9 +313,15 @@ def column_label(path: str) -> str:
 
 def report_table() -> dict[str, tuple[str, str, float, str]]:
     """Every input path -> (label, display unit, display scale, CSV unit token), the table the
-    report and the CSV export use."""
+    report and the CSV export use; an optional input's label says what empty means ("Hull
+    volume (empty = sized)"), which also keeps it apart from the result of the same name."""
     return {
-        p.path: (p.label, p.spec.shown_unit, float(p.spec.scale), p.spec.csv_token)
+        p.path: (
+            f"{p.label} (empty = {p.spec.empty})" if p.spec.empty else p.label,
+            p.spec.shown_unit,
+            float(p.spec.scale),
+            p.spec.csv_token,
+        )
         for p in all_specs()
     }
 
