@@ -166,18 +166,25 @@ class Requirement:
         None, "Weathervane stability margin", "1/rad", 0, 1, empty="rule set", step=0.01,
         fmt="%.3f", help="C_m_alpha about the centre of volume must be at most minus this "
         "(practice 0.02, thesis 0).", source="aerostat_core.rules")
-    rules: str = choice(DEFAULT_RULES, "Rule set", RULE_NAMES)
+    rules: str = choice(
+        DEFAULT_RULES, "Rule set", RULE_NAMES, source="aerostat_core.rules",
+        help="Where the limits left empty come from: 'practice' for real missions (free lift "
+        "15 % of gross lift, limits scaled to the tether length), 'thesis' for the calibrated "
+        "preset of Mahmood (2020). Method page: sources of every value.")
     payload_power: float = number(
         0.0, "Payload power", "W", 0, 1e5, step=10.0, fmt="%.0f",
         help="Electrical power the payload draws; 0 models no power supply.",
         source="thesis Table 2.4")
-    power_via: str = choice("onboard", "Payload power from", POWER_ROUTES)
+    power_via: str = choice(
+        "onboard", "Payload power from", POWER_ROUTES, source="thesis §2.2.3",
+        help="An onboard battery adds its mass; through the tether adds copper conductors.")
     endurance_days: float = number(
         0.0, "Endurance without top-up", "day", 0, 365, step=1.0, fmt="%.1f",
-        help="Days the hull must stay up without adding gas (0: no requirement).")
+        help="Days the free-lift margin must last while helium permeates out (tactical "
+        "5-7 days). 0: no requirement.", source="thesis §2.3")
     deployment_days: float = number(
         30.0, "Deployment length (top-up gas)", "day", 0, 3650, step=1.0, fmt="%.0f",
-        help="Days deployed, for the top-up gas the hull loses through the fabric.")
+        help="Period over which the helium top-up gas and its cost are reported.")
 
     def __post_init__(self) -> None:
         validate(self)
@@ -195,7 +202,7 @@ class Requirement:
         top = self.site_elevation + self.altitude
         if top > c.ISA_TROPOPAUSE:
             reason = (
-                f"with site_elevation = {self.site_elevation:g} m puts the aerostat at {top:g} m "
+                f"with a site elevation of {self.site_elevation:g} m puts the aerostat at {top:g} m "
                 f"above sea level, beyond the atmosphere model's valid range "
                 f"[{c.ISA_MIN_ALTITUDE:g}, {c.ISA_TROPOPAUSE:g}] m"
             )
@@ -274,14 +281,18 @@ class LiftingGas:
         Density for ``"fixed"`` [kg/m3], valid (0, 1]; ``None`` takes the thesis value of the gas.
     """
 
-    kind: str = choice("helium", "Lifting gas", GAS_KINDS)
+    kind: str = choice(
+        "helium", "Lifting gas", GAS_KINDS, help="Hydrogen lifts about 8 % more but burns.")
     purity: float = number(
         0.98, "Gas purity", "", 0, 1, lo_open=True, scale=100.0, display_unit="% by volume",
         step=0.5, fmt="%.1f", help="The rest is air. Helium is supplied at about 98 %.")
     superpressure: float = number(
         0.0, "Hull superpressure", "Pa", 0, 5000, step=50.0, fmt="%.0f",
         help="Pressure above ambient (250-400 Pa typical).")
-    density_model: str = choice("ideal", "Gas density model", DENSITY_MODELS)
+    density_model: str = choice(
+        "ideal", "Gas density model", DENSITY_MODELS,
+        help="Ideal: gas density from pressure, temperature, purity and superpressure. Fixed: "
+        "the thesis' 0.169 kg/m³ for helium.")
     fixed_density: float | None = number(
         None, "Fixed gas density", "kg/m3", 0, 1, lo_open=True, empty="thesis value",
         step=0.001, fmt="%.3f",
@@ -333,7 +344,10 @@ class HullSpec:
         None, "Hull volume", "m3", 1.0, 1e5, empty="sized", step=10.0, fmt="%.1f",
         help="The thesis baseline is 170 m³; empty sizes the smallest hull that meets every "
         "constraint.")
-    shape: str = choice("npl", "Hull shape", SHAPES)
+    shape: str = choice(
+        "npl", "Hull shape", SHAPES, source="aerostat_core.shapes",
+        help="Envelope profile (Shapes page). Changing it resets l/d to the shape's standard "
+        "value; sphere, oblate and Helikite hulls carry no fins.")
 
     def __post_init__(self) -> None:
         validate(self)  # the shape first: the fineness ratio's range depends on it
@@ -371,7 +385,8 @@ class FinSpec:
     """
 
     count: int = integer(4, "Number of fins", 3, 4)
-    arrangement: str = choice("+", "Fin arrangement", FIN_ARRANGEMENTS)
+    arrangement: str = choice(
+        "+", "Fin arrangement", FIN_ARRANGEMENTS, help="Number and layout of the tail fins.")
     area_change: float = number(
         0.0, "Fin area change ΔS_f", "%", -50, 200, step=5.0, fmt="%.1f",
         help="Design variable 2: change of the fin area from the statistical size.")
@@ -438,7 +453,9 @@ class AeroModel:
     hull_axial_drag: float | None = number(
         None, "Hull drag C_DV", "", 0, 1, empty="Hoerner", step=0.001, fmt="%.4f",
         help="Zero-α hull drag on V^(2/3); empty uses Hoerner's C_DV(f, Re).")
-    cutoff: str = choice("fin", "Potential-flow cut-off station l_h", CUTOFF_MODES)
+    cutoff: str = choice(
+        "fin", "Potential-flow cut-off station l_h", CUTOFF_MODES,
+        help="Station where the Jones & DeLaurier potential-flow term stops.")
     fin_efficiency: float = number(
         c.FIN_EFFICIENCY, "Fin efficiency η_f", "", 0, 1.5, step=0.05, fmt="%.2f",
         help="Factor on the 3-D fin lift slope (1.0).")
@@ -499,7 +516,10 @@ class WindProfile:
         Log-law roughness z0 [m], valid [1e-5, 2].
     """
 
-    kind: str = choice("uniform", "Wind profile along the tether", WIND_PROFILES)
+    kind: str = choice(
+        "uniform", "Wind profile along the tether", WIND_PROFILES,
+        help="The sweep speed is the wind at the aerostat; the profile scales it down along "
+        "the tether.")
     exponent: float = number(
         1.0 / 7.0, "Power-law exponent", "", 0, 0.6, step=0.01, fmt="%.3f",
         help="Used by the power-law profile (1/7 open land).")

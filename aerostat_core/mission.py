@@ -116,7 +116,10 @@ class MissionSpec:
     insulation_thickness: float = number(
         0.25e-3, "Conductor insulation wall", "m", 0, 0.005, scale=1000.0, display_unit="mm",
         step=0.05, fmt="%.2f")
-    ballonet: str = choice("off", "Ballonet", BALLONET_MODES)
+    ballonet: str = choice(
+        "off", "Ballonet", BALLONET_MODES, source="thesis §2.2.1(c)",
+        help="The thesis flies below 500 m without one; a built ballonet adds its fabric to the "
+        "mass breakdown.")
     superheat: float = number(
         c.GAS_SUPERHEAT, "Gas superheat (day)", "K", 0, 40, step=1.0, fmt="%.0f",
         help="Day-time gas superheat at the operating altitude.", source="ASSUMED")

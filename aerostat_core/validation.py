@@ -69,6 +69,10 @@ class InputError(ValueError):
         "Payload mass"; the field name with spaces when the check had no spec.
     reason : str
         The message without the ``owner.field = value`` prefix, e.g. ``"is not a number"``.
+    context : str
+        What the range depends on, as appended to the reason (``" for shape 'npl'"``); "".
+    too_small : bool
+        The value is inside the range but too small to compute with (``POSITIVE_FLOOR``).
     """
 
     def __init__(
@@ -85,6 +89,8 @@ class InputError(ValueError):
         unit: str = "",
         reason: str = "",
         label: str = "",
+        context: str = "",
+        too_small: bool = False,
     ) -> None:
         super().__init__(short(message))
         self.owner, self.field, self.value = owner, field, value
@@ -92,6 +98,7 @@ class InputError(ValueError):
         self.unit = unit
         self.label = label or field.replace("_", " ")
         self.reason = short(reason or message)
+        self.context, self.too_small = context, too_small
 
     @property
     def valid_range(self) -> str:
@@ -167,9 +174,12 @@ def check_number(
     info = dict(owner=owner, field=field, value=value, lo=lo, hi=hi, unit=unit, label=label)
     info.update(lo_open=lo_open, hi_open=hi_open)
 
-    def fail(shown: str, reason: str) -> InputError:
+    def fail(shown: str, reason: str, too_small: bool = False) -> InputError:
         reason += reason_suffix
-        return InputError(f"{owner}.{field} = {shown} {reason}", reason=reason, **info)
+        return InputError(
+            f"{owner}.{field} = {shown} {reason}", reason=reason, context=reason_suffix,
+            too_small=too_small, **info,
+        )
 
     if isinstance(value, bool) or not isinstance(value, Real):
         raise fail(shown_value(value), f"is not a number; valid range {rng}")
@@ -188,6 +198,7 @@ def check_number(
             f"{v:g}{u}",
             f"is too small to compute with (at least {POSITIVE_FLOOR * hi:g}{u}); "
             f"valid range {rng}",
+            too_small=True,
         )
     _store_back(field, value, v)
     return v
