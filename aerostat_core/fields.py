@@ -212,11 +212,7 @@ def part(factory: type, label: str, *, prefix: bool = False, **kw: Any) -> Any:
 
 def specs(cls: type) -> dict[str, FieldSpec]:
     """The specs of a dataclass' fields, by field name, in declaration order."""
-    return {
-        f.name: f.metadata[SPEC_KEY]
-        for f in dataclasses.fields(cls)
-        if SPEC_KEY in f.metadata
-    }
+    return {f.name: f.metadata[SPEC_KEY] for f in dataclasses.fields(cls) if SPEC_KEY in f.metadata}
 
 
 def field_spec(owner: type | object, name: str) -> FieldSpec:
@@ -349,8 +345,15 @@ def variable_info(path: str) -> tuple[str, str, float]:
 # --- validation ---------------------------------------------------------------------------------
 
 
-def check(obj: object, name: str, value: Any = None, *, lo: float | None = None,
-          hi: float | None = None, reason_suffix: str = "") -> Any:
+def check(
+    obj: object,
+    name: str,
+    value: Any = None,
+    *,
+    lo: float | None = None,
+    hi: float | None = None,
+    reason_suffix: str = "",
+) -> Any:
     """Check one field of ``obj`` against its spec (``lo``/``hi`` override the spec's bounds,
     for a range that depends on another field) and store the converted value back.
 
@@ -369,8 +372,18 @@ def check(obj: object, name: str, value: Any = None, *, lo: float | None = None,
     if spec.kind == "integer":
         v: Any = check_int(owner, name, value, int(lo), int(hi), label=spec.label)
     else:
-        v = check_number(owner, name, value, lo, hi, spec.unit, lo_open=spec.lo_open,
-                         hi_open=spec.hi_open, label=spec.label, reason_suffix=reason_suffix)
+        v = check_number(
+            owner,
+            name,
+            value,
+            lo,
+            hi,
+            spec.unit,
+            lo_open=spec.lo_open,
+            hi_open=spec.hi_open,
+            label=spec.label,
+            reason_suffix=reason_suffix,
+        )
     if type(v) is not type(value) or v != value:
         object.__setattr__(obj, name, v)
     return v

@@ -184,7 +184,9 @@ _NUMBERS: dict[str, tuple[tuple[str, str], ...]] = {
 _NOTES = {"in_volume": "when given"}
 
 FIELDS: tuple[Field, ...] = tuple(
-    Field(key, path, group, _NOTES.get(key)) for group, rows in _NUMBERS.items() for key, path in rows
+    Field(key, path, group, _NOTES.get(key))
+    for group, rows in _NUMBERS.items()
+    for key, path in rows
 )
 FIELD_BY_KEY = {f.key: f for f in FIELDS}
 
@@ -211,21 +213,51 @@ class Choice:
 CHOICES: dict[str, Choice] = {
     c.key: c
     for c in (
-        Choice("in_rules", "requirement.rules", "requirement",
-               {name: r.title for name, r in RULE_SETS.items()}),
-        Choice("in_shape", "configuration.hull.shape", "configuration",
-               {k: v.label for k, v in SHAPE_INFO.items()}),
-        Choice("in_gas_kind", "configuration.gas.kind", "gas",
-               {"helium": "Helium", "hydrogen": "Hydrogen"}),
-        Choice("in_density_model", "configuration.gas.density_model", "gas",
-               {"ideal": "Ideal gas at altitude (physics)",
-                "fixed": "Fixed density (thesis constants)"}),
-        Choice("in_arrangement", "configuration.fins.arrangement", "configuration",
-               {"+": "4 fins, + (cross)", "x": "4 fins, x", "inverted-y": "3 fins, inverted Y"}),
-        Choice("in_cutoff", "configuration.aero.cutoff", "advanced",
-               {"fin": "At the fin root (thesis symbol list)", "tail": "At the tail"}),
-        Choice("in_wind_kind", "configuration.wind_profile.kind", "advanced",
-               {"uniform": "Uniform (thesis plots)", "power": "Power law", "log": "Log law"}),
+        Choice(
+            "in_rules",
+            "requirement.rules",
+            "requirement",
+            {name: r.title for name, r in RULE_SETS.items()},
+        ),
+        Choice(
+            "in_shape",
+            "configuration.hull.shape",
+            "configuration",
+            {k: v.label for k, v in SHAPE_INFO.items()},
+        ),
+        Choice(
+            "in_gas_kind",
+            "configuration.gas.kind",
+            "gas",
+            {"helium": "Helium", "hydrogen": "Hydrogen"},
+        ),
+        Choice(
+            "in_density_model",
+            "configuration.gas.density_model",
+            "gas",
+            {
+                "ideal": "Ideal gas at altitude (physics)",
+                "fixed": "Fixed density (thesis constants)",
+            },
+        ),
+        Choice(
+            "in_arrangement",
+            "configuration.fins.arrangement",
+            "configuration",
+            {"+": "4 fins, + (cross)", "x": "4 fins, x", "inverted-y": "3 fins, inverted Y"},
+        ),
+        Choice(
+            "in_cutoff",
+            "configuration.aero.cutoff",
+            "advanced",
+            {"fin": "At the fin root (thesis symbol list)", "tail": "At the tail"},
+        ),
+        Choice(
+            "in_wind_kind",
+            "configuration.wind_profile.kind",
+            "advanced",
+            {"uniform": "Uniform (thesis plots)", "power": "Power law", "log": "Log law"},
+        ),
     )
 }
 
@@ -546,8 +578,9 @@ def build_inputs(
     for key, c in CHOICES.items():
         if key in values:
             _set(d, c.path, values[key])
-    if _get(d, "configuration.hull.shape") != (_get(base, "configuration.hull.shape") or "npl") \
-            and values.get("in_fineness") == shown.get("in_fineness"):
+    if _get(d, "configuration.hull.shape") != (
+        _get(base, "configuration.hull.shape") or "npl"
+    ) and values.get("in_fineness") == shown.get("in_fineness"):
         _set(d, "configuration.hull.fineness_ratio", None)  # the new shape's standard l/d
     arrangement = _get(d, "configuration.fins.arrangement")
     _set(d, "configuration.fins.count", 3 if arrangement == "inverted-y" else 4)
