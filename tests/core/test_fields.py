@@ -249,3 +249,43 @@ def test_range_text_is_in_display_units():
     )
     assert spec_for_path("requirement.payload_mass").spec.range_text() == "(0, 500] kg"
     assert math.isclose(spec_for_path("configuration.gas.purity").spec.scale, 100.0)
+
+
+def _dynamics_entries():
+    from aerostat_core.dynamics.bodies import PointAerostat
+    from aerostat_core.dynamics.tether import TetherModel
+    from aerostat_core.dynamics.turbulence import DrydenTurbulence
+    from aerostat_core.dynamics.wind import Gust, MeanProfile
+
+    out = []
+    for cls in (PointAerostat, TetherModel, DrydenTurbulence, Gust, MeanProfile):
+        for name, spec in fields.specs(cls).items():
+            if spec.kind in ("number", "integer"):
+                out.append(pytest.param(cls, name, spec, id=f"{cls.__name__}.{name}"))
+    return out
+
+
+def test_the_dynamics_inputs_have_specs():
+    from aerostat_core.dynamics.tether import TetherModel
+
+    numeric = [
+        f.name
+        for f in dataclasses.fields(TetherModel)
+        if f.type in ("float", "int", "float | None")
+    ]
+    assert numeric and all(n in fields.specs(TetherModel) for n in numeric)
+
+
+@pytest.mark.parametrize("cls, name, spec", _dynamics_entries())
+def test_dynamics_validation_uses_the_registry_range(cls, name, spec):
+    cls(**{name: spec.hi})  # the bound itself is valid (closed above in every dynamics spec)
+    with pytest.raises(InputError) as err:
+        cls(**{name: spec.hi + max(1.0, abs(spec.hi))})
+    e = err.value
+    assert (e.owner, e.field, e.lo, e.hi, e.label) == (
+        cls.__name__,
+        name,
+        spec.lo,
+        spec.hi,
+        spec.label,
+    )
