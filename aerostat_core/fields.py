@@ -342,6 +342,22 @@ def variable_info(path: str) -> tuple[str, str, float]:
     return p.label, p.spec.shown_unit, float(p.spec.scale)
 
 
+def variable_range(name: str, shape: str = "npl") -> tuple[float, float]:
+    """SI valid range (lo, hi) of a design variable or input path; the fineness ratio's is the
+    hull shape's (``aerostat_core.shapes.SHAPE_INFO``), the others the registry's.
+
+    >>> variable_range("fineness_ratio"), variable_range("position")
+    ((1.5, 8.0), (0.4, 0.95))
+    """
+    p = spec_for_path(DESIGN_VARIABLES.get(name, name))
+    if p.name == "fineness_ratio" and p.owner.__name__ == "HullSpec":
+        from .shapes import SHAPE_INFO  # lazy, like the input classes
+
+        lo, hi = SHAPE_INFO[shape].fineness_range
+        return float(lo), float(hi)
+    return float(p.spec.lo), float(p.spec.hi)
+
+
 # --- validation ---------------------------------------------------------------------------------
 
 

@@ -289,3 +289,12 @@ def test_dynamics_validation_uses_the_registry_range(cls, name, spec):
         spec.hi,
         spec.label,
     )
+
+
+def test_variable_ranges_reproduce_the_optimiser_bounds():
+    from aerostat_core.fields import variable_range
+    from aerostat_core.optimize import VARIABLE_INFO
+
+    for name, (_label, _unit, bounds) in VARIABLE_INFO.items():
+        assert variable_range(name) == bounds, name
+    assert variable_range("fineness_ratio", "oblate") == SHAPE_INFO["oblate"].fineness_range
