@@ -9,9 +9,8 @@ pages and views that still import it keep working. New code imports the rooms di
 
 from __future__ import annotations
 
-from aerostat_core.rules import RULE_SETS
-
 from .form import input_form, sync_widgets
+from .form_fields import RULE_SETS
 from .form_model import (
     CHOICES,
     CUSTOM,
