@@ -253,12 +253,13 @@ def test_range_text_is_in_display_units():
 
 def _dynamics_entries():
     from aerostat_core.dynamics.bodies import PointAerostat
+    from aerostat_core.dynamics.options import SolverOptions
     from aerostat_core.dynamics.tether import TetherModel
     from aerostat_core.dynamics.turbulence import DrydenTurbulence
     from aerostat_core.dynamics.wind import Gust, MeanProfile
 
     out = []
-    for cls in (PointAerostat, TetherModel, DrydenTurbulence, Gust, MeanProfile):
+    for cls in (PointAerostat, TetherModel, DrydenTurbulence, Gust, MeanProfile, SolverOptions):
         for name, spec in fields.specs(cls).items():
             if spec.kind in ("number", "integer"):
                 out.append(pytest.param(cls, name, spec, id=f"{cls.__name__}.{name}"))
