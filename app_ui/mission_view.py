@@ -11,10 +11,13 @@ from typing import Any
 import pandas as pd
 import streamlit as st
 
+from aerostat_core import Requirement
 from aerostat_core.fields import spec_for_path
+from aerostat_core.mission import MissionSpec
 from aerostat_core.validation import InputError
 
 from . import cache, state
+from .show import spec_number
 from .text import plain
 
 #: Labels of the choices (the values are the engine's).
@@ -62,21 +65,6 @@ def _apply() -> None:
     state.set_current_inputs(req2, cfg2)
 
 
-def _box(col: Any, path: str, key: str, value: float) -> None:
-    """A number box of input ``path``: label, unit, range, step and help from the registry."""
-    e = spec_for_path(path)
-    sp = e.spec
-    col.number_input(
-        f"{e.label} [{sp.shown_unit}]",
-        min_value=float(sp.lo * sp.scale),
-        max_value=float(sp.hi * sp.scale),
-        value=float(value * sp.scale),
-        step=float(sp.step or 1.0),
-        key=key,
-        help=sp.help,
-    )
-
-
 def _select(col: Any, path: str, key: str, value: str, shown: dict[str, str]) -> None:
     e = spec_for_path(path)
     options = list(e.spec.choices)
@@ -88,14 +76,16 @@ def _inputs(req, cfg) -> None:
     with st.form(FORM_KEY, border=True):
         st.markdown("**Mission inputs** (off by default: no power, no endurance requirement)")
         c = st.columns(3)
-        _box(c[0], "requirement.payload_power", "mission_power", req.payload_power)
+        spec_number(c[0], Requirement, "payload_power", req.payload_power, "mission_power")
         _select(c[1], "requirement.power_via", "mission_power_via", req.power_via, POWER_LABELS)
-        _box(c[2], "requirement.endurance_days", "mission_endurance", req.endurance_days)
+        spec_number(c[2], Requirement, "endurance_days", req.endurance_days, "mission_endurance")
         c = st.columns(3)
-        _box(c[0], "requirement.deployment_days", "mission_deployment", req.deployment_days)
+        spec_number(
+            c[0], Requirement, "deployment_days", req.deployment_days, "mission_deployment"
+        )
         _select(c[1], "configuration.mission.ballonet", "mission_ballonet", cfg.mission.ballonet,
                 BALLONET_LABELS)
-        _box(c[2], "configuration.mission.superheat", "mission_superheat", cfg.mission.superheat)
+        spec_number(c[2], MissionSpec, "superheat", cfg.mission.superheat, "mission_superheat")
         st.form_submit_button("Apply mission inputs", on_click=_apply, icon=":material/send:")
     err = st.session_state.get(ERROR_KEY)
     if err:

@@ -252,14 +252,24 @@ def test_range_text_is_in_display_units():
 
 
 def _dynamics_entries():
+    """The dynamics inputs and the site wind, validated from the registry too."""
     from aerostat_core.dynamics.bodies import PointAerostat
     from aerostat_core.dynamics.options import SolverOptions
     from aerostat_core.dynamics.tether import TetherModel
     from aerostat_core.dynamics.turbulence import DrydenTurbulence
     from aerostat_core.dynamics.wind import Gust, MeanProfile
+    from aerostat_core.site_wind import WeibullSite
 
     out = []
-    for cls in (PointAerostat, TetherModel, DrydenTurbulence, Gust, MeanProfile, SolverOptions):
+    for cls in (
+        PointAerostat,
+        TetherModel,
+        DrydenTurbulence,
+        Gust,
+        MeanProfile,
+        SolverOptions,
+        WeibullSite,
+    ):
         for name, spec in fields.specs(cls).items():
             if spec.kind in ("number", "integer"):
                 out.append(pytest.param(cls, name, spec, id=f"{cls.__name__}.{name}"))
