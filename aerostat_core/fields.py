@@ -19,6 +19,7 @@ Ranges are in SI units (the unit in ``FieldSpec.unit``); a display is ``SI value
 from __future__ import annotations
 
 import dataclasses
+import functools
 import math
 from collections.abc import Iterator
 from dataclasses import dataclass
@@ -210,9 +211,17 @@ def part(factory: type, label: str, *, prefix: bool = False, **kw: Any) -> Any:
 # --- lookup -------------------------------------------------------------------------------------
 
 
+@functools.cache
+def _specs(cls: type) -> tuple[tuple[str, FieldSpec], ...]:
+    # cached: validate() runs on every construction (the optimiser builds thousands)
+    return tuple(
+        (f.name, f.metadata[SPEC_KEY]) for f in dataclasses.fields(cls) if SPEC_KEY in f.metadata
+    )
+
+
 def specs(cls: type) -> dict[str, FieldSpec]:
     """The specs of a dataclass' fields, by field name, in declaration order."""
-    return {f.name: f.metadata[SPEC_KEY] for f in dataclasses.fields(cls) if SPEC_KEY in f.metadata}
+    return dict(_specs(cls))
 
 
 def field_spec(owner: type | object, name: str) -> FieldSpec:
@@ -377,8 +386,20 @@ def check(
     spec's label and unit.
     """
     spec = field_spec(obj, name)
-    owner = type(obj).__name__
     value = getattr(obj, name) if value is None else value
+    return _check(obj, name, spec, value, lo, hi, reason_suffix)
+
+
+def _check(
+    obj: object,
+    name: str,
+    spec: FieldSpec,
+    value: Any,
+    lo: float | None,
+    hi: float | None,
+    reason_suffix: str = "",
+) -> Any:
+    owner = type(obj).__name__
     if spec.kind == "choice":
         return check_choice(owner, name, value, spec.choices, label=spec.label)
     if spec.allow_inf and isinstance(value, (int, float)) and value == math.inf:
@@ -409,11 +430,11 @@ def validate(obj: object) -> None:
     """Check every numeric and choice field of dataclass ``obj`` that has a spec (``None`` is
     accepted where the spec is optional); converted numbers are stored back as ``float``
     (``int`` for integers). Raises :class:`~aerostat_core.validation.InputError`."""
-    for name, spec in specs(type(obj)).items():
+    for name, spec in _specs(type(obj)):
         if not spec.checked or spec.kind not in ("number", "integer", "choice"):
             continue
         value = getattr(obj, name)
         if value is None and spec.optional:
             continue
         hi = float(getattr(obj, spec.hi_field)) if spec.hi_field else None
-        check(obj, name, value, hi=hi)
+        _check(obj, name, spec, value, None, hi)
