@@ -26,7 +26,8 @@ CUTOFF_MODES = ("fin", "tail")
 _FINENESS_LO = min(s.fineness_range[0] for s in SHAPE_INFO.values())
 _FINENESS_HI = max(s.fineness_range[1] for s in SHAPE_INFO.values())
 _FINENESS_RANGES = ", ".join(
-    f"{s.label} {s.fineness_range[0]:g}-{s.fineness_range[1]:g}" for s in SHAPE_INFO.values())
+    f"{s.label} {lo:g}" + (f"-{hi:g}" if hi > lo else "")
+    for s in SHAPE_INFO.values() for lo, hi in [s.fineness_range])
 
 
 #: Requirement fields that a rule set fills in when left as ``None`` (aerostat_core.rules).
