@@ -7,20 +7,27 @@ where the field name says ``_deg``).
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field, fields, replace
+from dataclasses import dataclass, fields, replace
 
 from . import constants as c
+from .fields import check, choice, field_spec, integer, number, part, validate
 from .materials import Fabric, TetherSpec
 from .mission import POWER_ROUTES, MissionSpec
 from .rules import DEFAULT_RULES, RULE_NAMES, RuleSet, get_rules
 from .shapes import SHAPE_INFO, SHAPES
-from .validation import InputError, check_choice, check_int, check_number
+from .validation import InputError
 
 GAS_KINDS = ("helium", "hydrogen")
 DENSITY_MODELS = ("ideal", "fixed")
 FIN_ARRANGEMENTS = ("+", "x", "inverted-y")
 WIND_PROFILES = ("uniform", "power", "log")
 CUTOFF_MODES = ("fin", "tail")
+#: Widest fineness-ratio range over the shapes (each shape narrows it, ``SHAPE_INFO``).
+_FINENESS_LO = min(s.fineness_range[0] for s in SHAPE_INFO.values())
+_FINENESS_HI = max(s.fineness_range[1] for s in SHAPE_INFO.values())
+_FINENESS_RANGES = ", ".join(
+    f"{s.label} {lo:g}" + (f"-{hi:g}" if hi > lo else "")
+    for s in SHAPE_INFO.values() for lo, hi in [s.fineness_range])
 
 
 #: Requirement fields that a rule set fills in when left as ``None`` (aerostat_core.rules).
@@ -99,71 +106,111 @@ class Requirement:
         valid [0, 3650].
     """
 
-    payload_mass: float = 10.0
-    altitude: float = 300.0
-    site_elevation: float = 0.0
-    isa_offset: float = 0.0
-    site_temperature: float | None = None
-    wind_max: float = 20.0
-    wind_step: float = 1.0
-    design_wind: float | None = None
-    survival_wind: float | None = None
-    blow_by_limit: float | None = None
-    altitude_loss_limit: float | None = None
-    free_lift_fraction: float | None = None
-    min_tether_safety_factor: float | None = None
-    survival_safety_factor: float | None = None
-    max_tether_angle_deg: float | None = None
-    weathervane_margin: float | None = None
-    rules: str = DEFAULT_RULES
-    payload_power: float = 0.0
-    power_via: str = "onboard"
-    endurance_days: float = 0.0
-    deployment_days: float = 30.0
+    payload_mass: float = number(
+        10.0, "Payload mass", "kg", 0, 500, lo_open=True, step=1.0, fmt="%.1f",
+        help="Mass hung below the hull (camera, radio...).")
+    altitude: float = number(
+        300.0, "Operating altitude", "m", 10, 3000, step=10.0, fmt="%.0f",
+        help="Height above the launch site; the tether length equals it.")
+    site_elevation: float = number(
+        0.0, "Site elevation", "m", -400, 5000, display_unit="m above sea level", step=50.0,
+        fmt="%.0f", help="Launch-site elevation; air density is taken at site + altitude.")
+    isa_offset: float = number(
+        0.0, "Temperature offset from ISA", "K", -40, 40, step=1.0, fmt="%.1f",
+        help="Hot tropical day about +15 K. Ignored when the site temperature is given.")
+    site_temperature: float | None = number(
+        None, "Temperature at the launch site", "degC", -60, 60, empty="ISA + offset",
+        step=1.0, fmt="%.1f",
+        help="Sets the ISA offset so that the standard lapse rate runs through it.",
+        source="thesis Table 2.4")
+    wind_max: float = number(
+        20.0, "Maximum wind of the sweep", "m/s", 0, 60, lo_open=True, step=1.0, fmt="%.1f",
+        help="Performance is computed from 0 to this speed.")
+    wind_step: float = number(
+        1.0, "Wind step of the sweep", "m/s", 0.1, 10, step=0.5, fmt="%.1f",
+        help="Spacing of the wind sweep.")
+    design_wind: float | None = number(
+        None, "Operational (design) wind", "m/s", 0, 40, empty="rule set", step=1.0,
+        fmt="%.1f", help="Wind at which blow-by, altitude loss, tether angle, stall and "
+        "stability are checked (practice 10 m/s, thesis 15 m/s).", source="aerostat_core.rules")
+    survival_wind: float | None = number(
+        None, "Survival wind", "m/s", 0, 60, empty="rule set", step=1.0, fmt="%.1f",
+        help="Wind the tether must survive aloft (practice 20 m/s, the tactical class); at "
+        "least the design wind.", source="aerostat_core.rules")
+    blow_by_limit: float | None = number(
+        None, "Blow-by limit at the design wind", "m", 0, 3000, lo_open=True,
+        hi_field="altitude", empty="rule set", step=5.0, fmt="%.1f",
+        help="Largest acceptable downwind offset of the confluence point from the winch "
+        "(practice 0.5 x altitude, thesis 0.178 x altitude); at most the altitude.",
+        source="aerostat_core.rules")
+    altitude_loss_limit: float | None = number(
+        None, "Permissible altitude loss", "m", 0, 3000, lo_open=True, empty="rule set",
+        step=5.0, fmt="%.1f", help="Largest acceptable loss of height at the design wind "
+        "(practice 0.15 x altitude, thesis: off).", source="aerostat_core.rules")
+    free_lift_fraction: float | None = number(
+        None, "Free lift, share of gross lift", "", 0, 0.8, scale=100.0, display_unit="%",
+        empty="rule set", step=1.0, fmt="%.1f",
+        help="Free lift at rest the hull must keep (practice 15 %, thesis 1 %).",
+        source="aerostat_core.rules")
+    min_tether_safety_factor: float | None = number(
+        None, "Tether safety factor at the design wind", "", 1, 20, empty="rule set",
+        step=0.5, fmt="%.2f", help="Breaking strength / largest tether tension must reach this "
+        "(3 in both rule sets).", source="aerostat_core.rules")
+    survival_safety_factor: float | None = number(
+        None, "Tether safety factor at the survival wind", "", 1, 20, empty="rule set",
+        step=0.1, fmt="%.2f", help="Practice 1.5.", source="aerostat_core.rules")
+    max_tether_angle_deg: float | None = number(
+        None, "Largest tether angle from the vertical", "deg", 0, 90, lo_open=True,
+        empty="rule set", step=5.0, fmt="%.0f",
+        help="At the design wind (practice 60 deg, thesis 45 deg).", source="aerostat_core.rules")
+    weathervane_margin: float | None = number(
+        None, "Weathervane stability margin", "1/rad", 0, 1, empty="rule set", step=0.01,
+        fmt="%.3f", help="C_m_alpha about the centre of volume must be at most minus this "
+        "(practice 0.02, thesis 0).", source="aerostat_core.rules")
+    rules: str = choice(
+        DEFAULT_RULES, "Rule set", RULE_NAMES, source="aerostat_core.rules",
+        help="Where the limits left empty come from: 'practice' for real missions (free lift "
+        "15 % of gross lift, limits scaled to the tether length), 'thesis' for the calibrated "
+        "preset of Mahmood (2020). Method page: sources of every value.")
+    payload_power: float = number(
+        0.0, "Payload power", "W", 0, 1e5, step=10.0, fmt="%.0f",
+        help="Electrical power the payload draws; 0 models no power supply.",
+        source="thesis Table 2.4")
+    power_via: str = choice(
+        "onboard", "Payload power from", POWER_ROUTES, source="thesis §2.2.3",
+        help="An onboard battery adds its mass; through the tether adds copper conductors.")
+    endurance_days: float = number(
+        0.0, "Endurance without top-up", "day", 0, 365, step=1.0, fmt="%.1f",
+        help="Days the free-lift margin must last while helium permeates out (tactical "
+        "5-7 days). 0: no requirement.", source="thesis §2.3")
+    deployment_days: float = number(
+        30.0, "Deployment length (top-up gas)", "day", 0, 3650, step=1.0, fmt="%.0f",
+        help="Period over which the helium top-up gas and its cost are reported.")
 
     def __post_init__(self) -> None:
-        o = "Requirement"
-        check_choice(o, "rules", self.rules, RULE_NAMES)
-        check_number(o, "payload_power", self.payload_power, 0, 1e5, "W")
-        check_choice(o, "power_via", self.power_via, POWER_ROUTES)
-        check_number(o, "endurance_days", self.endurance_days, 0, 365, "day")
-        check_number(o, "deployment_days", self.deployment_days, 0, 3650, "day")
-        check_number(o, "payload_mass", self.payload_mass, 0, 500, "kg", lo_open=True)
-        check_number(o, "altitude", self.altitude, 10, 3000, "m")
-        check_number(o, "site_elevation", self.site_elevation, -400, 5000, "m")
-        check_number(o, "isa_offset", self.isa_offset, -40, 40, "K")
-        if self.site_temperature is not None:
-            check_number(o, "site_temperature", self.site_temperature, -60, 60, "degC")
-        check_number(o, "wind_max", self.wind_max, 0, 60, "m/s", lo_open=True)
-        check_number(o, "wind_step", self.wind_step, 0.1, 10, "m/s")
-        opt = (
-            ("design_wind", 0, 40, "m/s", False),
-            ("survival_wind", 0, 60, "m/s", False),
-            ("blow_by_limit", 0, self.altitude, "m", True),
-            ("altitude_loss_limit", 0, 3000, "m", True),
-            ("free_lift_fraction", 0, 0.8, "", False),
-            ("min_tether_safety_factor", 1, 20, "", False),
-            ("survival_safety_factor", 1, 20, "", False),
-            ("max_tether_angle_deg", 0, 90, "deg", True),
-            ("weathervane_margin", 0, 1, "1/rad", False),
-        )
-        for name, lo, hi, unit, lo_open in opt:
-            v = getattr(self, name)
-            if v is not None:
-                check_number(o, name, v, lo, hi, unit, lo_open=lo_open)
+        validate(self)
         if (self.design_wind is not None and self.survival_wind is not None
                 and self.survival_wind < self.design_wind):
-            raise ValueError(
-                f"Requirement.survival_wind = {self.survival_wind:g} m/s is below the design "
-                f"wind {self.design_wind:g} m/s; valid range [{self.design_wind:g}, 60] m/s"
+            hi = field_spec(self, "survival_wind").hi
+            reason = (f"is below the design wind {self.design_wind:g} m/s; valid range "
+                      f"[{self.design_wind:g}, {hi:g}] m/s")
+            raise InputError(
+                f"Requirement.survival_wind = {self.survival_wind:g} m/s {reason}",
+                owner="Requirement", field="survival_wind", value=self.survival_wind,
+                lo=self.design_wind, hi=hi, unit="m/s", reason=reason,
+                label=field_spec(self, "survival_wind").label,
             )
         top = self.site_elevation + self.altitude
         if top > c.ISA_TROPOPAUSE:
-            raise ValueError(
-                f"Requirement.altitude = {self.altitude:g} m with site_elevation = "
-                f"{self.site_elevation:g} m puts the aerostat at {top:g} m above sea level, beyond "
-                f"the atmosphere model's valid range "
+            reason = (
+                f"with a site elevation of {self.site_elevation:g} m puts the aerostat at {top:g} m "
+                f"above sea level, beyond the atmosphere model's valid range "
                 f"[{c.ISA_MIN_ALTITUDE:g}, {c.ISA_TROPOPAUSE:g}] m"
+            )
+            raise InputError(
+                f"Requirement.altitude = {self.altitude:g} m {reason}", owner="Requirement",
+                field="altitude", value=self.altitude, unit="m", reason=reason,
+                label=field_spec(self, "altitude").label,
             )
 
     @property
@@ -235,20 +282,26 @@ class LiftingGas:
         Density for ``"fixed"`` [kg/m3], valid (0, 1]; ``None`` takes the thesis value of the gas.
     """
 
-    kind: str = "helium"
-    purity: float = 0.98
-    superpressure: float = 0.0
-    density_model: str = "ideal"
-    fixed_density: float | None = None
+    kind: str = choice(
+        "helium", "Lifting gas", GAS_KINDS, help="Hydrogen lifts about 8 % more but burns.")
+    purity: float = number(
+        0.98, "Gas purity", "", 0, 1, lo_open=True, scale=100.0, display_unit="% by volume",
+        step=0.5, fmt="%.1f", help="The rest is air. Helium is supplied at about 98 %.")
+    superpressure: float = number(
+        0.0, "Hull superpressure", "Pa", 0, 5000, step=50.0, fmt="%.0f",
+        help="Pressure above ambient (250-400 Pa typical).")
+    density_model: str = choice(
+        "ideal", "Gas density model", DENSITY_MODELS,
+        help="Ideal: gas density from pressure, temperature, purity and superpressure. Fixed: "
+        "the thesis' 0.169 kg/m³ for helium.")
+    fixed_density: float | None = number(
+        None, "Fixed gas density", "kg/m3", 0, 1, lo_open=True, empty="thesis value",
+        step=0.001, fmt="%.3f",
+        help="Used by the 'fixed' model only: thesis 0.169 (He), 0.085 (H₂).",
+        source="thesis §2.2")
 
     def __post_init__(self) -> None:
-        o = "LiftingGas"
-        check_choice(o, "kind", self.kind, GAS_KINDS)
-        check_number(o, "purity", self.purity, 0, 1, lo_open=True)
-        check_number(o, "superpressure", self.superpressure, 0, 5000, "Pa")
-        check_choice(o, "density_model", self.density_model, DENSITY_MODELS)
-        if self.fixed_density is not None:
-            check_number(o, "fixed_density", self.fixed_density, 0, 1, "kg/m3", lo_open=True)
+        validate(self)
 
     @property
     def fixed_density_value(self) -> float:
@@ -280,27 +333,29 @@ class HullSpec:
         "zhiyuan-1", "lotte", "sphere", "oblate", "helikite".
     """
 
-    fineness_ratio: float | None = None
-    nose_fraction: float = 0.432
-    volume: float | None = None
-    shape: str = "npl"
+    fineness_ratio: float | None = number(
+        None, "Fineness ratio l/d", "", _FINENESS_LO, _FINENESS_HI, checked=False, step=0.1,
+        fmt="%.2f", help="Design variable 1: hull length / maximum diameter (NPL standard 4.0, "
+        "tactical aerostats 2.9-3.1). The valid range depends on the shape: "
+        + _FINENESS_RANGES + ".", source="aerostat_core.shapes.SHAPE_INFO")
+    nose_fraction: float = number(
+        0.432, "Max-diameter station a1/l", "", 0.2, 0.8, step=0.01, fmt="%.3f",
+        help="Where the two ellipsoids meet; NPL standard 0.432.")
+    volume: float | None = number(
+        None, "Hull volume", "m3", 1.0, 1e5, empty="sized", step=10.0, fmt="%.1f",
+        help="The thesis baseline is 170 m³; empty sizes the smallest hull that meets every "
+        "constraint.")
+    shape: str = choice(
+        "npl", "Hull shape", SHAPES, source="aerostat_core.shapes",
+        help="Envelope profile (Shapes page). Changing it resets l/d to the shape's standard "
+        "value; sphere, oblate and Helikite hulls carry no fins.")
 
     def __post_init__(self) -> None:
-        o = "HullSpec"
-        check_choice(o, "shape", self.shape, SHAPES)
+        validate(self)  # the shape first: the fineness ratio's range depends on it
         if self.fineness_ratio is None:
             object.__setattr__(self, "fineness_ratio", SHAPE_INFO[self.shape].default_fineness)
         lo, hi = SHAPE_INFO[self.shape].fineness_range
-        try:
-            check_number(o, "fineness_ratio", self.fineness_ratio, lo, hi)
-        except InputError as exc:
-            raise InputError(
-                f"{exc} for shape {self.shape!r}", owner=o, field="fineness_ratio",
-                value=exc.value, lo=lo, hi=hi, unit="", reason=f"{exc.reason} for shape "
-                f"{self.shape!r}") from None
-        check_number(o, "nose_fraction", self.nose_fraction, 0.2, 0.8)
-        if self.volume is not None:
-            check_number(o, "volume", self.volume, 1.0, 1e5, "m3")
+        check(self, "fineness_ratio", lo=lo, hi=hi, reason_suffix=f" for shape {self.shape!r}")
 
 
 @dataclass(frozen=True)
@@ -330,31 +385,38 @@ class FinSpec:
         Fabric area of one fin / its planform area [-], valid [1, 4] (two faces plus ribs/seams).
     """
 
-    count: int = 4
-    arrangement: str = "+"
-    area_change: float = 0.0
-    position: float = 0.68
-    area_ratio: float = 0.227
-    aspect_ratio: float = 2.0
-    taper_ratio: float = 0.5
-    fabric_factor: float = 2.2
+    count: int = integer(4, "Number of fins", 3, 4)
+    arrangement: str = choice(
+        "+", "Fin arrangement", FIN_ARRANGEMENTS, help="Number and layout of the tail fins.")
+    area_change: float = number(
+        0.0, "Fin area change ΔS_f", "%", -50, 200, step=5.0, fmt="%.1f",
+        help="Design variable 2: change of the fin area from the statistical size.")
+    position: float = number(
+        0.68, "Fin position Δl_f", "", 0.4, 0.95, scale=100.0, display_unit="% of hull length",
+        csv_unit="fraction_of_length", step=1.0, fmt="%.1f",
+        help="Design variable 3: station of the fin root leading edge from the nose; the "
+        "trailing edge must stay on the hull.")
+    area_ratio: float = number(
+        0.227, "Fin area / hull area", "", 0, 1, lo_open=True, step=0.01, fmt="%.3f",
+        help="Statistical fin size (thesis preset 0.227, calibrated).")
+    aspect_ratio: float = number(
+        2.0, "Fin pair aspect ratio", "", 0.5, 6, step=0.1, fmt="%.2f",
+        help="Opposite pair as one wing: 2 S_p²/S_1.")
+    taper_ratio: float = number(
+        0.5, "Fin taper ratio", "", 0.1, 1, step=0.05, fmt="%.2f", help="Tip chord / root chord.")
+    fabric_factor: float = number(
+        2.2, "Fin fabric / planform area", "", 1, 4, step=0.1, fmt="%.2f",
+        help="Two faces plus ribs and seams.")
 
     def __post_init__(self) -> None:
-        o = "FinSpec"
-        object.__setattr__(self, "count", check_int(o, "count", self.count, 3, 4))
-        check_choice(o, "arrangement", self.arrangement, FIN_ARRANGEMENTS)
+        validate(self)
         need = 3 if self.arrangement == "inverted-y" else 4
         if self.count != need:
-            raise ValueError(
-                f"FinSpec.count = {self.count} does not fit arrangement {self.arrangement!r}, "
-                f"which needs {need} fins"
+            reason = f"does not fit arrangement {self.arrangement!r}, which needs {need} fins"
+            raise InputError(
+                f"FinSpec.count = {self.count} {reason}", owner="FinSpec", field="count",
+                value=self.count, reason=reason, label=field_spec(self, "count").label,
             )
-        check_number(o, "area_change", self.area_change, -50, 200, "%")
-        check_number(o, "position", self.position, 0.4, 0.95)
-        check_number(o, "area_ratio", self.area_ratio, 0, 1, lo_open=True)
-        check_number(o, "aspect_ratio", self.aspect_ratio, 0.5, 6)
-        check_number(o, "taper_ratio", self.taper_ratio, 0.1, 1)
-        check_number(o, "fabric_factor", self.fabric_factor, 1, 4)
 
 
 @dataclass(frozen=True)
@@ -383,26 +445,33 @@ class AeroModel:
         Fin stall angle [deg], valid [5, 40]; the fin lift is held flat beyond it.
     """
 
-    hull_efficiency: float = c.HULL_EFFICIENCY
-    hull_crossflow_drag: float = c.HULL_CROSSFLOW_DRAG
-    hull_axial_drag: float | None = None
-    cutoff: str = "fin"
-    fin_efficiency: float = c.FIN_EFFICIENCY
-    section_lift_slope: float = c.SECTION_LIFT_SLOPE
-    fin_zero_lift_drag: float = c.FIN_ZERO_LIFT_DRAG
-    fin_stall_angle_deg: float = c.FIN_STALL_ANGLE_DEG
+    hull_efficiency: float = number(
+        c.HULL_EFFICIENCY, "Hull efficiency η_k", "", 0, 2, step=0.01, fmt="%.2f",
+        help="Jones & DeLaurier potential-flow factor (1.19).", source="docs/methods.md §1.7")
+    hull_crossflow_drag: float = number(
+        c.HULL_CROSSFLOW_DRAG, "Hull cross-flow drag (C_dc)_h", "", 0, 2, step=0.01, fmt="%.2f",
+        help="Viscous cross-flow drag coefficient (0.32).", source="docs/methods.md §1.7")
+    hull_axial_drag: float | None = number(
+        None, "Hull drag C_DV", "", 0, 1, empty="Hoerner", step=0.001, fmt="%.4f",
+        help="Zero-α hull drag on V^(2/3); empty uses Hoerner's C_DV(f, Re).")
+    cutoff: str = choice(
+        "fin", "Potential-flow cut-off station l_h", CUTOFF_MODES,
+        help="Station where the Jones & DeLaurier potential-flow term stops.")
+    fin_efficiency: float = number(
+        c.FIN_EFFICIENCY, "Fin efficiency η_f", "", 0, 1.5, step=0.05, fmt="%.2f",
+        help="Factor on the 3-D fin lift slope (1.0).")
+    section_lift_slope: float = number(
+        c.SECTION_LIFT_SLOPE, "Fin section lift slope", "1/rad", 1, 7, step=0.1, fmt="%.3f",
+        help="Thin-aerofoil value 2π = 6.283.")
+    fin_zero_lift_drag: float = number(
+        c.FIN_ZERO_LIFT_DRAG, "Fin zero-lift drag C_D0", "", 0, 0.1, step=0.001, fmt="%.4f",
+        help="On fin planform area (0.003-0.010).")
+    fin_stall_angle_deg: float = number(
+        c.FIN_STALL_ANGLE_DEG, "Fin stall angle", "deg", 5, 40, step=1.0, fmt="%.1f",
+        help="Trim beyond it is flagged.")
 
     def __post_init__(self) -> None:
-        o = "AeroModel"
-        check_number(o, "hull_efficiency", self.hull_efficiency, 0, 2)
-        check_number(o, "hull_crossflow_drag", self.hull_crossflow_drag, 0, 2)
-        if self.hull_axial_drag is not None:
-            check_number(o, "hull_axial_drag", self.hull_axial_drag, 0, 1)
-        check_choice(o, "cutoff", self.cutoff, CUTOFF_MODES)
-        check_number(o, "fin_efficiency", self.fin_efficiency, 0, 1.5)
-        check_number(o, "section_lift_slope", self.section_lift_slope, 1, 7, "1/rad")
-        check_number(o, "fin_zero_lift_drag", self.fin_zero_lift_drag, 0, 0.1)
-        check_number(o, "fin_stall_angle_deg", self.fin_stall_angle_deg, 5, 40, "deg")
+        validate(self)
 
 
 @dataclass(frozen=True)
@@ -419,12 +488,16 @@ class ConfluenceSpec:
         [-0.2, 0.2]; positive moves it aft and trims the nose up in calm air.
     """
 
-    drop_ratio: float = 0.6
-    xi_offset: float = 0.0
+    drop_ratio: float = number(
+        0.6, "Confluence drop / hull diameter", "", 0.05, 3, step=0.05, fmt="%.2f",
+        help="Confluence point below the hull bottom; not given in the thesis, 0.6 is an "
+        "engineering guess.", source="docs/methods.md G9")
+    xi_offset: float = number(
+        0.0, "Confluence station offset / hull length", "", -0.2, 0.2, step=0.01, fmt="%.3f",
+        help="Shift aft (+) from below the centre of net static lift.")
 
     def __post_init__(self) -> None:
-        check_number("ConfluenceSpec", "drop_ratio", self.drop_ratio, 0.05, 3)
-        check_number("ConfluenceSpec", "xi_offset", self.xi_offset, -0.2, 0.2)
+        validate(self)
 
 
 @dataclass(frozen=True)
@@ -444,14 +517,19 @@ class WindProfile:
         Log-law roughness z0 [m], valid [1e-5, 2].
     """
 
-    kind: str = "uniform"
-    exponent: float = 1.0 / 7.0
-    roughness_length: float = 0.03
+    kind: str = choice(
+        "uniform", "Wind profile along the tether", WIND_PROFILES,
+        help="The sweep speed is the wind at the aerostat; the profile scales it down along "
+        "the tether.")
+    exponent: float = number(
+        1.0 / 7.0, "Power-law exponent", "", 0, 0.6, step=0.01, fmt="%.3f",
+        help="Used by the power-law profile (1/7 open land).")
+    roughness_length: float = number(
+        0.03, "Log-law roughness length", "m", 1e-5, 2, step=0.01, fmt="%.3f",
+        help="Used by the log-law profile (0.03 m open land).")
 
     def __post_init__(self) -> None:
-        check_choice("WindProfile", "kind", self.kind, WIND_PROFILES)
-        check_number("WindProfile", "exponent", self.exponent, 0, 0.6)
-        check_number("WindProfile", "roughness_length", self.roughness_length, 1e-5, 2, "m")
+        validate(self)
 
 
 @dataclass(frozen=True)
@@ -474,19 +552,26 @@ class Configuration:
         Battery, power-tether, ballonet, envelope and winch technology (aerostat_core.mission).
     """
 
-    gas: LiftingGas = field(default_factory=LiftingGas)
-    hull_fabric: Fabric = field(default_factory=Fabric)
-    fin_fabric: Fabric = field(default_factory=Fabric)
-    tether: TetherSpec = field(default_factory=TetherSpec)
-    hull: HullSpec = field(default_factory=HullSpec)
-    fins: FinSpec = field(default_factory=FinSpec)
-    aero: AeroModel = field(default_factory=AeroModel)
-    confluence: ConfluenceSpec = field(default_factory=ConfluenceSpec)
-    wind_profile: WindProfile = field(default_factory=WindProfile)
-    misc_mass_ratio: float = 0.30
-    gas_price: float | None = None
-    tether_segments: int = 50
-    mission: MissionSpec = field(default_factory=MissionSpec)
+    gas: LiftingGas = part(LiftingGas, "Lifting gas")
+    hull_fabric: Fabric = part(Fabric, "Hull fabric", prefix=True)
+    fin_fabric: Fabric = part(Fabric, "Fin fabric", prefix=True)
+    tether: TetherSpec = part(TetherSpec, "Tether", prefix=True)
+    hull: HullSpec = part(HullSpec, "Hull")
+    fins: FinSpec = part(FinSpec, "Fins")
+    aero: AeroModel = part(AeroModel, "Aerodynamic model")
+    confluence: ConfluenceSpec = part(ConfluenceSpec, "Confluence point")
+    wind_profile: WindProfile = part(WindProfile, "Wind profile")
+    misc_mass_ratio: float = number(
+        0.30, "Miscellaneous mass / hull mass", "", 0, 2, step=0.05, fmt="%.2f",
+        help="Confluence lines, patches, valves (thesis Table 2.2: 0.30).",
+        source="thesis Table 2.2")
+    gas_price: float | None = number(
+        None, "Gas price", "USD/m3", 0, 1000, empty="default", step=1.0, fmt="%.2f",
+        help="Fill cost per cubic metre. Default helium 38.5 USD/m³ (thesis App. H).")
+    tether_segments: int = integer(
+        50, "Tether segments", 10, 5000, step=10,
+        help="Segments of the static tether march (50 is within 1 mm of 2000).")
+    mission: MissionSpec = part(MissionSpec, "Mission technology")
 
     def __post_init__(self) -> None:
         o = "Configuration"
@@ -504,12 +589,7 @@ class Configuration:
         ):
             if not isinstance(getattr(self, f), cls):
                 raise ValueError(f"{o}.{f} must be a {cls.__name__}")
-        check_number(o, "misc_mass_ratio", self.misc_mass_ratio, 0, 2)
-        if self.gas_price is not None:
-            check_number(o, "gas_price", self.gas_price, 0, 1000, "USD/m3")
-        object.__setattr__(
-            self, "tether_segments", check_int(o, "tether_segments", self.tether_segments, 10, 5000)
-        )
+        validate(self)
 
     @property
     def gas_price_value(self) -> float:

@@ -11,7 +11,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from .validation import check_name, check_number
+from .fields import number, text, validate
+from .validation import check_name
 
 
 @dataclass(frozen=True)
@@ -33,18 +34,21 @@ class Fabric:
         [0, 100]. Default :data:`ADRDE_HELIUM_PERMEABILITY`.
     """
 
-    name: str = "Thesis fabric (130 g/m2)"
-    areal_density: float = 0.130
-    tensile_strength: float = 40000.0
-    helium_permeability: float = 2.5
+    name: str = text("Thesis fabric (130 g/m2)", "")
+    areal_density: float = number(
+        0.130, "Areal density", "kg/m2", 0.0, 2.0, lo_open=True, scale=1000.0,
+        display_unit="g/m²", step=10.0, fmt="%.0f", help="Thesis fabric 130 g/m².",
+        source="thesis Table 2.2 (INFERRED)")
+    tensile_strength: float = number(
+        40000.0, "Tensile strength", "N/m", 0.0, 1e6, lo_open=True, scale=1e-3,
+        display_unit="kN/m", step=1.0, fmt="%.1f", source="Lv et al. 2022 (ASSUMED default)")
+    helium_permeability: float = number(
+        2.5, "Helium permeability", "L/(m2 day atm)", 0.0, 100.0, step=0.1, fmt="%.2f",
+        source="ADRDE figure (issue 13)")
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "name", check_name("Fabric", "name", self.name))
-        check_number("Fabric", "areal_density", self.areal_density, 0.0, 2.0, "kg/m2", lo_open=True)
-        check_number("Fabric", "tensile_strength", self.tensile_strength, 0.0, 1e6, "N/m",
-                     lo_open=True)
-        check_number("Fabric", "helium_permeability", self.helium_permeability, 0.0, 100.0,
-                     "L/(m2 day atm)")
+        validate(self)
 
 
 #: Default envelope strength [N/m], ASSUMED for fabrics without a published figure (the thesis
@@ -89,24 +93,29 @@ class TetherSpec:
         EA [N], valid [1e3, 1e9] or ``math.inf`` (inextensible).
     """
 
-    name: str = "Thesis tether (20 g/m)"
-    linear_density: float = 0.020
-    diameter: float = 0.005
-    normal_drag_coefficient: float = 1.0
-    tangential_drag_coefficient: float = 0.01
-    breaking_strength: float = 20000.0
-    axial_stiffness: float = 1.0e6
+    name: str = text("Thesis tether (20 g/m)", "")
+    linear_density: float = number(
+        0.020, "Linear density", "kg/m", 0, 1, lo_open=True, scale=1000.0, display_unit="g/m",
+        step=1.0, fmt="%.1f", help="Thesis 20 g/m (6 kg per 300 m).")
+    diameter: float = number(
+        0.005, "Diameter", "m", 0, 0.05, lo_open=True, scale=1000.0, display_unit="mm",
+        step=0.5, fmt="%.1f", help="Sets the tether drag and air buoyancy.")
+    normal_drag_coefficient: float = number(
+        1.0, "Normal drag coefficient", "", 0, 3, lo_open=True, step=0.1, fmt="%.2f",
+        help="Cross-flow drag coefficient of the cable (round cable 1.0-1.2).")
+    tangential_drag_coefficient: float = number(
+        0.01, "Tangential drag coefficient", "", 0, 0.1, step=0.005, fmt="%.3f",
+        help="Skin friction on the wetted perimeter (MoorDyn convention).")
+    breaking_strength: float = number(
+        20000.0, "Breaking strength", "N", 0, 1e7, lo_open=True, scale=1e-3, display_unit="kN",
+        step=1.0, fmt="%.2f", help="Minimum breaking load.")
+    axial_stiffness: float = number(
+        1.0e6, "Axial stiffness EA", "N", 1e3, 1e9, allow_inf=True, scale=1e-3,
+        display_unit="kN", step=100.0, fmt="%.0f", help="inf: inextensible.")
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "name", check_name("TetherSpec", "name", self.name))
-        o = "TetherSpec"
-        check_number(o, "linear_density", self.linear_density, 0, 1, "kg/m", lo_open=True)
-        check_number(o, "diameter", self.diameter, 0, 0.05, "m", lo_open=True)
-        check_number(o, "normal_drag_coefficient", self.normal_drag_coefficient, 0, 3, lo_open=True)
-        check_number(o, "tangential_drag_coefficient", self.tangential_drag_coefficient, 0, 0.1)
-        check_number(o, "breaking_strength", self.breaking_strength, 0, 1e7, "N", lo_open=True)
-        if self.axial_stiffness != math.inf:
-            check_number(o, "axial_stiffness", self.axial_stiffness, 1e3, 1e9, "N")
+        validate(self)
 
 
 #: Fabric catalogue. Each entry's source, value by value, is in :data:`FABRIC_SOURCES`.

@@ -34,10 +34,10 @@ from .endurance import (
     permeation_time_constant,
     purity_after,
 )
+from .fields import choice, integer, number, validate
 from .materials import POWER_TETHER_CONDUCTORS, TetherSpec
 from .power import Conductors, battery_mass, power_tether, size_conductors
 from .structure import allowable_pressure, membrane_loads, required_pressure
-from .validation import check_choice, check_int, check_number
 from .winch import Winch, size_winch
 
 POWER_ROUTES = ("onboard", "tether")
@@ -93,44 +93,56 @@ class MissionSpec:
         Layers of tether on the drum, valid [1, 100]; 10.
     """
 
-    battery_energy_density: float = c.BATTERY_ENERGY_DENSITY
-    battery_depth_of_discharge: float = c.BATTERY_DEPTH_OF_DISCHARGE
-    battery_hours: float | None = None
-    supply_voltage: float = c.POWER_TETHER_VOLTAGE
-    power_loss_fraction: float = c.POWER_TETHER_LOSS_FRACTION
-    max_current_density: float = c.MAX_CURRENT_DENSITY
-    insulation_thickness: float = 0.25e-3
-    ballonet: str = "off"
-    superheat: float = c.GAS_SUPERHEAT
-    envelope_safety_factor: float = c.ENVELOPE_SAFETY_FACTOR
-    pressure_dynamic_factor: float = c.PRESSURE_DYNAMIC_FACTOR
-    winch_speed: float = c.THESIS_WINCH_SPEED
-    winch_efficiency: float = c.WINCH_EFFICIENCY
-    bend_radius_ratio: float = c.TETHER_BEND_RADIUS_RATIO
-    drum_layers: int = 10
+    battery_energy_density: float = number(
+        c.BATTERY_ENERGY_DENSITY, "Battery specific energy", "Wh/kg", 20, 1000, step=10.0,
+        fmt="%.0f", help="Pack level (cells about 250 Wh/kg, packs 150-200).", source="ASSUMED")
+    battery_depth_of_discharge: float = number(
+        c.BATTERY_DEPTH_OF_DISCHARGE, "Battery depth of discharge", "", 0, 1, lo_open=True,
+        step=0.05, fmt="%.2f", help="Usable fraction of the rated energy.", source="ASSUMED")
+    battery_hours: float | None = number(
+        None, "Hours between recharges", "h", 0, 10000, lo_open=True, empty="endurance",
+        step=1.0, fmt="%.0f", help="Empty: 24 h per endurance day, or 24 h without endurance.")
+    supply_voltage: float = number(
+        c.POWER_TETHER_VOLTAGE, "Power-tether supply voltage", "V", 12, 20000, step=50.0,
+        fmt="%.0f", source="ASSUMED")
+    power_loss_fraction: float = number(
+        c.POWER_TETHER_LOSS_FRACTION, "Allowed conductor loss", "", 0, 0.5, lo_open=True,
+        scale=100.0, display_unit="%", step=1.0, fmt="%.1f",
+        help="Resistive loss / supply power of the tether conductors.")
+    max_current_density: float = number(
+        c.MAX_CURRENT_DENSITY, "Conductor current-density limit", "A/m2", 1e5, 5e7, scale=1e-6,
+        display_unit="A/mm²", step=0.5, fmt="%.1f",
+        help="Conductor-temperature limit (5 A/mm² for insulated copper in a bundle).",
+        source="ASSUMED")
+    insulation_thickness: float = number(
+        0.25e-3, "Conductor insulation wall", "m", 0, 0.005, scale=1000.0, display_unit="mm",
+        step=0.05, fmt="%.2f")
+    ballonet: str = choice(
+        "off", "Ballonet", BALLONET_MODES, source="thesis §2.2.1(c)",
+        help="The thesis flies below 500 m without one; a built ballonet adds its fabric to the "
+        "mass breakdown.")
+    superheat: float = number(
+        c.GAS_SUPERHEAT, "Gas superheat (day)", "K", 0, 40, step=1.0, fmt="%.0f",
+        help="Day-time gas superheat at the operating altitude.", source="ASSUMED")
+    envelope_safety_factor: float = number(
+        c.ENVELOPE_SAFETY_FACTOR, "Envelope fabric safety factor", "", 1, 20, step=0.5,
+        fmt="%.1f", source="Carichner & Nicolai 2013")
+    pressure_dynamic_factor: float = number(
+        c.PRESSURE_DYNAMIC_FACTOR, "Internal pressure / dynamic pressure", "", 1, 3, step=0.1,
+        fmt="%.2f", source="constants.PRESSURE_DYNAMIC_FACTOR")
+    winch_speed: float = number(
+        c.THESIS_WINCH_SPEED, "Winch reel speed", "m/s", 0, 5, lo_open=True, step=0.05,
+        fmt="%.3f", source="thesis §2.2.4")
+    winch_efficiency: float = number(
+        c.WINCH_EFFICIENCY, "Winch efficiency", "", 0, 1, lo_open=True, step=0.05, fmt="%.2f",
+        source="ASSUMED")
+    bend_radius_ratio: float = number(
+        c.TETHER_BEND_RADIUS_RATIO, "Tether min bend radius / diameter", "", 2, 100, step=1.0,
+        fmt="%.0f", source="ASSUMED")
+    drum_layers: int = integer(10, "Tether layers on the drum", 1, 100)
 
     def __post_init__(self) -> None:
-        o = "MissionSpec"
-        check_number(o, "battery_energy_density", self.battery_energy_density, 20, 1000, "Wh/kg")
-        check_number(
-            o, "battery_depth_of_discharge", self.battery_depth_of_discharge, 0, 1, lo_open=True
-        )
-        if self.battery_hours is not None:
-            check_number(o, "battery_hours", self.battery_hours, 0, 10000, "h", lo_open=True)
-        check_number(o, "supply_voltage", self.supply_voltage, 12, 20000, "V")
-        check_number(o, "power_loss_fraction", self.power_loss_fraction, 0, 0.5, lo_open=True)
-        check_number(o, "max_current_density", self.max_current_density, 1e5, 5e7, "A/m2")
-        check_number(o, "insulation_thickness", self.insulation_thickness, 0, 0.005, "m")
-        check_choice(o, "ballonet", self.ballonet, BALLONET_MODES)
-        check_number(o, "superheat", self.superheat, 0, 40, "K")
-        check_number(o, "envelope_safety_factor", self.envelope_safety_factor, 1, 20)
-        check_number(o, "pressure_dynamic_factor", self.pressure_dynamic_factor, 1, 3)
-        check_number(o, "winch_speed", self.winch_speed, 0, 5, "m/s", lo_open=True)
-        check_number(o, "winch_efficiency", self.winch_efficiency, 0, 1, lo_open=True)
-        check_number(o, "bend_radius_ratio", self.bend_radius_ratio, 2, 100)
-        object.__setattr__(
-            self, "drum_layers", check_int(o, "drum_layers", self.drum_layers, 1, 100)
-        )
+        validate(self)
 
 
 # --- power -------------------------------------------------------------------------------------

@@ -17,7 +17,7 @@ from typing import Any
 
 import numpy as np
 
-from . import budget
+from . import budget, fields
 from .design import Design, design
 from .fins import ARRANGEMENT_ANGLES_DEG
 from .geometry import radius
@@ -30,130 +30,10 @@ from .shapes import profile_radius_ratio
 # Input fields: labels and units (display and CSV)
 # --------------------------------------------------------------------------------------------
 
-#: Every input field by dotted path: (label, display unit, display scale from SI, CSV unit token).
-#: ``display = SI * scale``. Fields the engine adds later still work: they fall back to their
-#: path as label and no unit (see :func:`input_field_info`).
-INPUT_FIELDS: dict[str, tuple[str, str, float, str]] = {
-    "requirement.payload_mass": ("Payload mass", "kg", 1.0, "kg"),
-    "requirement.altitude": ("Operating altitude", "m", 1.0, "m"),
-    "requirement.site_elevation": ("Site elevation (above sea level)", "m", 1.0, "m"),
-    "requirement.isa_offset": ("Temperature offset from ISA", "K", 1.0, "K"),
-    "requirement.wind_max": ("Maximum wind of the sweep", "m/s", 1.0, "m_s"),
-    "requirement.wind_step": ("Wind step of the sweep", "m/s", 1.0, "m_s"),
-    "requirement.site_temperature": ("Temperature at the launch site", "°C", 1.0, "degC"),
-    "requirement.design_wind": ("Operational (design) wind", "m/s", 1.0, "m_s"),
-    "requirement.survival_wind": ("Survival wind", "m/s", 1.0, "m_s"),
-    "requirement.blow_by_limit": ("Blow-by limit at the design wind", "m", 1.0, "m"),
-    "requirement.altitude_loss_limit": ("Permissible altitude loss", "m", 1.0, "m"),
-    "requirement.free_lift_fraction": ("Free lift, share of gross lift", "%", 100.0, ""),
-    "requirement.min_tether_safety_factor": ("Required tether safety factor", "-", 1.0, ""),
-    "requirement.survival_safety_factor": ("Tether safety factor at the survival wind", "-", 1.0,
-                                           ""),
-    "requirement.max_tether_angle_deg": ("Largest tether angle from the vertical", "deg", 1.0,
-                                         "deg"),
-    "requirement.weathervane_margin": ("Weathervane stability margin", "1/rad", 1.0, "per_rad"),
-    "requirement.rules": ("Rule set", "", 1.0, ""),
-    "configuration.gas.kind": ("Lifting gas", "", 1.0, ""),
-    "configuration.gas.purity": ("Gas purity", "%", 100.0, ""),
-    "configuration.gas.superpressure": ("Hull superpressure", "Pa", 1.0, "Pa"),
-    "configuration.gas.density_model": ("Gas density model", "", 1.0, ""),
-    "configuration.gas.fixed_density": ("Fixed gas density", "kg/m³", 1.0, "kg_m3"),
-    "configuration.hull_fabric.name": ("Hull fabric", "", 1.0, ""),
-    "configuration.hull_fabric.areal_density": (
-        "Hull fabric areal density",
-        "g/m²",
-        1000.0,
-        "kg_m2",
-    ),
-    "configuration.fin_fabric.name": ("Fin fabric", "", 1.0, ""),
-    "configuration.fin_fabric.areal_density": ("Fin fabric areal density", "g/m²", 1000.0, "kg_m2"),
-    "configuration.tether.name": ("Tether", "", 1.0, ""),
-    "configuration.tether.linear_density": ("Tether linear density", "g/m", 1000.0, "kg_m"),
-    "configuration.tether.diameter": ("Tether diameter", "mm", 1000.0, "m"),
-    "configuration.tether.normal_drag_coefficient": (
-        "Tether normal drag coefficient",
-        "-",
-        1.0,
-        "",
-    ),
-    "configuration.tether.tangential_drag_coefficient": (
-        "Tether tangential drag coefficient",
-        "-",
-        1.0,
-        "",
-    ),
-    "configuration.tether.breaking_strength": ("Tether breaking strength", "kN", 1e-3, "N"),
-    "configuration.tether.axial_stiffness": ("Tether axial stiffness EA", "kN", 1e-3, "N"),
-    "configuration.hull.shape": ("Hull shape", "", 1.0, ""),
-    "configuration.hull.fineness_ratio": ("Fineness ratio l/d", "-", 1.0, ""),
-    "configuration.hull.nose_fraction": ("Max-diameter station a1/l", "-", 1.0, ""),
-    "configuration.hull.volume": ("Hull volume (given; empty = sized)", "m³", 1.0, "m3"),
-    "configuration.fins.count": ("Number of fins", "-", 1.0, ""),
-    "configuration.fins.arrangement": ("Fin arrangement", "", 1.0, ""),
-    "configuration.fins.area_change": ("Fin area change ΔS_f", "%", 1.0, "pct"),
-    "configuration.fins.position": (
-        "Fin root LE position Δl_f",
-        "% of l",
-        100.0,
-        "fraction_of_length",
-    ),
-    "configuration.fins.area_ratio": ("Fin area / hull area (statistical)", "-", 1.0, ""),
-    "configuration.fins.aspect_ratio": ("Fin pair aspect ratio", "-", 1.0, ""),
-    "configuration.fins.taper_ratio": ("Fin taper ratio", "-", 1.0, ""),
-    "configuration.fins.fabric_factor": ("Fin fabric / planform area", "-", 1.0, ""),
-    "configuration.aero.hull_efficiency": ("Hull efficiency η_k", "-", 1.0, ""),
-    "configuration.aero.hull_crossflow_drag": ("Hull cross-flow drag (C_dc)_h", "-", 1.0, ""),
-    "configuration.aero.hull_axial_drag": ("Hull axial drag C_DV (empty = Hoerner)", "-", 1.0, ""),
-    "configuration.aero.cutoff": ("Potential-flow cut-off station", "", 1.0, ""),
-    "configuration.aero.fin_efficiency": ("Fin efficiency η_f", "-", 1.0, ""),
-    "configuration.aero.section_lift_slope": ("Fin section lift slope", "1/rad", 1.0, "per_rad"),
-    "configuration.aero.fin_zero_lift_drag": ("Fin zero-lift drag C_D0", "-", 1.0, ""),
-    "configuration.aero.fin_stall_angle_deg": ("Fin stall angle", "deg", 1.0, "deg"),
-    "configuration.confluence.drop_ratio": ("Confluence drop / hull diameter", "-", 1.0, ""),
-    "configuration.confluence.xi_offset": ("Confluence station offset / hull length", "-", 1.0, ""),
-    "configuration.wind_profile.kind": ("Wind profile along the tether", "", 1.0, ""),
-    "configuration.wind_profile.exponent": ("Power-law exponent", "-", 1.0, ""),
-    "configuration.wind_profile.roughness_length": ("Log-law roughness length", "m", 1.0, "m"),
-    "configuration.misc_mass_ratio": ("Miscellaneous mass / hull mass", "-", 1.0, ""),
-    "configuration.gas_price": ("Gas price (empty = default)", "USD/m³", 1.0, "USD_m3"),
-    "configuration.tether_segments": ("Tether segments", "-", 1.0, ""),
-    # mission inputs (aerostat_core.mission, issue 13)
-    "requirement.payload_power": ("Payload power", "W", 1.0, "W"),
-    "requirement.power_via": ("Payload power from", "", 1.0, ""),
-    "requirement.endurance_days": ("Endurance without top-up", "day", 1.0, "day"),
-    "requirement.deployment_days": ("Deployment length (top-up gas)", "day", 1.0, "day"),
-    "configuration.hull_fabric.tensile_strength": ("Hull fabric tensile strength", "kN/m", 1e-3,
-                                                   "N_m"),
-    "configuration.hull_fabric.helium_permeability": ("Hull fabric helium permeability",
-                                                      "L/(m² day atm)", 1.0, "L_m2_day_atm"),
-    "configuration.fin_fabric.tensile_strength": ("Fin fabric tensile strength", "kN/m", 1e-3,
-                                                  "N_m"),
-    "configuration.fin_fabric.helium_permeability": ("Fin fabric helium permeability",
-                                                     "L/(m² day atm)", 1.0, "L_m2_day_atm"),
-    "configuration.mission.battery_energy_density": ("Battery specific energy", "Wh/kg", 1.0,
-                                                     "Wh_kg"),
-    "configuration.mission.battery_depth_of_discharge": ("Battery depth of discharge", "-", 1.0,
-                                                         ""),
-    "configuration.mission.battery_hours": ("Hours between recharges (empty = endurance)", "h",
-                                            1.0, "h"),
-    "configuration.mission.supply_voltage": ("Power-tether supply voltage", "V", 1.0, "V"),
-    "configuration.mission.power_loss_fraction": ("Allowed conductor loss", "%", 100.0, ""),
-    "configuration.mission.max_current_density": ("Conductor current-density limit", "A/mm²",
-                                                  1e-6, "A_m2"),
-    "configuration.mission.insulation_thickness": ("Conductor insulation wall", "mm", 1000.0,
-                                                   "m"),
-    "configuration.mission.ballonet": ("Ballonet", "", 1.0, ""),
-    "configuration.mission.superheat": ("Gas superheat (day)", "K", 1.0, "K"),
-    "configuration.mission.envelope_safety_factor": ("Envelope fabric safety factor", "-", 1.0,
-                                                     ""),
-    "configuration.mission.pressure_dynamic_factor": ("Internal pressure / dynamic pressure",
-                                                      "-", 1.0, ""),
-    "configuration.mission.winch_speed": ("Winch reel speed", "m/s", 1.0, "m_s"),
-    "configuration.mission.winch_efficiency": ("Winch efficiency", "-", 1.0, ""),
-    "configuration.mission.bend_radius_ratio": ("Tether min bend radius / diameter", "-", 1.0,
-                                                ""),
-    "configuration.mission.drum_layers": ("Tether layers on the drum", "-", 1.0, ""),
-}
+#: Every input field by dotted path: (label, display unit, display scale from SI, CSV unit token),
+#: from the field registry (aerostat_core.fields). ``display = SI * scale``. Unknown paths fall
+#: back to their path as label and no unit (see :func:`input_field_info`).
+INPUT_FIELDS: dict[str, tuple[str, str, float, str]] = fields.report_table()
 
 
 def input_field_info(path: str) -> tuple[str, str, float, str]:

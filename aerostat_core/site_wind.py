@@ -31,6 +31,7 @@ from scipy.special import ndtr
 
 from .design import Design
 from .envelope import point_state, requirement_at
+from .fields import number, validate
 from .validation import check_number
 
 #: Default hourly lag-1 autocorrelation of the (Gaussian-transformed) hourly mean wind [-]:
@@ -66,19 +67,19 @@ class WeibullSite:
         Hourly lag-1 autocorrelation of the transformed wind [-], valid [0, 0.999].
     """
 
-    shape: float = 2.0
-    scale: float = 6.0
-    reference_height: float = 10.0
-    shear_exponent: float = OPEN_TERRAIN_SHEAR
-    autocorrelation: float = HOURLY_AUTOCORRELATION
+    shape: float = number(2.0, "Weibull k", "", 0.5, 10, step=0.1, fmt="%.2f")
+    scale: float = number(6.0, "Weibull c", "m/s", 0, 40, lo_open=True, step=0.5, fmt="%.1f")
+    reference_height: float = number(
+        10.0, "Reference height", "m", 1, 1000, step=1.0, fmt="%.0f",
+        help="Height of the wind distribution above the site (10 m: meteorological mast).")
+    shear_exponent: float = number(
+        OPEN_TERRAIN_SHEAR, "Shear exponent", "", 0, 0.6, step=0.01, fmt="%.3f",
+        help="Power-law exponent (1/7 open terrain).")
+    autocorrelation: float = number(
+        HOURLY_AUTOCORRELATION, "Hourly autocorrelation", "", 0, 0.999, step=0.01, fmt="%.3f")
 
     def __post_init__(self) -> None:
-        o = "WeibullSite"
-        check_number(o, "shape", self.shape, 0.5, 10)
-        check_number(o, "scale", self.scale, 0, 40, "m/s", lo_open=True)
-        check_number(o, "reference_height", self.reference_height, 1, 1000, "m")
-        check_number(o, "shear_exponent", self.shear_exponent, 0, 0.6)
-        check_number(o, "autocorrelation", self.autocorrelation, 0, 0.999)
+        validate(self)
 
     def scale_at(self, height: float) -> float:
         """c at ``height`` [m]: c (h / z_ref)^alpha [m/s]."""
@@ -114,12 +115,11 @@ class HourlyRecord:
 
     time: np.ndarray
     speed: np.ndarray
-    reference_height: float = 10.0
-    shear_exponent: float = OPEN_TERRAIN_SHEAR
+    reference_height: float = number(10.0, "Reference height", "m", 1, 1000)
+    shear_exponent: float = number(OPEN_TERRAIN_SHEAR, "Shear exponent", "", 0, 0.6)
 
     def __post_init__(self) -> None:
-        check_number("HourlyRecord", "reference_height", self.reference_height, 1, 1000, "m")
-        check_number("HourlyRecord", "shear_exponent", self.shear_exponent, 0, 0.6)
+        validate(self)
 
     def speed_at(self, height: float) -> np.ndarray:
         """Speeds at ``height`` [m]: U (h / z_ref)^alpha [m/s]."""

@@ -65,9 +65,14 @@ class InputError(ValueError):
     unit : str
         Unit of the value and the range, e.g. ``"kg"``.
     label : str
-        Readable name of the field ("payload mass"); a form may show its own label instead.
+        Readable name of the field from the field registry (``aerostat_core.fields``), e.g.
+        "Payload mass"; the field name with spaces when the check had no spec.
     reason : str
         The message without the ``owner.field = value`` prefix, e.g. ``"is not a number"``.
+    context : str
+        What the range depends on, as appended to the reason (``" for shape 'npl'"``); "".
+    too_small : bool
+        The value is inside the range but too small to compute with (``POSITIVE_FLOOR``).
     """
 
     def __init__(
@@ -83,13 +88,17 @@ class InputError(ValueError):
         hi_open: bool = False,
         unit: str = "",
         reason: str = "",
+        label: str = "",
+        context: str = "",
+        too_small: bool = False,
     ) -> None:
         super().__init__(short(message))
         self.owner, self.field, self.value = owner, field, value
         self.lo, self.hi, self.lo_open, self.hi_open = lo, hi, lo_open, hi_open
         self.unit = unit
-        self.label = field.replace("_", " ")
+        self.label = label or field.replace("_", " ")
         self.reason = short(reason or message)
+        self.context, self.too_small = context, too_small
 
     @property
     def valid_range(self) -> str:
@@ -124,6 +133,8 @@ def check_number(
     *,
     lo_open: bool = False,
     hi_open: bool = False,
+    label: str = "",
+    reason_suffix: str = "",
 ) -> float:
     """Return ``value`` as float or raise :class:`InputError` naming the field, value and range.
 
@@ -143,6 +154,11 @@ def check_number(
         Unit shown in the message, e.g. ``"kg"``.
     lo_open, hi_open : bool
         Whether the bounds are excluded.
+    label : str
+        Readable name for :attr:`InputError.label` (the registry's, ``aerostat_core.fields``).
+    reason_suffix : str
+        Appended to the reason, e.g. ``" for shape 'npl'"`` for a range that depends on another
+        field.
 
     Examples
     --------
@@ -155,11 +171,15 @@ def check_number(
     """
     u = f" {unit}" if unit else ""
     rng = _range_text(lo, hi, unit, lo_open, hi_open)
-    info = dict(owner=owner, field=field, value=value, lo=lo, hi=hi, unit=unit)
+    info = dict(owner=owner, field=field, value=value, lo=lo, hi=hi, unit=unit, label=label)
     info.update(lo_open=lo_open, hi_open=hi_open)
 
-    def fail(shown: str, reason: str) -> InputError:
-        return InputError(f"{owner}.{field} = {shown} {reason}", reason=reason, **info)
+    def fail(shown: str, reason: str, too_small: bool = False) -> InputError:
+        reason += reason_suffix
+        return InputError(
+            f"{owner}.{field} = {shown} {reason}", reason=reason, context=reason_suffix,
+            too_small=too_small, **info,
+        )
 
     if isinstance(value, bool) or not isinstance(value, Real):
         raise fail(shown_value(value), f"is not a number; valid range {rng}")
@@ -178,12 +198,15 @@ def check_number(
             f"{v:g}{u}",
             f"is too small to compute with (at least {POSITIVE_FLOOR * hi:g}{u}); "
             f"valid range {rng}",
+            too_small=True,
         )
     _store_back(field, value, v)
     return v
 
 
-def check_choice(owner: str, field: str, value: object, choices: tuple[str, ...]) -> str:
+def check_choice(
+    owner: str, field: str, value: object, choices: tuple[str, ...], *, label: str = ""
+) -> str:
     """Return ``value`` if it is one of ``choices``, else raise :class:`InputError` listing them.
 
     >>> check_choice("LiftingGas", "kind", "argon", ("helium", "hydrogen"))
@@ -199,14 +222,17 @@ def check_choice(owner: str, field: str, value: object, choices: tuple[str, ...]
             field=field,
             value=value,
             reason=reason,
+            label=label,
         )
     return value
 
 
-def check_int(owner: str, field: str, value: object, lo: int, hi: int) -> int:
+def check_int(
+    owner: str, field: str, value: object, lo: int, hi: int, *, label: str = ""
+) -> int:
     """Return ``value`` as int if it is a whole number in [lo, hi], else raise
     :class:`InputError`. A whole float or numpy integer is stored back as ``int``."""
-    info = dict(owner=owner, field=field, value=value, lo=lo, hi=hi)
+    info = dict(owner=owner, field=field, value=value, lo=lo, hi=hi, label=label)
     try:
         bad = (
             isinstance(value, bool)

@@ -25,6 +25,7 @@ from aerostat_core.uncertainty import monte_carlo, rule_set_spread
 
 from . import cache
 from .plots import PALETTE, WIND_AXIS
+from .show import spec_number
 
 SITE_KEY = "envelope_site"  # session key: {"kind": "weibull", ...} or {"kind": "csv", ...}
 MC_KEY = "envelope_mc"  # session key: {"n": N, "seed": S} once the user ran it
@@ -255,12 +256,10 @@ def _site_form() -> None:
         st.markdown("**Site wind**")
         kind = st.radio("Source", ["Weibull", "Hourly CSV"], horizontal=True, key="site_kind")
         c = st.columns(4)
-        k = c[0].number_input("Weibull k [-]", 0.5, 10.0, 2.0, 0.1, key="site_k")
-        cc = c[1].number_input("Weibull c [m/s]", 0.1, 40.0, 6.0, 0.5, key="site_c")
-        zr = c[2].number_input("Reference height [m]", 1.0, 1000.0, 10.0, 1.0, key="site_zref")
-        al = c[3].number_input(
-            "Shear exponent [-]", 0.0, 0.6, round(1 / 7, 3), 0.01, key="site_alpha"
-        )
+        k = spec_number(c[0], WeibullSite, "shape", 2.0, "site_k")
+        cc = spec_number(c[1], WeibullSite, "scale", 6.0, "site_c")
+        zr = spec_number(c[2], WeibullSite, "reference_height", 10.0, "site_zref")
+        al = spec_number(c[3], WeibullSite, "shear_exponent", round(1 / 7, 3), "site_alpha")
         target = st.slider("Target availability [%]", 50.0, 99.9, 95.0, 0.1, key="site_target")
         up = st.file_uploader(
             "Hourly wind CSV (timestamp, speed [m/s])", type=["csv"], key="site_csv"

@@ -6,13 +6,19 @@ edits the mission inputs through :func:`app_ui.state.set_current_inputs`."""
 from __future__ import annotations
 
 from dataclasses import replace
+from typing import Any
 
 import pandas as pd
 import streamlit as st
 
-from aerostat_core.mission import BALLONET_MODES, POWER_ROUTES
+from aerostat_core import Requirement
+from aerostat_core.fields import spec_for_path
+from aerostat_core.mission import MissionSpec
+from aerostat_core.validation import InputError
 
 from . import cache, state
+from .show import spec_number
+from .text import plain
 
 #: Labels of the choices (the values are the engine's).
 POWER_LABELS = {"onboard": "Onboard battery", "tether": "Through the tether"}
@@ -49,6 +55,9 @@ def _apply() -> None:
                 superheat=float(ss["mission_superheat"]),
             ),
         )
+    except InputError as exc:  # in the form's words: the registry label, not Class.field
+        ss[ERROR_KEY] = f"{exc.label}: {exc.reason}."
+        return
     except ValueError as exc:
         ss[ERROR_KEY] = str(exc)
         return
@@ -56,70 +65,31 @@ def _apply() -> None:
     state.set_current_inputs(req2, cfg2)
 
 
+def _select(col: Any, path: str, key: str, value: str, shown: dict[str, str]) -> None:
+    e = spec_for_path(path)
+    options = list(e.spec.choices)
+    col.selectbox(e.label, options, index=options.index(value), format_func=shown.get, key=key,
+                  help=e.spec.help)
+
+
 def _inputs(req, cfg) -> None:
     with st.form(FORM_KEY, border=True):
         st.markdown("**Mission inputs** (off by default: no power, no endurance requirement)")
         c = st.columns(3)
-        c[0].number_input(
-            "Payload power [W]",
-            min_value=0.0,
-            max_value=1e5,
-            value=float(req.payload_power),
-            step=10.0,
-            key="mission_power",
-            help="Electrical power the payload draws (thesis Table 2.4); 0 models no supply.",
-        )
-        c[1].selectbox(
-            "Power from",
-            POWER_ROUTES,
-            index=POWER_ROUTES.index(req.power_via),
-            format_func=POWER_LABELS.get,
-            key="mission_power_via",
-            help="An onboard battery adds its mass; through the tether adds copper conductors "
-            "to the tether (mass, diameter and drag, strength).",
-        )
-        c[2].number_input(
-            "Endurance without top-up [day]",
-            min_value=0.0,
-            max_value=365.0,
-            value=float(req.endurance_days),
-            step=1.0,
-            key="mission_endurance",
-            help="Days the free-lift margin must last while helium permeates out (thesis §2.3: "
-            "tactical 5-7 days). 0: no requirement.",
-        )
+        spec_number(c[0], Requirement, "payload_power", req.payload_power, "mission_power")
+        _select(c[1], "requirement.power_via", "mission_power_via", req.power_via, POWER_LABELS)
+        spec_number(c[2], Requirement, "endurance_days", req.endurance_days, "mission_endurance")
         c = st.columns(3)
-        c[0].number_input(
-            "Deployment length [day]",
-            min_value=0.0,
-            max_value=3650.0,
-            value=float(req.deployment_days),
-            step=5.0,
-            key="mission_deployment",
-            help="Period over which the helium top-up gas and its cost are reported.",
+        spec_number(
+            c[0], Requirement, "deployment_days", req.deployment_days, "mission_deployment"
         )
-        c[1].selectbox(
-            "Ballonet",
-            BALLONET_MODES,
-            index=BALLONET_MODES.index(cfg.mission.ballonet),
-            format_func=BALLONET_LABELS.get,
-            key="mission_ballonet",
-            help="The thesis flies below 500 m without one (§2.2.1(c)); a built ballonet adds its "
-            "fabric to the mass breakdown.",
-        )
-        c[2].number_input(
-            "Gas superheat [K]",
-            min_value=0.0,
-            max_value=40.0,
-            value=float(cfg.mission.superheat),
-            step=1.0,
-            key="mission_superheat",
-            help="Day-time gas temperature above ambient at the operating altitude.",
-        )
+        _select(c[1], "configuration.mission.ballonet", "mission_ballonet", cfg.mission.ballonet,
+                BALLONET_LABELS)
+        spec_number(c[2], MissionSpec, "superheat", cfg.mission.superheat, "mission_superheat")
         st.form_submit_button("Apply mission inputs", on_click=_apply, icon=":material/send:")
     err = st.session_state.get(ERROR_KEY)
     if err:
-        st.error(err, icon=":material/error:")
+        st.error(plain(err), icon=":material/error:")
 
 
 def render(d) -> None:

@@ -17,6 +17,7 @@ import plotly.graph_objects as go
 import streamlit as st
 
 from aerostat_core.export import design_stl, gore_csv, gore_dxf, gore_pattern, gore_svg
+from aerostat_core.fields import column_label
 from aerostat_core.io import inputs_from_dict
 from aerostat_core.shape_comparison import (
     TABLE_SHAPES,
@@ -257,7 +258,7 @@ def sweeps_figure(sweeps: Mapping[str, Mapping[str, list]]) -> go.Figure:
                 font=_FONT,
                 height=440,
                 margin=dict(l=60, r=20, t=50, b=50),
-                xaxis=dict(title=dict(text="Fineness ratio l/d [-]")),
+                xaxis=dict(title=dict(text=column_label("configuration.hull.fineness_ratio"))),
                 yaxis=dict(title=dict(text="Total mass [kg]"), type="log"),
                 legend=dict(orientation="h", y=-0.25),
             ),

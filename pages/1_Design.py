@@ -9,7 +9,18 @@ import streamlit as st
 from aerostat_core import thesis_baseline
 from aerostat_core.io import design_to_json
 from aerostat_core.report import tether_profile_rows
-from app_ui import cache, envelope_view, mission_view, plots, shapes_view, state, widgets
+from app_ui import (
+    cache,
+    envelope_view,
+    form,
+    form_model,
+    mission_view,
+    plots,
+    shapes_view,
+    show,
+    state,
+    text,
+)
 from app_ui.plots import geometry_frame, mass_frame, performance_frame, performance_styler
 
 st.title("Aerostat design")
@@ -21,7 +32,7 @@ st.caption(
 
 def _load_baseline() -> None:
     state.set_current_inputs(*thesis_baseline())
-    st.session_state.pop(widgets.ERROR_KEY, None)
+    st.session_state.pop(form_model.ERROR_KEY, None)
 
 
 def _save_case() -> None:
@@ -42,7 +53,7 @@ def _on_upload() -> None:
     uploaded = st.session_state.get("design_upload")
     if uploaded is not None:
         state.handle_upload(uploaded, "design")
-        st.session_state.pop(widgets.ERROR_KEY, None)
+        st.session_state.pop(form_model.ERROR_KEY, None)
 
 
 def _fmt(v: float, digits: int = 1) -> str:
@@ -211,8 +222,8 @@ with col_in:
     fb = state.pop_import_feedback("design")  # shown once: never next to a later file
     if fb:
         with import_box:
-            widgets.feedback(fb["level"], fb["text"])
-    widgets.input_form()
+            show.feedback(fb["level"], fb["text"])
+    form.input_form()
 
 # --- results -----------------------------------------------------------------------------------
 with col_out:
@@ -226,17 +237,17 @@ with col_out:
     s, lim = rep["summary"], rep["limits"]
     # After a rejected submit the form holds values that were not applied: say whose results
     # these are, so "meets every requirement" is never read as a verdict on the rejected values.
-    stale = bool(st.session_state.get(widgets.ERROR_KEY))
+    stale = bool(st.session_state.get(form_model.ERROR_KEY))
 
     st.subheader("Result", anchor=False)
-    rules = widgets.RULE_SETS[rep["inputs"]["requirement"]["rules"]]
+    rules = form_model.RULE_SETS[rep["inputs"]["requirement"]["rules"]]
     st.caption(
         f"Rule set: **{rules.name}** ({rules.title}). "
         + (f"Sized by: {s['binding_constraint'].replace('_', ' ')}." if rep["sized"] else "")
     )
     with st.expander("Constraint table: every limit, its margin and where it is checked",
                      icon=":material/rule:"):
-        st.dataframe(pd.DataFrame(widgets.constraint_table_rows(rep["constraints"])),
+        st.dataframe(pd.DataFrame(text.constraint_table_rows(rep["constraints"])),
                      hide_index=True, width="stretch", key="constraint_table")
     if stale:
         st.warning(
@@ -244,7 +255,7 @@ with col_out:
             "(see the message in the form).",
             icon=":material/history:",
         )
-    c = widgets.metric_row(5)
+    c = show.metric_row(5)
     c[0].metric(
         "Volume [m³]",
         _fmt(s["volume_m3"]),
@@ -270,12 +281,12 @@ with col_out:
         f"({s['percent_static_lift']:.0f} % of the gross buoyancy).",
     )
     st.caption(f"At the design wind, {lim['design_wind']:g} m/s:")
-    c = widgets.metric_row(5)
+    c = show.metric_row(5)
     bb = s["blow_by_at_design_wind_m"]
     c[0].metric(
         "Blow-by [m]",
         _fmt(bb),
-        delta=f"{widgets.signed(bb - lim['blow_by_limit'], 1)} m",
+        delta=f"{text.signed(bb - lim['blow_by_limit'], 1)} m",
         delta_color="inverse",
         help=f"Downwind offset of the confluence point from the winch; limit "
         f"{lim['blow_by_limit']:g} m (the delta is blow-by minus limit).",
@@ -294,7 +305,7 @@ with col_out:
     c[3].metric(
         "Safety factor [-]",
         _fmt(sf, 2),
-        delta=widgets.signed(sf - lim["min_safety_factor"], 2),
+        delta=text.signed(sf - lim["min_safety_factor"], 2),
         help="Tether breaking strength / largest tension along the tether; required "
         f"{lim['min_safety_factor']:g} (the delta is the margin).",
     )
@@ -316,7 +327,7 @@ with col_out:
     if lim_speeds:
         st.warning(
             f"Operating limits exceeded in the sweep at "
-            f"{widgets.speed_ranges(lim_speeds, rep['inputs']['requirement']['wind_step'])} m/s "
+            f"{text.speed_ranges(lim_speeds, rep['inputs']['requirement']['wind_step'])} m/s "
             "(marked in red in the table and plots).",
             icon=":material/warning:",
         )
@@ -345,7 +356,7 @@ with col_out:
     fb = st.session_state.pop("case_feedback", None)
     if fb:
         with case_box:
-            widgets.feedback(fb[0], fb[1])
+            show.feedback(fb[0], fb[1])
 
     # Lazy tabs: only the open tab runs and is sent to the browser (a rerun draws 1-5 charts
     # instead of 10, which keeps "click Update design -> result" well under a second).

@@ -9,7 +9,7 @@ from aerostat_core import budget
 from aerostat_core.io import inputs_from_dict
 from aerostat_core.report import thesis_gui_cases
 from aerostat_core.validation import short
-from app_ui import cache, plots, state, widgets
+from app_ui import cache, plots, show, state, text
 
 st.title("Compare saved cases")
 st.caption(
@@ -103,7 +103,7 @@ feedback_box = st.container()
 fb = st.session_state.pop("compare_feedback", None)
 if fb:
     with feedback_box:
-        widgets.feedback(fb[0], fb[1])
+        show.feedback(fb[0], fb[1])
 
 cases = state.get_cases()
 
@@ -158,7 +158,7 @@ import_box = st.container()
 fb = state.pop_import_feedback("compare")  # shown once: never next to a later file
 if fb:
     with import_box:
-        widgets.feedback(fb["level"], fb["text"])
+        show.feedback(fb["level"], fb["text"])
 
 if not cases:
     st.info(
@@ -194,7 +194,7 @@ if not selected:
 try:  # the whole comparison against the compute budget, before any case is computed
     budget.check_cases({n: cases[n] for n in selected})
 except budget.BudgetError as exc:
-    st.error(widgets.plain(str(exc)), icon=":material/speed:")
+    st.error(text.plain(str(exc)), icon=":material/speed:")
     st.stop()
 reports: dict[str, dict] = {}
 for name in selected:
@@ -202,7 +202,7 @@ for name in selected:
         reports[name] = cache.report_for(cases[name])
     except Exception as exc:  # noqa: BLE001 - never show a traceback
         st.error(
-            widgets.plain(short(f"Case “{name}” could not be evaluated: {exc}")),
+            text.plain(short(f"Case “{name}” could not be evaluated: {exc}")),
             icon=":material/error:",
         )
 
@@ -223,7 +223,7 @@ with tab_table:
         try:
             rows = cache.cached_comparison(cache.cases_key(sub)) if sub else []
         except Exception as exc:  # noqa: BLE001
-            st.error(widgets.plain(short(f"The comparison could not be built: {exc}")))
+            st.error(text.plain(short(f"The comparison could not be built: {exc}")))
             rows = []
         if rows:
             df = plots.comparison_frame(rows, ok, only_differences=only_diff)

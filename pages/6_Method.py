@@ -10,7 +10,7 @@ import streamlit as st
 
 from aerostat_core.io import rows_to_csv
 from aerostat_core.validation import short
-from app_ui import widgets
+from app_ui import show, text
 
 st.title("Method")
 st.caption(
@@ -301,7 +301,7 @@ with tab_val:
         ref = _reference_rows()
     except Exception as exc:  # noqa: BLE001 - never show a traceback
         ref = []
-        st.error(widgets.plain(short(f"The reference checks could not be run: {exc}")))
+        st.error(text.plain(short(f"The reference checks could not be run: {exc}")))
     if ref is None:
         st.info(
             "The live validation table needs `aerostat_core.reference`, which is not "
@@ -329,7 +329,7 @@ with tab_val:
         )
         n_ok = int(df["Within tolerance"].sum())
         kinds = df["Kind"].value_counts().to_dict()
-        c = widgets.metric_row(4)
+        c = show.metric_row(4)
         c[0].metric("Checks within tolerance", f"{n_ok} / {len(df)}")
         c[1].metric("Calibrated", kinds.get("calibrated", 0))
         c[2].metric("Predicted", kinds.get("predicted", 0))
@@ -366,9 +366,9 @@ with tab_val:
     try:
         med, worst, rows = _fielded_rows()
     except Exception as exc:  # noqa: BLE001 - never show a traceback
-        st.error(widgets.plain(short(f"The fielded-aerostat harness could not be run: {exc}")))
+        st.error(text.plain(short(f"The fielded-aerostat harness could not be run: {exc}")))
     else:
-        c = widgets.metric_row(2)
+        c = show.metric_row(2)
         c[0].metric("Median |hull-length error| [%]", f"{100 * med:.1f}",
                     help="Target: within 10 %.")
         c[1].metric("Worst |hull-length error| [%]", f"{100 * worst:.1f}",

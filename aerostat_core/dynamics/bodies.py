@@ -20,8 +20,8 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 
+from ..fields import number, validate
 from ..geometry import lamb_factors
-from .checks import check_number
 from .layout import T_ROWS
 
 #: Spacing of the aerodynamic tables [rad].
@@ -55,17 +55,14 @@ class PointAerostat:
     739.67
     """
 
-    mass: float = 71.6
-    volume: float = 120.0
-    drag_area: float = 1.0
-    added_mass_coefficient: float = 0.5
+    mass: float = number(71.6, "Moving mass", "kg", 0.0, 1e6, lo_open=True)
+    volume: float = number(120.0, "Displaced volume", "m3", 0.0, 1e7, lo_open=True)
+    drag_area: float = number(1.0, "Drag area C_D A", "m2", 0.0, 1e5)
+    added_mass_coefficient: float = number(0.5, "Added-mass coefficient C_a", "", 0.0, 5.0)
     unsteady_wind_inertia: bool = False
 
     def __post_init__(self) -> None:
-        check_number("PointAerostat", "mass", self.mass, 0.0, 1e6, "kg", lo_open=True)
-        check_number("PointAerostat", "volume", self.volume, 0.0, 1e7, "m3", lo_open=True)
-        check_number("PointAerostat", "drag_area", self.drag_area, 0.0, 1e5, "m2")
-        check_number("PointAerostat", "added_mass_coefficient", self.added_mass_coefficient, 0.0, 5.0)
+        validate(self)
 
     def net_lift(self, rho: float, g: float) -> float:
         """(rho V - M) g [N]."""

@@ -1,21 +1,17 @@
-"""Input checks shared by the dynamics dataclasses: one message format naming the field, the
-value and the valid range (``Owner.field = value is outside the valid range [lo, hi] unit``)."""
+"""Input checks of the dynamics arguments that are not dataclass fields (list items, function
+arguments). The dynamics dataclasses declare their fields in the field registry
+(:mod:`aerostat_core.fields`) and validate from it; both raise the same structured
+:class:`aerostat_core.validation.InputError` (``Owner.field = value is outside the valid range
+[lo, hi] unit``)."""
 
 from __future__ import annotations
 
-import math
+from ..validation import check_number as _check_number
 
 
 def check_number(
     owner: str, name: str, value, lo: float, hi: float, unit: str = "", lo_open: bool = False
 ) -> float:
-    """``float(value)`` if finite and in [lo, hi] ((lo, hi] with ``lo_open``), else ValueError."""
-    left = "(" if lo_open else "["
-    rng = f"{left}{lo:g}, {hi:g}] {unit}".rstrip()
-    try:
-        v = float(value)
-    except (TypeError, ValueError):
-        raise ValueError(f"{owner}.{name} = {value!r} is not a number; valid range {rng}") from None
-    if not math.isfinite(v) or v > hi or (v <= lo if lo_open else v < lo):
-        raise ValueError(f"{owner}.{name} = {value!r} is outside the valid range {rng}")
-    return v
+    """``float(value)`` if a finite number in [lo, hi] ((lo, hi] with ``lo_open``), else
+    :class:`~aerostat_core.validation.InputError` (a ``ValueError``)."""
+    return _check_number(owner, name, value, lo, hi, unit, lo_open=lo_open)

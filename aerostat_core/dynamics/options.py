@@ -3,8 +3,9 @@
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
+
+from ..fields import choice, integer, number, validate
 
 #: Extra status codes of the driver.
 STATUS_DRIVER = {
@@ -47,35 +48,17 @@ class SolverOptions:
         Refresh the Jacobian at least every this many accepted steps, valid [1, 10000].
     """
 
-    method: str = "trbdf2"
-    rtol: float = 1e-6
-    atol_position: float = 1e-5
-    atol_velocity: float = 1e-5
-    atol_angle: float = 1e-7
-    initial_step: float = 1e-3
-    max_step: float = 1.0
-    output_interval: float = 0.1
-    max_steps: int = 5_000_000
-    wall_time_limit: float = 300.0
-    jacobian_refresh: int = 50
+    method: str = choice("trbdf2", "Integration method", METHODS)
+    rtol: float = number(1e-6, "Relative tolerance", "", 1e-10, 1e-2)
+    atol_position: float = number(1e-5, "Absolute tolerance, positions", "m", 1e-12, 1.0)
+    atol_velocity: float = number(1e-5, "Absolute tolerance, velocities", "m/s", 1e-12, 1.0)
+    atol_angle: float = number(1e-7, "Absolute tolerance, angles", "rad", 1e-12, 1.0)
+    initial_step: float = number(1e-3, "Initial step", "s", 1e-9, 10.0)
+    max_step: float = number(1.0, "Largest step", "s", 1e-6, 100.0)
+    output_interval: float = number(0.1, "Output interval", "s", 1e-3, 10.0)
+    max_steps: int = integer(5_000_000, "Step budget", 10, 10**8)
+    wall_time_limit: float = number(300.0, "Wall-clock budget", "s", 1e-3, 1e5)
+    jacobian_refresh: int = integer(50, "Steps between Jacobian refreshes", 1, 10**4)
 
     def __post_init__(self) -> None:
-        if self.method not in METHODS:
-            raise ValueError(f"SolverOptions.method = {self.method!r}; valid options {METHODS}")
-        for name, lo, hi in (
-            ("rtol", 1e-10, 1e-2),
-            ("atol_position", 1e-12, 1.0),
-            ("atol_velocity", 1e-12, 1.0),
-            ("atol_angle", 1e-12, 1.0),
-            ("initial_step", 1e-9, 10.0),
-            ("max_step", 1e-6, 100.0),
-            ("output_interval", 1e-3, 10.0),
-            ("max_steps", 10, 1e8),
-            ("wall_time_limit", 1e-3, 1e5),
-            ("jacobian_refresh", 1, 1e4),
-        ):
-            v = getattr(self, name)
-            if not isinstance(v, (int, float)) or not math.isfinite(v) or v < lo or v > hi:
-                raise ValueError(
-                    f"SolverOptions.{name} = {v!r} is outside the valid range [{lo:g}, {hi:g}]"
-                )
+        validate(self)

@@ -35,7 +35,7 @@ from dataclasses import dataclass
 import numpy as np
 from numba import njit
 
-from .checks import check_number
+from ..fields import integer, number, validate
 from .layout import (
     P_CD,
     P_CDN,
@@ -56,10 +56,6 @@ from .wind import W_GUST_ON, W_TURB_ON, profile_factor, wind_point
 
 #: Largest axial stiffness used for an "inextensible" (EA = inf) tether [N].
 EA_INEXTENSIBLE = 1.0e8
-
-
-def _check(name: str, value, lo: float, hi: float, unit: str = "", lo_open=False) -> float:
-    return check_number("TetherModel", name, value, lo, hi, unit, lo_open)
 
 
 @dataclass(frozen=True)
@@ -101,31 +97,28 @@ class TetherModel:
     (10.0, 1414.21)
     """
 
-    length: float = 300.0
-    segments: int = 20
-    linear_density: float = 0.02
-    diameter: float = 0.004
-    axial_stiffness: float = 1.0e6
-    damping_ratio: float = 1.0
-    normal_drag_coefficient: float = 1.2
-    tangential_drag_coefficient: float = 0.01
+    length: float = number(300.0, "Tether length", "m", 1.0, 20000.0, lo_open=True)
+    segments: int = integer(20, "Tether segments", 2, 400, source="docs/dynamics.md §3.1")
+    linear_density: float = number(
+        0.02, "Tether linear density", "kg/m", 0.0, 10.0, lo_open=True, scale=1000.0,
+        display_unit="g/m")
+    diameter: float = number(
+        0.004, "Tether diameter", "m", 0.0, 0.2, lo_open=True, scale=1000.0, display_unit="mm")
+    axial_stiffness: float = number(
+        1.0e6, "Tether axial stiffness EA", "N", 0.0, 1e12, lo_open=True, allow_inf=True)
+    damping_ratio: float = number(
+        1.0, "Tether damping ratio", "", 0.0, 10.0, help="zeta of the segment's axial mode.",
+        source="MoorDyn BA/-zeta")
+    normal_drag_coefficient: float = number(
+        1.2, "Tether normal drag coefficient", "", 0.0, 3.0)
+    tangential_drag_coefficient: float = number(
+        0.01, "Tether tangential drag coefficient", "", 0.0, 0.5)
     air_buoyancy: bool = True
     drag: bool = True
     damper_compression: bool = False
 
     def __post_init__(self) -> None:
-        _check("length", self.length, 1.0, 20000.0, "m", lo_open=True)
-        n = _check("segments", self.segments, 2, 400)
-        if n != int(n):
-            raise ValueError(f"TetherModel.segments = {self.segments!r} must be an integer")
-        object.__setattr__(self, "segments", int(n))
-        _check("linear_density", self.linear_density, 0.0, 10.0, "kg/m", lo_open=True)
-        _check("diameter", self.diameter, 0.0, 0.2, "m", lo_open=True)
-        if self.axial_stiffness != math.inf:
-            _check("axial_stiffness", self.axial_stiffness, 0.0, 1e12, "N", lo_open=True)
-        _check("damping_ratio", self.damping_ratio, 0.0, 10.0)
-        _check("normal_drag_coefficient", self.normal_drag_coefficient, 0.0, 3.0)
-        _check("tangential_drag_coefficient", self.tangential_drag_coefficient, 0.0, 0.5)
+        validate(self)
 
     @classmethod
     def from_spec(cls, spec, length: float, segments: int = 20, damping_ratio: float = 1.0,

@@ -37,6 +37,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..deprecation import deprecated_method
+from ..fields import integer, number, validate
 from .checks import check_number as _check
 
 #: One knot [m/s] (international knot, 1852 m/h).
@@ -202,29 +203,22 @@ class DrydenTurbulence:
     True
     """
 
-    w20: float | None = DRYDEN_W20["moderate"]
-    seed: int = 1
-    sigma_u: float | None = None
-    sigma_w: float | None = None
-    max_frequency: float = 1.0
-    fade_in: float = 20.0
+    w20: float | None = number(
+        DRYDEN_W20["moderate"], "W20 (wind at 20 ft)", "m/s", 0.0, 60.0,
+        empty="the mean wind profile", source="MIL-HDBK-1797")
+    seed: int = integer(1, "Random seed", 0, 2**32 - 1)
+    sigma_u: float | None = number(
+        None, "Turbulence intensity σ_u", "m/s", 0.0, 20.0, empty="Dryden")
+    sigma_w: float | None = number(
+        None, "Turbulence intensity σ_w", "m/s", 0.0, 20.0, empty="Dryden")
+    max_frequency: float = number(1.0, "Highest turbulence frequency", "Hz", 0.05, 10.0)
+    fade_in: float = number(20.0, "Turbulence fade-in", "s", 0.0, 600.0)
     vertical: bool = True
     spatial: bool = True
-    level_spacing: float = 10.0
+    level_spacing: float = number(10.0, "Height-level spacing", "m", 2.0, 100.0)
 
     def __post_init__(self) -> None:
-        if self.w20 is not None:
-            _check("DrydenTurbulence", "w20", self.w20, 0.0, 60.0, "m/s")
-        s = _check("DrydenTurbulence", "seed", self.seed, 0, 2**32 - 1)
-        if s != int(s):
-            raise ValueError(f"DrydenTurbulence.seed = {self.seed!r} must be an integer")
-        object.__setattr__(self, "seed", int(s))
-        for name in ("sigma_u", "sigma_w"):
-            if getattr(self, name) is not None:
-                _check("DrydenTurbulence", name, getattr(self, name), 0.0, 20.0, "m/s")
-        _check("DrydenTurbulence", "max_frequency", self.max_frequency, 0.05, 10.0, "Hz")
-        _check("DrydenTurbulence", "fade_in", self.fade_in, 0.0, 600.0, "s")
-        _check("DrydenTurbulence", "level_spacing", self.level_spacing, 2.0, 100.0, "m")
+        validate(self)
 
     @classmethod
     def from_intensity(cls, intensity: str, **kw) -> DrydenTurbulence:

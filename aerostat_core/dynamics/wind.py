@@ -35,6 +35,7 @@ import numpy as np
 from numba import njit
 
 from ..deprecation import deprecated_method
+from ..fields import choice, number, validate
 from .checks import check_number as _check
 from .turbulence import (
     DRYDEN_W20,
@@ -107,17 +108,13 @@ class MeanProfile:
     1.6407
     """
 
-    kind: str = "uniform"
-    reference_height: float = 10.0
-    exponent: float = 1.0 / 7.0
-    roughness_length: float = 0.03
+    kind: str = choice("uniform", "Wind profile", PROFILE_KINDS)
+    reference_height: float = number(10.0, "Reference height", "m", 1.0, 5000.0)
+    exponent: float = number(1.0 / 7.0, "Power-law exponent", "", 0.0, 0.6)
+    roughness_length: float = number(0.03, "Roughness length", "m", 1e-5, 2.0)
 
     def __post_init__(self) -> None:
-        if self.kind not in PROFILE_KINDS:
-            raise ValueError(f"MeanProfile.kind = {self.kind!r}; valid options {PROFILE_KINDS}")
-        _check("MeanProfile", "reference_height", self.reference_height, 1.0, 5000.0, "m")
-        _check("MeanProfile", "exponent", self.exponent, 0.0, 0.6)
-        _check("MeanProfile", "roughness_length", self.roughness_length, 1e-5, 2.0, "m")
+        validate(self)
 
     def factor(self, z):
         """P(z) [-] at heights ``z`` [m] (broadcasts)."""
@@ -313,20 +310,15 @@ class Gust:
     §2.3). The convection speed U_c is the mean wind at the hull at t = 0.
     """
 
-    amplitude_u: float = 5.0
-    amplitude_w: float = 0.0
-    length: float = 60.0
-    start_time: float = 20.0
-    shape: str = "full"
+    amplitude_u: float = number(5.0, "Gust amplitude, horizontal", "m/s", -30.0, 30.0)
+    amplitude_w: float = number(0.0, "Gust amplitude, vertical", "m/s", -30.0, 30.0)
+    length: float = number(60.0, "Gust length d_m", "m", 1.0, 5000.0)
+    start_time: float = number(20.0, "Gust start time", "s", 0.0, 1e5)
+    shape: str = choice("full", "Gust shape", GUST_SHAPES)
     convected: bool = True
 
     def __post_init__(self) -> None:
-        _check("Gust", "amplitude_u", self.amplitude_u, -30.0, 30.0, "m/s")
-        _check("Gust", "amplitude_w", self.amplitude_w, -30.0, 30.0, "m/s")
-        _check("Gust", "length", self.length, 1.0, 5000.0, "m")
-        _check("Gust", "start_time", self.start_time, 0.0, 1e5, "s")
-        if self.shape not in GUST_SHAPES:
-            raise ValueError(f"Gust.shape = {self.shape!r}; valid options {GUST_SHAPES}")
+        validate(self)
 
     def rise_time(self, convection_speed: float) -> float:
         """Time for the gust to build up, d_m / U_c [s]."""

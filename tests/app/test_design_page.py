@@ -12,7 +12,7 @@ import pytest
 from aerostat_core import FABRICS, Requirement, design, thesis_baseline
 from aerostat_core.io import design_to_json, inputs_from_dict, inputs_to_dict
 from app_ui import state
-from app_ui.widgets import FIELD_BY_KEY
+from app_ui.form_model import FIELD_BY_KEY
 from tests.app.helpers import (
     COMPARE_PAGE,
     DESIGN_PAGE,

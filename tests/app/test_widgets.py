@@ -1,4 +1,4 @@
-"""Pure parts of the UI layer: form values <-> inputs (app_ui.widgets) and the plot/table
+"""Pure parts of the UI layer: form values <-> inputs (app_ui.form_model) and the plot/table
 builders (app_ui.plots), without a running app."""
 
 from __future__ import annotations
@@ -13,7 +13,8 @@ from aerostat_core import FABRICS, TETHERS, design, thesis_baseline
 from aerostat_core.io import inputs_from_dict, inputs_to_dict
 from aerostat_core.report import case_designs, comparison_rows, design_report, thesis_gui_cases
 from app_ui import plots
-from app_ui.widgets import (
+from app_ui.form_model import (
+    CHOICES,
     CUSTOM,
     FIELDS,
     GROUPS,
@@ -21,7 +22,7 @@ from app_ui.widgets import (
     WIDGET_KEYS,
     InputError,
     build_inputs,
-    error_group,
+    widget_for,
     widget_values,
 )
 
@@ -137,25 +138,65 @@ def test_fields_not_in_the_form_are_kept(base):
 
 
 @pytest.mark.parametrize(
-    "message, group",
+    "owner, field, key, group",
     [
-        ("Requirement.payload_mass = -1 kg is outside the valid range (0, 500] kg", "requirement"),
-        ("Requirement.altitude = 9000 m with site_elevation = ...", "requirement"),
-        ("Requirement.design_wind = 50 m/s is outside", "wind"),
-        ("LiftingGas.purity = 2 is outside", "gas"),
-        ("Configuration.gas_price = -1 USD/m3 is outside", "gas"),
-        ("Fabric.areal_density = 0 kg/m2 is outside", "materials"),
-        ("TetherSpec.diameter = 0 m is outside", "materials"),
-        ("HullSpec.fineness_ratio = 9 is outside", "configuration"),
-        ("FinSpec.position = 0.99 is outside", "configuration"),
-        ("FinSpec.taper_ratio = 2 is outside", "advanced"),
-        ("AeroModel.fin_efficiency = 3 is outside", "advanced"),
-        ("ConfluenceSpec.drop_ratio = 9 is outside", "advanced"),
-        ("something unexpected", "general"),
+        ("Requirement", "payload_mass", "in_payload", "requirement"),
+        ("Requirement", "altitude", "in_altitude", "requirement"),
+        ("Requirement", "design_wind", "in_design_wind", "wind"),
+        ("Requirement", "rules", "in_rules", "requirement"),
+        ("LiftingGas", "purity", "in_purity", "gas"),
+        ("Configuration", "gas_price", "in_gas_price", "gas"),
+        ("Fabric", "areal_density", "in_hull_gsm", "materials"),
+        ("TetherSpec", "diameter", "in_tether_dia", "materials"),
+        ("TetherSpec", "axial_stiffness", None, "materials"),  # not in the form: its siblings'
+        ("HullSpec", "fineness_ratio", "in_fineness", "configuration"),
+        ("FinSpec", "position", "in_fin_pos", "configuration"),
+        ("FinSpec", "count", "in_arrangement", "configuration"),  # set by the arrangement
+        ("FinSpec", "taper_ratio", "in_fin_taper", "advanced"),
+        ("AeroModel", "fin_efficiency", "in_eta_f", "advanced"),
+        ("ConfluenceSpec", "drop_ratio", "in_drop", "advanced"),
+        ("MissionSpec", "winch_speed", None, "general"),  # the Mission tab's input
+        ("Nothing", "known", None, "general"),
     ],
 )
-def test_error_group(message, group):
-    assert error_group(message) == group
+def test_an_engine_error_maps_to_its_widget_by_owner_and_field(owner, field, key, group):
+    assert widget_for(owner, field) == (key, group)
+
+
+def test_a_fabric_error_goes_to_the_fabric_whose_box_holds_the_value(base):
+    values = widget_values(base)
+    values["in_fin_fabric"] = CUSTOM
+    values["in_fin_gsm"] = "5000"  # 5 kg/m2, beyond the 2 kg/m2 limit
+    with pytest.raises(InputError) as err:
+        build_inputs(values, base)
+    assert err.value.key == "in_fin_gsm" and err.value.group == "materials"
+    assert str(err.value).startswith("Fin fabric areal density [g/m²]: 5000 is not allowed")
+
+
+def test_every_form_label_unit_scale_and_help_comes_from_the_registry():
+    from aerostat_core.fields import spec_for_path
+
+    for f in FIELDS:
+        entry = spec_for_path(f.path)
+        assert f.label.startswith(f"{entry.label} [{entry.spec.shown_unit}]")
+        assert f.scale == entry.spec.scale and f.help.startswith(entry.spec.help)
+    for c in CHOICES.values():
+        assert (c.label, c.help) == (spec_for_path(c.path).label, spec_for_path(c.path).spec.help)
+
+
+def test_no_label_string_of_the_registry_is_typed_again_in_the_ui():
+    """The facts live in aerostat_core; app_ui has no copy of a registry label. Not checked:
+    optimise_view (its variable table moves to fields.variable_info when the optimiser package
+    lands) and dynamics_view (its labels name the dynamics model's own inputs)."""
+    from pathlib import Path
+
+    from aerostat_core.fields import all_specs
+
+    skip = {"optimise_view.py", "dynamics_view.py"}
+    ui = {p.name: p.read_text() for p in Path("app_ui").glob("*.py") if p.name not in skip}
+    labels = {e.label for e in all_specs() if len(e.label) > 12}
+    copies = [(lab, n) for lab in labels for n, src in ui.items() if f'"{lab}' in src]
+    assert copies == [], copies
 
 
 # --- plots and tables --------------------------------------------------------------------------
@@ -306,13 +347,16 @@ def test_a_range_set_by_another_field_is_shown_in_its_words(base):
     assert err.value.group == "wind"
 
 
-def test_internal_names_are_replaced_by_labels():
-    from app_ui.widgets import humanise
-
-    text = humanise(
-        "Requirement.altitude = 9000 m with site_elevation = 5000 m ... HullSpec.volume"
+def test_a_cross_field_error_names_the_field_in_the_form_words(base):
+    values = widget_values(base)
+    values["in_design_wind"] = "15"
+    values["in_survival_wind"] = "12"  # below the design wind
+    with pytest.raises(InputError) as err:
+        build_inputs(values, base)
+    assert err.value.key == "in_survival_wind" and err.value.group == "wind"
+    assert str(err.value) == (
+        "Survival wind [m/s] (empty = rule set): 12 is not allowed; it must be between 15 and 60."
     )
-    assert text.startswith("Operating altitude [m] = 9000 m") and "Hull volume [m³]" in text
 
 
 def test_the_compute_budget_is_a_form_error(base):
@@ -328,9 +372,7 @@ def test_every_requirement_field_is_one_table_entry():
     from dataclasses import fields
 
     from aerostat_core import Requirement
-    from app_ui.widgets import CHOICES
-
-    paths = {f.path for f in FIELDS} | {c[0] for c in CHOICES.values()}
+    paths = {f.path for f in FIELDS} | {c.path for c in CHOICES.values()}
     # the mission inputs have their own form on the Mission tab (app_ui.mission_view)
     mission = {"payload_power", "power_via", "endurance_days", "deployment_days"}
     for fld in fields(Requirement):
@@ -340,7 +382,7 @@ def test_every_requirement_field_is_one_table_entry():
 
 
 def test_signed_never_shows_minus_zero():
-    from app_ui.widgets import signed
+    from app_ui.text import signed
 
     assert [signed(v) for v in (-0.04, -0.0, 0.04, -3.0, 2.25)] == [
         "0.0",
@@ -352,7 +394,7 @@ def test_signed_never_shows_minus_zero():
 
 
 def test_wind_lists_collapse_into_ranges():
-    from app_ui.widgets import speed_ranges
+    from app_ui.text import speed_ranges
 
     assert speed_ranges([0, 1, 2, 3, 4, 5, 17, 18, 19, 20], 1.0) == "0–5, 17–20"
     assert speed_ranges([0.0, 0.1, 0.2, 0.3, 5.0], 0.1) == "0–0.3, 5"

@@ -183,8 +183,8 @@ def test_comparison_rows_mark_the_differences():
     # display units: fabric in g/m2, fin position in % of length
     assert by_q["Hull fabric areal density [g/m²]"][names[0]] == pytest.approx(
         1000 * PRACTICE_FABRIC_AREAL_DENSITY)
-    assert by_q["Fin root LE position Δl_f [% of l]"][names[0]] == pytest.approx(68.0)
-    assert by_q["Hull volume (given; empty = sized) [m³]"][names[0]] == "auto"
+    assert by_q["Fin position Δl_f [% of hull length]"][names[0]] == pytest.approx(68.0)
+    assert by_q["Hull volume (empty = sized) [m³]"][names[0]] == "auto"
     sections = [r["section"] for r in rows]
     assert sections.index("input") > sections.index("result")
 

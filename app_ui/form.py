@@ -1,0 +1,198 @@
+"""Rendering of the design-input form (Streamlit): grouped, labelled widgets with units, one
+submit per change set. What the form shows and how its values convert is
+:mod:`app_ui.form_model`; labels, units and help come from the core's field registry.
+
+Call :func:`sync_widgets` before the form renders (or from a callback), then :func:`input_form`.
+"""
+
+from __future__ import annotations
+
+import copy
+from collections.abc import MutableMapping
+from typing import Any
+
+import streamlit as st
+
+from aerostat_core import FABRICS, TETHERS
+
+from .form_model import (
+    CHOICES,
+    CUSTOM,
+    ERROR_KEY,
+    FIELD_BY_KEY,
+    FIN_FABRIC_KEY,
+    GROUPS,
+    HULL_FABRIC_KEY,
+    LAYOUT,
+    SRC_KEY,
+    SUBMIT_KEY,
+    TETHER_KEY,
+    VOLUME_MODE_KEY,
+    VOLUME_MODES,
+    WIDGET_KEYS,
+    Field,
+    InputError,
+    build_inputs,
+    widget_values,
+)
+from .state import DESIGN_KEY, init_state, set_current_inputs
+from .text import plain
+
+
+def sync_widgets(state: MutableMapping[str, Any] | None = None, *, force: bool = False) -> None:
+    """Fill the form's widgets from the current inputs when those changed elsewhere (baseline
+    button, file import, another page) or when a widget value is missing. Call before the form
+    renders, or from a callback."""
+    s = st.session_state if state is None else state
+    init_state(s)
+    inputs = s[DESIGN_KEY]
+    missing = any(k not in s for k in WIDGET_KEYS)
+    if force or missing or s.get(SRC_KEY) != inputs:
+        previous = {k: s[k] for k in WIDGET_KEYS if k in s}
+        for k, v in widget_values(inputs, previous).items():
+            s[k] = v
+        s[SRC_KEY] = copy.deepcopy(inputs)
+
+
+def _on_submit() -> None:
+    s = st.session_state
+    values = {k: s[k] for k in WIDGET_KEYS if k in s}
+    try:
+        req, cfg = build_inputs(values, s[DESIGN_KEY])
+    except InputError as exc:
+        s[ERROR_KEY] = {"group": exc.group, "text": str(exc), "key": exc.key}
+        return
+    s.pop(ERROR_KEY, None)
+    set_current_inputs(req, cfg, s)  # written through to the workspace store
+    sync_widgets(s, force=True)  # show the canonical values (catalogue materials, rounding)
+
+
+def _group_error(group: str) -> None:
+    err = st.session_state.get(ERROR_KEY)
+    if err and err.get("group") == group:
+        st.error(plain(f"Not applied: {err['text']}"), icon=":material/error:")
+
+
+def _number(f: Field) -> None:
+    # A text box, parsed by parse_number: the browser's number box read "12,5" as 125 and showed
+    # an emptied box as 0.
+    st.text_input(
+        f.label,
+        key=f.key,
+        help=f.help,
+        placeholder="auto" if f.optional else "required",
+        persist_state="session",
+    )
+
+
+def _choice(key: str, horizontal: bool = False) -> None:
+    c = CHOICES[key]
+    options = dict(c.options)
+    if len(options) <= 3 and horizontal:
+        st.radio(
+            c.label,
+            list(options),
+            format_func=options.get,
+            key=key,
+            help=c.help,
+            horizontal=True,
+            persist_state="session",
+        )
+    else:
+        st.selectbox(
+            c.label,
+            list(options),
+            format_func=options.get,
+            key=key,
+            help=c.help,
+            persist_state="session",
+        )
+
+
+_GROUP_ICONS = {
+    "requirement": ":material/flag:",
+    "wind": ":material/air:",
+    "configuration": ":material/tune:",
+    "gas": ":material/bubble_chart:",
+    "materials": ":material/layers:",
+    "advanced": ":material/science:",
+}
+_EXPANDED = {"requirement", "wind", "configuration"}
+
+
+def _widget(key: str) -> None:
+    if key in FIELD_BY_KEY:
+        _number(FIELD_BY_KEY[key])
+    elif key in CHOICES:
+        _choice(key)
+    elif key == VOLUME_MODE_KEY:
+        st.radio(
+            "Hull volume",
+            list(VOLUME_MODES),
+            format_func=VOLUME_MODES.get,
+            key=VOLUME_MODE_KEY,
+            persist_state="session",
+            help="Given: use the volume below. Sized: the smallest hull that meets the "
+            "blow-by limit at the design wind with positive free lift.",
+        )
+    elif key in (HULL_FABRIC_KEY, FIN_FABRIC_KEY):
+        what = "Hull" if key == HULL_FABRIC_KEY else "Fin"
+        st.selectbox(
+            f"{what} fabric",
+            [*FABRICS, CUSTOM],
+            key=key,
+            persist_state="session",
+            help="Catalogue fabric (areal density in the name), or 'Custom' to use "
+            "the value below.",
+        )
+    elif key == TETHER_KEY:
+        st.selectbox(
+            "Tether",
+            [*TETHERS, CUSTOM],
+            key=TETHER_KEY,
+            persist_state="session",
+            help="Catalogue tether, or 'Custom' to use the values below.",
+        )
+
+
+def _submit_button(key: str) -> None:
+    st.form_submit_button(
+        "Update design",
+        type="primary",
+        on_click=_on_submit,
+        key=key,
+        icon=":material/refresh:",
+        width="stretch",
+    )
+
+
+def input_form() -> None:
+    """The grouped design-input form (one rerun per submit); an input the engine rejects is
+    reported inside its group and nothing is applied. The submit button comes first, so it is
+    in sight without scrolling, and again after the last group."""
+    sync_widgets()
+    err = st.session_state.get(ERROR_KEY)
+    with st.form("design_inputs_form", border=False, enter_to_submit=False):
+        _submit_button(SUBMIT_KEY)
+        with st.container():  # always present: the groups below keep their place
+            if err and err.get("group") == "general":
+                st.error(plain(f"Not applied: {err['text']}"), icon=":material/error:")
+            elif err:
+                st.warning(
+                    plain(f"Inputs not applied: see {GROUPS.get(err['group'], '')} below."),
+                    icon=":material/warning:",
+                )
+        for group, keys in LAYOUT.items():
+            has_error = bool(err and err.get("group") == group)
+            with st.expander(
+                GROUPS[group], expanded=group in _EXPANDED or has_error, icon=_GROUP_ICONS[group]
+            ):
+                with st.container():
+                    _group_error(group)
+                if group == "advanced":
+                    st.caption("Model coefficients with documented defaults (Method page).")
+                if group == "materials":
+                    st.caption("The custom values are used when 'Custom' is chosen above them.")
+                for key in keys:
+                    _widget(key)
+        _submit_button(SUBMIT_KEY + "_bottom")
