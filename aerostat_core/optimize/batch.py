@@ -12,6 +12,7 @@ from typing import Any
 
 import numpy as np
 
+from .. import fields
 from ..airframe import build_airframe
 from ..constraints import CONSTRAINTS as CONSTRAINT_TABLE
 from ..constraints import NAMES as CONSTRAINT_NAMES
@@ -27,11 +28,15 @@ from ..sizing import size_volume
 #: The thesis' design variables, in order.
 VARIABLES = ("fineness_ratio", "area_change", "position")
 
-#: Label, unit and the engine's valid range (HullSpec/FinSpec) of each design variable.
+#: Label, unit (of the value the optimiser works in, the input's own unit) and the engine's valid
+#: range of each design variable, all read from the field registry (docs/architecture.md §8).
 VARIABLE_INFO: dict[str, tuple[str, str, tuple[float, float]]] = {
-    "fineness_ratio": ("Fineness ratio f", "-", (1.5, 8.0)),
-    "area_change": ("Fin-area change ΔS_f", "%", (-50.0, 200.0)),
-    "position": ("Fin position Δl_f (root LE / l)", "-", (0.4, 0.95)),
+    name: (
+        fields.spec_for_path(fields.DESIGN_VARIABLES[name]).label,
+        fields.spec_for_path(fields.DESIGN_VARIABLES[name]).spec.unit or "-",
+        fields.variable_range(name),
+    )
+    for name in VARIABLES
 }
 
 #: Default bounds (docs/methods.md G6 with the fin area also allowed to shrink, to -50 %: the
