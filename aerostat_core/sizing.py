@@ -127,7 +127,7 @@ def _infeasible_reason(st, met, shape):
     return binding.astype(str), message.astype(str)
 
 
-def _tree(fn, *trees):
+def map_arrays(fn, *trees):
     """Apply ``fn`` to the array leaves of equal-structured result trees (frozen dataclasses,
     dicts, tuples); other leaves (floats, strings, specs) are taken from the first tree."""
     t = trees[0]
@@ -137,12 +137,12 @@ def _tree(fn, *trees):
         new = copy.copy(t)  # no __init__: the leaves were validated when first built
         for fld in dataclasses.fields(t):
             leaves = [getattr(x, fld.name) for x in trees]
-            object.__setattr__(new, fld.name, _tree(fn, *leaves))
+            object.__setattr__(new, fld.name, map_arrays(fn, *leaves))
         return new
     if isinstance(t, dict):
-        return {k: _tree(fn, *(x[k] for x in trees)) for k in t}
+        return {k: map_arrays(fn, *(x[k] for x in trees)) for k in t}
     if isinstance(t, tuple):
-        return tuple(_tree(fn, *xs) for xs in zip(*trees))
+        return tuple(map_arrays(fn, *xs) for xs in zip(*trees))
     return t
 
 
@@ -162,12 +162,12 @@ def _take(result, index, npts: int):
         idx = np.reshape(index, (1,) * (p + 1) + shape)
         return np.take_along_axis(b, idx, axis=p).squeeze(p)
 
-    return _tree(take, result)
+    return map_arrays(take, result)
 
 
 def _select(mask, a, b):
     """Result tree ``a`` where ``mask`` (batch shape) holds, else ``b``."""
-    return _tree(lambda x, y: x if x is y else np.where(mask, x, y), a, b)
+    return map_arrays(lambda x, y: x if x is y else np.where(mask, x, y), a, b)
 
 
 _TABLE = ("g", "margin", "value", "limit")
