@@ -154,12 +154,16 @@ def _take(result, index, npts: int):
     shape = np.shape(index)
     rank = len(shape)
 
+    one = int(index) if rank == 0 else None
+
     def take(a):
         p = a.ndim - rank - 1
         if p < 0 or a.shape[p] not in (1, npts):
             return a  # no volume axis (a per-design or a global quantity)
         if a.shape[p] == 1:
-            return np.take(a, 0, axis=p)
+            return a[(slice(None),) * p + (0,)]
+        if one is not None:
+            return a[(slice(None),) * p + (one,)]
         b = np.broadcast_to(a, a.shape[: p + 1] + shape)
         idx = np.reshape(index, (1,) * (p + 1) + shape)
         return np.take_along_axis(b, idx, axis=p).squeeze(p)
@@ -178,9 +182,12 @@ _TABLE = ("g", "margin", "value", "limit")
 def _take_state(st: ConstraintState, index, npts: int) -> ConstraintState:
     """The constraint table (columns last) and its evaluation at volume ``index``."""
     full = (npts,) + np.shape(index) + (len(NAMES),)
-    idx = np.asarray(index)[None, ..., None]
-    table = {k: np.take_along_axis(np.broadcast_to(getattr(st, k), full), idx, axis=0)[0]
-             for k in _TABLE}
+    if np.ndim(index) == 0:
+        table = {k: np.broadcast_to(getattr(st, k), full)[int(index)] for k in _TABLE}
+    else:
+        idx = np.asarray(index)[None, ..., None]
+        table = {k: np.take_along_axis(np.broadcast_to(getattr(st, k), full), idx, axis=0)[0]
+                 for k in _TABLE}
     return dataclasses.replace(st, **table, evaluation=_take(st.evaluation, index, npts))
 
 
@@ -309,7 +316,7 @@ def size_volume(req: Requirement, cfg: Configuration, fineness_ratio=None, area_
     viol = np.broadcast_to(np.clip(st.g, 0.0, None), met.shape).sum(axis=-1)
     j_grid = np.where(any_ok, k, np.argmin(viol, axis=0))
     volume = _GRID[j_grid]
-    final = _take_state(st, j_grid, n_grid)
+    final = None  # the state at the volume, gathered once from where it was evaluated
     lo_met = np.take_along_axis(met, np.maximum(k - 1, 0)[None, ..., None], axis=0)[0]
     refine = any_ok & (k > 0)
     if refine.any():
@@ -330,7 +337,11 @@ def size_volume(req: Requirement, cfg: Configuration, fineness_ratio=None, area_
         c_met = np.broadcast_to(cst.met, vs.shape + (len(NAMES),))
         prev_met = np.take_along_axis(c_met, np.maximum(first - 1, 0)[None, ..., None], axis=0)[0]
         volume = np.where(valid, np.take_along_axis(vs, first[None], axis=0)[0], volume)
-        final = _select_state(valid, _take_state(cst, first, vs.shape[0]), final)
+        if valid.all():
+            final = _take_state(cst, first, vs.shape[0])
+        elif valid.any():
+            final = _select_state(valid, _take_state(cst, first, vs.shape[0]),
+                                  _take_state(st, j_grid, n_grid))
         lo_met = np.where(valid[..., None], prev_met, lo_met)
         fall = refine & ~valid
         if fall.any():  # the nested rounds on those brackets, then [lo, hi] evaluated once
@@ -345,9 +356,13 @@ def size_volume(req: Requirement, cfg: Configuration, fineness_ratio=None, area_
                     req, cfg, lo[sel], hi[sel], f[sel], dsf[sel], pos[sel], rounds)
                 volume = np.array(volume)
                 volume[sel] = v_sub
+                if final is None:
+                    final = _take_state(st, j_grid, n_grid)
                 final = _scatter_state(final, sel, st_sub)
                 lo_met = np.array(lo_met)
                 lo_met[sel] = met_sub
+    if final is None:
+        final = _take_state(st, j_grid, n_grid)
     broken = np.argmax(~lo_met, axis=-1)
     bind_ok = np.where((k > 0) & ~lo_met.all(axis=-1), np.asarray(NAMES)[broken], "none")
     bind_bad, msg_bad = _infeasible_reason(st, met, shape)
