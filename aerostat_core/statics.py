@@ -233,7 +233,9 @@ def equilibrium(af: Airframe, aero: AeroModel, speed, iterations: int = 40) -> E
         f_hi = np.where(pos, np.where(side == 1, 0.5 * f_hi, f_hi), fx)
         side = np.where(pos, 1, -1)
         tiny = np.abs(fx) <= 1e-12 * (1.0 + np.abs(f_lo) + np.abs(f_hi))
-        if np.all((np.abs(hi - lo) < 1e-12) | tiny):
+        # columns without a stable root take the least-|moment| grid angle below: they have no
+        # bracket to converge, so they must not keep the others iterating to the limit
+        if np.all((np.abs(hi - lo) < 1e-12) | tiny | ~found):
             break
     alpha = x
     # where no stable root: the grid angle with the least |moment|
