@@ -77,8 +77,9 @@ def _state(req, cfg, volume, f, dsf, pos) -> ConstraintState:
     return constraint_state(req, cfg, build_airframe(req, cfg, volume, f, dsf, pos))
 
 
-def _infeasible_reason(st, met, shape):
-    """Binding name and message per design from the grid's per-constraint feasibility."""
+def _infeasible_reason(st, met, shape, skip=None):
+    """Binding name and message per design from the grid's per-constraint feasibility
+    (designs where ``skip`` holds, the feasible ones, get "none" and "")."""
     any_met = met.any(axis=0)  # (..., n): constraint met at some grid volume
     full = met.shape
     g = np.broadcast_to(st.g, full)
@@ -88,6 +89,8 @@ def _infeasible_reason(st, met, shape):
     binding = np.full(shape, "none", dtype=object)
     message = np.full(shape, "", dtype=object)
     for idx in np.ndindex(*shape):
+        if skip is not None and skip[idx]:
+            continue
         never = [NAMES[k] for k in range(len(NAMES)) if not any_met[idx + (k,)]]
         if never:
             binding[idx] = never[0]
@@ -365,7 +368,7 @@ def size_volume(req: Requirement, cfg: Configuration, fineness_ratio=None, area_
         final = _take_state(st, j_grid, n_grid)
     broken = np.argmax(~lo_met, axis=-1)
     bind_ok = np.where((k > 0) & ~lo_met.all(axis=-1), np.asarray(NAMES)[broken], "none")
-    bind_bad, msg_bad = _infeasible_reason(st, met, shape)
+    bind_bad, msg_bad = _infeasible_reason(st, met, shape, skip=any_ok)
     binding = np.where(any_ok, bind_ok, bind_bad)
     message = np.where(any_ok, "", msg_bad)
     bb = np.broadcast_to(final.value[..., NAMES.index("blow_by")], shape)
