@@ -195,6 +195,9 @@ def run_pages() -> list[tuple[str, str, Counter, float]]:
 
 
 def main() -> None:
+    from streamlit import logger
+
+    logger.set_log_level("error")  # "No runtime found" etc. of the headless runs
     found = install_counters()
     rows = run_pages()
     names = [n for _, n in TARGETS if n in found]
