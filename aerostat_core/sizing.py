@@ -60,7 +60,9 @@ class SizingResult:
     blow_by : ndarray
         Design-wind blow-by at ``volume`` [m].
     state : ConstraintState
-        The constraint table at ``volume`` (what design() and the optimiser report).
+        The constraint table at ``volume`` (what design() and the optimiser report), as
+        evaluated in the search: its ``evaluation`` (trim and tether at the design and survival
+        winds) and that evaluation's airframe are the sized design's.
     message : ndarray of str
         Plain-language reason where infeasible ("" where feasible).
     """
@@ -201,7 +203,7 @@ def _select_state(mask, a: ConstraintState, b: ConstraintState) -> ConstraintSta
 
 
 #: Inverse Vandermonde matrices of the cubic through four consecutive grid points u = o..o+3
-#: (u = 0 at grid[k-1], 1 at grid[k]; the grid is uniform in log volume), o = 0, -1, -2.
+#: (u = 0 at grid[k-1], 1 at grid[k]; the grid is uniform in log volume), o = 0, -1, -2, -3.
 _VANDERMONDE_INV = np.stack([
     np.linalg.inv(np.vander(np.arange(o, o + 4, dtype=float), 4, increasing=True))
     for o in (0, -1, -2, -3)
