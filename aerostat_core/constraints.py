@@ -284,6 +284,15 @@ class ConstraintState:
         return rows
 
 
+def _columns(parts, batch: tuple) -> np.ndarray:
+    """The per-constraint arrays as the columns of one array of shape batch + (n,) (one
+    broadcast for all of them, not one per column)."""
+    out = np.stack(np.broadcast_arrays(*(np.asarray(p, float) for p in parts)), axis=-1)
+    if out.shape[:-1] != batch:
+        out = np.array(np.broadcast_to(out, batch + out.shape[-1:]))
+    return out
+
+
 def constraint_state(req: Requirement, cfg: Configuration, af: Airframe) -> ConstraintState:
     """Evaluate the whole table for an airframe batch (one trim + tether solve at two winds).
 
@@ -310,17 +319,19 @@ def constraint_state(req: Requirement, cfg: Configuration, af: Airframe) -> Cons
     cols = []
     for c in CONSTRAINTS:
         if c.at == "static":
-            parts = [np.broadcast_to(np.asarray(x, float), full[1:]) for x in sq[c.name]]
+            parts = sq[c.name]
         else:
             i = 1 if c.at == "survival" else 0
             src = wq["safety_factor"] if c.name == "survival_safety_factor" else wq[c.name]
-            parts = [np.broadcast_to(np.asarray(x, float), full)[i] for x in src]
+            # the wind rows carry the speed axis first (wind_quantities broadcasts them)
+            parts = [x[i] if np.ndim(x) == len(full) else np.broadcast_to(x, full)[i]
+                     for x in src]
             if c.name == "survival_safety_factor":
                 lim = req.survival_safety_factor
-                v = parts[0]
+                v = np.asarray(parts[0], float)
                 parts = [v, np.full_like(v, lim), *_lower(v, lim)]
         cols.append(parts)
-    value, limit, g, margin = (np.stack([p[j] for p in cols], axis=-1) for j in range(4))
+    value, limit, g, margin = (_columns([p[j] for p in cols], full[1:]) for j in range(4))
     return ConstraintState(g=g, margin=margin, value=value, limit=limit,
                            design_wind=float(req.design_wind),
                            survival_wind=float(req.survival_wind), evaluation=ev)

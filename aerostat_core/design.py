@@ -3,7 +3,8 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from collections.abc import Mapping
+from dataclasses import dataclass, fields
 
 import numpy as np
 
@@ -15,13 +16,109 @@ from .cost import gas_fill_cost
 from .inputs import Configuration, Requirement
 from .mass import ITEM_NAMES
 from .mission import MissionReport, mission_report
-from .performance import PerformanceTable, cm_curve, evaluate, performance_table, wind_speeds
+from .performance import (
+    Evaluation,
+    PerformanceTable,
+    cm_curve,
+    evaluate,
+    performance_table,
+    wind_speeds,
+)
 from .presets import rules_configuration
-from .sizing import SizingResult, size_volume
+from .sizing import SizingResult, map_arrays, size_volume
 
 
 def _f(x) -> float:
     return float(np.asarray(x).reshape(-1)[0])
+
+
+class FrozenMapping(Mapping):
+    """Read-only mapping view of a frozen report dataclass (``report["key"]`` as before the
+    dataclass; :meth:`to_dict` is the plain-data form). Subclasses define ``_view()``."""
+
+    def _view(self) -> dict:  # pragma: no cover - overridden
+        raise NotImplementedError
+
+    def __getitem__(self, key: str):
+        return self._view()[key]
+
+    def __iter__(self):
+        return iter(self._view())
+
+    def __len__(self) -> int:
+        return len(self._view())
+
+    def keys(self):
+        return self._view().keys()
+
+    def items(self):
+        return self._view().items()
+
+    def values(self):
+        return self._view().values()
+
+
+@dataclass(frozen=True)
+class MissionSummary:
+    """Mission headline numbers (aerostat_core.mission): ballonet volume [m3], days until the
+    free-lift margin is used up (None: never), helium top-up per deployment [m3], envelope
+    stress margin [-] (strength / required - 1), winch pull [N] and winch power [W]."""
+
+    ballonet_volume_m3: float
+    days_to_top_up: float | None
+    helium_top_up_m3: float
+    envelope_stress_margin: float
+    winch_pull_N: float
+    winch_power_W: float
+
+    def to_dict(self) -> dict:
+        return {f.name: getattr(self, f.name) for f in fields(self)}
+
+
+@dataclass(frozen=True, eq=True)
+class DesignSummary(FrozenMapping):
+    """Headline numbers of a design, SI units in the names (the CLI ``design --json`` keys).
+
+    ``feasible``: every constraint of the table met; ``binding_constraint``: what sets the
+    size (``"given volume"`` when the volume was given); ``violations``: plain-language
+    reasons; ``rules``: the rule set; ``mission``: the mission rows (None: not computed, and
+    then absent from :meth:`to_dict`). Read it as attributes or, as before, ``s["volume_m3"]``.
+    """
+
+    volume_m3: float
+    length_m: float
+    diameter_m: float
+    total_mass_kg: float
+    gross_buoyancy_N: float
+    free_lift_N: float
+    free_lift_kg: float
+    percent_static_lift: float
+    design_wind_m_s: float
+    blow_by_at_design_wind_m: float
+    alpha_at_design_wind_deg: float
+    tension_top_at_design_wind_N: float
+    safety_factor_at_design_wind: float
+    gas_cost_USD: float
+    feasible: bool
+    hull_mass_kg: float
+    tether_mass_kg: float
+    altitude_loss_m: float
+    survival_wind_m_s: float
+    safety_factor_at_survival_wind: float
+    binding_constraint: str
+    violations: tuple[str, ...]
+    rules: str
+    mission: MissionSummary | None = None
+
+    def to_dict(self) -> dict:
+        """The summary as a plain dict (JSON types: violations a list), mission keys last."""
+        out = {f.name: getattr(self, f.name) for f in fields(self) if f.name != "mission"}
+        out["violations"] = list(self.violations)
+        if self.mission is not None:
+            out.update(self.mission.to_dict())
+        return out
+
+    _view = to_dict
 
 
 @dataclass(frozen=True)
@@ -107,6 +204,9 @@ class Design:
 
         Re-trims the aerostat at that speed and marches the tether (same model as the sweep).
         """
+        if float(speed) == float(self.constraints.design_wind):  # solved with the table
+            t = self.constraints.evaluation.tether
+            return t.x[:, 0], t.z[:, 0]
         ev = evaluate(self.requirement, self.configuration, self.airframe, float(speed))
         return ev.tether.x, ev.tether.z
 
@@ -145,55 +245,68 @@ class Design:
         rows.append({"item": "total", "mass_kg": tot, "share_pct": 100.0})
         return rows
 
-    def summary(self) -> dict:
-        """Headline numbers (floats, SI units in the keys)."""
+    def summary(self) -> DesignSummary:
+        """Headline numbers (floats, SI units in the names): :class:`DesignSummary`."""
         dp = self.design_point
-        return {
-            "volume_m3": self.volume,
-            "length_m": _f(self.airframe.hull.length),
-            "diameter_m": _f(self.airframe.hull.diameter),
-            "total_mass_kg": self.total_mass,
-            "gross_buoyancy_N": self.buoyancy,
-            "free_lift_N": self.free_lift,
-            "free_lift_kg": self.free_lift_kg,
-            "percent_static_lift": self.percent_static_lift,
-            "design_wind_m_s": self.requirement.design_wind,
-            "blow_by_at_design_wind_m": dp["blow_by_m"],
-            "alpha_at_design_wind_deg": dp["alpha_eq_deg"],
-            "tension_top_at_design_wind_N": dp["tension_top_N"],
-            "safety_factor_at_design_wind": dp["safety_factor"],
-            "gas_cost_USD": self.gas_cost,
-            "feasible": self.feasible,
-            "hull_mass_kg": _f(self.airframe.mass.items["hull"]),
-            "tether_mass_kg": _f(self.airframe.mass.items["tether"]),
-            "altitude_loss_m": dp["altitude_loss_m"],
-            "survival_wind_m_s": self.requirement.survival_wind,
-            "safety_factor_at_survival_wind": self.constraints.value[
+        return DesignSummary(
+            volume_m3=float(self.volume),
+            length_m=_f(self.airframe.hull.length),
+            diameter_m=_f(self.airframe.hull.diameter),
+            total_mass_kg=self.total_mass,
+            gross_buoyancy_N=self.buoyancy,
+            free_lift_N=self.free_lift,
+            free_lift_kg=self.free_lift_kg,
+            percent_static_lift=self.percent_static_lift,
+            design_wind_m_s=self.requirement.design_wind,
+            blow_by_at_design_wind_m=dp["blow_by_m"],
+            alpha_at_design_wind_deg=dp["alpha_eq_deg"],
+            tension_top_at_design_wind_N=dp["tension_top_N"],
+            safety_factor_at_design_wind=dp["safety_factor"],
+            gas_cost_USD=self.gas_cost,
+            feasible=self.feasible,
+            hull_mass_kg=_f(self.airframe.mass.items["hull"]),
+            tether_mass_kg=_f(self.airframe.mass.items["tether"]),
+            altitude_loss_m=dp["altitude_loss_m"],
+            survival_wind_m_s=self.requirement.survival_wind,
+            safety_factor_at_survival_wind=self.constraints.value[
                 CONSTRAINT_NAMES.index("survival_safety_factor")].item(),
-            "binding_constraint": (str(np.asarray(self.sizing.binding).reshape(-1)[0])
-                                   if self.sizing is not None else "given volume"),
-            "violations": list(self.violations),
-            "rules": self.requirement.rules,
-            **self._mission_summary(),
-        }
+            binding_constraint=(str(np.asarray(self.sizing.binding).reshape(-1)[0])
+                                if self.sizing is not None else "given volume"),
+            violations=tuple(self.violations),
+            rules=self.requirement.rules,
+            mission=self._mission_summary(),
+        )
 
-    def _mission_summary(self) -> dict:
+    def _mission_summary(self) -> MissionSummary | None:
         m = self.mission
         if m is None:
-            return {}
+            return None
         fin = lambda x: None if not np.isfinite(x) else float(x)  # noqa: E731 - JSON has no inf
-        return {
-            "ballonet_volume_m3": m.ballonet_volume,
-            "days_to_top_up": fin(m.days_to_top_up),
-            "helium_top_up_m3": m.helium_top_up,
-            "envelope_stress_margin": m.envelope_stress_margin,
-            "winch_pull_N": m.winch_pull,
-            "winch_power_W": m.winch.power,
-        }
+        return MissionSummary(
+            ballonet_volume_m3=m.ballonet_volume,
+            days_to_top_up=fin(m.days_to_top_up),
+            helium_top_up_m3=m.helium_top_up,
+            envelope_stress_margin=m.envelope_stress_margin,
+            winch_pull_N=m.winch_pull,
+            winch_power_W=m.winch.power,
+        )
 
     def constraint_rows(self) -> list[dict]:
         """The constraint table at this design: value, limit, margin (own unit) and met."""
         return self.constraints.rows()
+
+
+def _append_speed(ev: Evaluation, other: Evaluation) -> Evaluation:
+    """``ev`` (one design over speeds: the speed axis last) with the first speed of ``other``
+    appended (leaves without a speed axis, as the airframe, are shared)."""
+    n = np.size(ev.speed)
+
+    def cat(a, b):
+        if a is b or a.ndim == 0 or a.shape[-1] != n:
+            return a
+        return np.concatenate([a, b[..., :1]], axis=-1)
+
+    return map_arrays(cat, ev, other)
 
 
 def design(req: Requirement | None = None, cfg: Configuration | None = None) -> Design:
@@ -226,23 +339,21 @@ def design(req: Requirement | None = None, cfg: Configuration | None = None) -> 
     budget.check_design(req, cfg)
     sizing = None
     if cfg.hull.volume is None:
+        # the search evaluated the table (trim + tether at the design and survival winds) at
+        # the volume it chose: that airframe and state are the design's
         sizing = size_volume(req, cfg)
         volume = _f(sizing.volume)
+        state = sizing.state
+        af = state.evaluation.airframe
     else:
         volume = float(cfg.hull.volume)
-    af = build_airframe(req, cfg, volume)
-    state = sizing.state if sizing is not None else constraint_state(req, cfg, af)
+        af = build_airframe(req, cfg, volume)
+        state = constraint_state(req, cfg, af)
     speeds = wind_speeds(req)
-    all_speeds = np.append(speeds, req.design_wind)
-    ev = evaluate(req, cfg, af, all_speeds)
-    table_all = performance_table(ev, wind_flags(req, cfg, ev))
-    rows = table_all.rows()
-    design_point = rows[-1]
-    n = speeds.size
-    table = PerformanceTable(**{
-        k: (v[:n] if isinstance(v, np.ndarray) else {kk: vv[:n] for kk, vv in v.items()})
-        for k, v in table_all.__dict__.items()
-    })
+    ev = evaluate(req, cfg, af, speeds)
+    table = performance_table(ev, wind_flags(req, cfg, ev))
+    at_winds = state.evaluation  # [design, survival] wind: the design point is its first row
+    design_point = performance_table(at_winds, wind_flags(req, cfg, at_winds)).rows()[0]
     a_deg, cm = cm_curve(af, cfg, req.design_wind if req.design_wind > 0 else 10.0)
     state = ConstraintState(
         g=np.asarray(state.g).reshape(-1), margin=np.asarray(state.margin).reshape(-1),
@@ -253,7 +364,8 @@ def design(req: Requirement | None = None, cfg: Configuration | None = None) -> 
     if sizing is not None and not bool(np.asarray(sizing.feasible).reshape(-1)[0]):
         violations.append(str(np.asarray(sizing.message).reshape(-1)[0]))
     violations += state.messages()
-    mission = mission_report(req, cfg, af, state, ev, cfg.gas_price_value)
+    # the mission's sweep includes the design wind (its reel-in wind may be that speed)
+    mission = mission_report(req, cfg, af, state, _append_speed(ev, at_winds), cfg.gas_price_value)
     return Design(
         requirement=req,
         configuration=cfg,
@@ -263,8 +375,8 @@ def design(req: Requirement | None = None, cfg: Configuration | None = None) -> 
         airframe=af,
         performance=table,
         design_point=design_point,
-        tether_x=ev.tether.x[:, :n],
-        tether_z=ev.tether.z[:, :n],
+        tether_x=ev.tether.x,
+        tether_z=ev.tether.z,
         cm_alpha_deg=a_deg,
         cm=np.asarray(cm, float),
         gas_cost=_f(gas_fill_cost(volume, cfg.gas_price_value)),

@@ -13,12 +13,14 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping
+from dataclasses import dataclass, fields
 from typing import Any
 
 import numpy as np
 
-from . import budget, fields
-from .design import Design, design
+from . import budget
+from .design import Design, DesignSummary, FrozenMapping, design
+from .fields import report_table
 from .fins import ARRANGEMENT_ANGLES_DEG
 from .geometry import radius
 from .inputs import Requirement
@@ -33,7 +35,7 @@ from .shapes import profile_radius_ratio
 #: Every input field by dotted path: (label, display unit, display scale from SI, CSV unit token),
 #: from the field registry (aerostat_core.fields). ``display = SI * scale``. Unknown paths fall
 #: back to their path as label and no unit (see :func:`input_field_info`).
-INPUT_FIELDS: dict[str, tuple[str, str, float, str]] = fields.report_table()
+INPUT_FIELDS: dict[str, tuple[str, str, float, str]] = report_table()
 
 
 def input_field_info(path: str) -> tuple[str, str, float, str]:
@@ -232,33 +234,95 @@ def tether_profile_rows(tether: Mapping[str, Any]) -> list[dict[str, float]]:
     ]
 
 
-def design_report(d: Design) -> dict[str, Any]:
-    """Everything the design page shows, as plain data (lists, floats, numpy arrays).
+@dataclass(frozen=True)
+class DesignReport(FrozenMapping):
+    """Everything the design page shows, as plain data (the core-to-UI contract).
 
-    Keys: ``summary`` (Design.summary()), ``violations`` (list of str), ``feasible``, ``sized``,
-    ``geometry_rows``, ``mass_rows``, ``performance_rows``, ``perf`` (dict of arrays: wind_speed,
-    alpha_eq, dynamic_lift, drag, blow_by, flying_height, tension_top, tension_winch,
-    safety_factor, limited, and ``flag_text`` per row), ``cm`` (alpha_deg, cm, alpha_eq_deg at the
-    design wind), ``tether`` (x, z with shape (nodes, winds), wind_speed, and ``design``: the
-    profile at the design wind), ``hull`` (a1, a2, b,
-    length, diameter, xi_cb), ``fins`` (list of 3-D outlines, arrangement), ``points`` (cb, cg,
-    c: (xi, z)), ``confluence_lines``, ``limits`` (blow_by_limit, design_wind,
-    min_safety_factor, altitude, stall_deg), ``inputs`` (the inputs dict).
+    Attributes
+    ----------
+    summary : DesignSummary
+        Headline numbers (:meth:`Design.summary`).
+    constraints : list of dict
+        The constraint table rows (:meth:`ConstraintState.rows`).
+    violations : tuple of str
+    feasible, sized : bool
+    geometry_rows, mass_rows, performance_rows : list of dict
+        Table rows, units in the keys.
+    perf : dict
+        Arrays versus wind: wind_speed [m/s], alpha_eq [deg], dynamic_lift, drag [N],
+        blow_by, flying_height [m], tension_top, tension_winch [N], safety_factor [-],
+        limited (bool), and ``flag_text`` per row.
+    cm : dict
+        alpha_deg, cm (C_m about the confluence point), alpha_eq_deg and ``wind`` [m/s].
+    tether : dict
+        x, z [m] with shape (nodes, winds), wind_speed [m/s], and ``design``: the profile at
+        the design wind (x, z, wind).
+    shape : str
+        Hull shape name.
+    hull : dict
+        a1, a2, b, length, diameter, xi_cb [m].
+    fins : dict
+        ``outlines`` (3-D corners of each fin [m]) and ``arrangement``.
+    points : dict
+        cb, cg, c: (xi, z) [m].
+    confluence_lines : list of ndarray
+    limits : dict
+        blow_by_limit [m], design_wind [m/s], min_safety_factor [-], altitude [m],
+        stall_deg [deg].
+    inputs : dict
+        The inputs (:func:`aerostat_core.io.inputs_to_dict`).
+
+    ``report["summary"]`` etc. still read as before; :meth:`to_dict` gives the plain dict.
     """
+
+    summary: DesignSummary
+    constraints: list
+    violations: tuple
+    feasible: bool
+    sized: bool
+    geometry_rows: list
+    mass_rows: list
+    performance_rows: list
+    perf: dict
+    cm: dict
+    tether: dict
+    shape: str
+    hull: dict
+    fins: dict
+    points: dict
+    confluence_lines: list
+    limits: dict
+    inputs: dict
+
+    def _view(self) -> dict:
+        out = {f.name: getattr(self, f.name) for f in fields(self)}
+        out["violations"] = list(self.violations)
+        return out
+
+    def to_dict(self) -> dict[str, Any]:
+        """The report as the plain dict of before (``summary`` a dict too)."""
+        out = self._view()
+        out["summary"] = self.summary.to_dict()
+        return out
+
+
+def design_report(d: Design) -> DesignReport:
+    """Everything the design page shows (:class:`DesignReport`), from the design as computed
+    (nothing is solved again: the design-wind tether comes with the constraint table)."""
     p = d.performance
     req, cfg = d.requirement, d.configuration
     h, af = d.airframe.hull, d.airframe
     prow = performance_rows(d)
-    return {
-        "summary": d.summary(),
-        "constraints": d.constraint_rows(),
-        "violations": list(d.violations),
-        "feasible": bool(d.feasible),
-        "sized": bool(d.sized),
-        "geometry_rows": d.geometry_rows(),
-        "mass_rows": d.mass_rows(),
-        "performance_rows": prow,
-        "perf": {
+    return DesignReport(
+        summary=d.summary(),
+        constraints=d.constraint_rows(),
+        violations=tuple(d.violations),
+        feasible=bool(d.feasible),
+        sized=bool(d.sized),
+        geometry_rows=d.geometry_rows(),
+        mass_rows=d.mass_rows(),
+        performance_rows=prow,
+        perf={
             "wind_speed": np.asarray(p.wind_speed, float),
             "alpha_eq": np.asarray(p.alpha_eq, float),
             "dynamic_lift": np.asarray(p.dynamic_lift, float),
@@ -271,20 +335,20 @@ def design_report(d: Design) -> dict[str, Any]:
             "limited": np.asarray(p.limited, bool),
             "flag_text": [r["flags"] for r in prow],
         },
-        "cm": {
+        cm={
             "alpha_deg": np.asarray(d.cm_alpha_deg, float),
             "cm": np.asarray(d.cm, float),
             "alpha_eq_deg": float(d.design_point["alpha_eq_deg"]),
             "wind": float(req.design_wind if req.design_wind > 0 else 10.0),
         },
-        "tether": {
+        tether={
             "x": np.asarray(d.tether_x, float),
             "z": np.asarray(d.tether_z, float),
             "wind_speed": np.asarray(p.wind_speed, float),
             "design": _design_wind_profile(d),
         },
-        "shape": h.shape,
-        "hull": {
+        shape=h.shape,
+        hull={
             "a1": _f(h.a1),
             "a2": _f(h.a2),
             "b": _f(h.b),
@@ -292,22 +356,22 @@ def design_report(d: Design) -> dict[str, Any]:
             "diameter": _f(h.diameter),
             "xi_cb": _f(h.xi_cb),
         },
-        "fins": {"outlines": fin_outlines(d), "arrangement": cfg.fins.arrangement},
-        "points": {
+        fins={"outlines": fin_outlines(d), "arrangement": cfg.fins.arrangement},
+        points={
             "cb": (_f(h.xi_cb), 0.0),
             "cg": (_f(af.mass.xi_cg), _f(af.mass.z_cg)),
             "c": (_f(af.xi_c), _f(af.z_c)),
         },
-        "confluence_lines": confluence_lines(d),
-        "limits": {
+        confluence_lines=confluence_lines(d),
+        limits={
             "blow_by_limit": float(req.blow_by_limit),
             "design_wind": float(req.design_wind),
             "min_safety_factor": float(req.min_tether_safety_factor),
             "altitude": float(req.altitude),
             "stall_deg": float(cfg.aero.fin_stall_angle_deg),
         },
-        "inputs": inputs_to_dict(req, cfg),
-    }
+        inputs=inputs_to_dict(req, cfg),
+    )
 
 
 # --------------------------------------------------------------------------------------------
@@ -368,9 +432,8 @@ def comparison_rows(designs: Mapping[str, Design]) -> list[dict[str, Any]]:
     summaries = {n: d.summary() for n, d in designs.items()}
     for key, label, unit in SUMMARY_FIELDS:
         add("result", label, unit, [summaries[n].get(key) for n in names])
-    for n, d in designs.items():
-        summaries[n]["violations"] = "; ".join(d.violations) if d.violations else "none"
-    add("result", "Requirements not met", "", [summaries[n]["violations"] for n in names])
+    not_met = ["; ".join(d.violations) if d.violations else "none" for d in designs.values()]
+    add("result", "Requirements not met", "", not_met)
     flats = {
         n: flatten_inputs(inputs_to_dict(d.requirement, d.configuration))
         for n, d in designs.items()
@@ -397,20 +460,25 @@ def _differs(values: list[Any]) -> bool:
     return False
 
 
-def cases_rows(cases: Mapping[str, Mapping[str, Any]]) -> list[dict[str, Any]]:
+def cases_rows(
+    cases: Mapping[str, Mapping[str, Any]], designs: Mapping[str, Design] | None = None
+) -> list[dict[str, Any]]:
     """One tidy table of every saved case: one row per (case, wind speed).
 
     Columns: ``case``; every input (``payload_mass_kg``, ``hull_fabric_areal_density_kg_m2``,
     ... in SI units, an empty cell for "auto"); the headline results (``volume_m3``,
     ``total_mass_kg``, ...; repeated on each row of the case); then the performance columns of
     that wind speed (``wind_speed_m_s``, ``blow_by_m``, ...). Units are in the column names.
+    ``designs`` (name -> Design of those cases, e.g. from a cache) avoids designing them again.
     """
     rows: list[dict[str, Any]] = []
-    for name, d in case_designs(cases).items():
+    if designs is None:
+        designs = case_designs(cases)
+    for name, d in designs.items():
         base: dict[str, Any] = {"case": name}
         for path, value in flatten_inputs(inputs_to_dict(d.requirement, d.configuration)).items():
             base[csv_column(path, input_field_info(path)[3])] = _csv_value(value)
-        summary = d.summary()
+        summary = d.summary().to_dict()
         base.update({k: v for k, v in summary.items() if k != "design_wind_m_s"})
         base["violations"] = "; ".join(d.violations)
         for prow in performance_rows(d):
@@ -418,9 +486,11 @@ def cases_rows(cases: Mapping[str, Mapping[str, Any]]) -> list[dict[str, Any]]:
     return rows
 
 
-def cases_csv(cases: Mapping[str, Mapping[str, Any]]) -> str:
+def cases_csv(
+    cases: Mapping[str, Mapping[str, Any]], designs: Mapping[str, Design] | None = None
+) -> str:
     """CSV text of :func:`cases_rows` (header from the first case; every case shares it)."""
-    rows = cases_rows(cases)
+    rows = cases_rows(cases, designs)
     if not rows:
         return ""
     header: list[str] = []
@@ -458,6 +528,7 @@ def thesis_gui_cases() -> dict[str, dict[str, Any]]:
 
 __all__ = [
     "INPUT_FIELDS",
+    "DesignReport",
     "SUMMARY_FIELDS",
     "case_designs",
     "cases_csv",

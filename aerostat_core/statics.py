@@ -170,6 +170,10 @@ def weathervane_slope(af: Airframe, aero: AeroModel, alpha, speed, cd0=None, h: 
 ALPHA_GRID = np.radians(np.arange(-30.0, 60.01, 1.0))
 #: Wider grid searched only where the usual one holds no stable root [rad] (J&D: |alpha| < 90).
 ALPHA_GRID_WIDE = np.radians(np.arange(-80.0, 80.01, 1.0))
+# The wide grid is the usual one with angles added below and above (the same floats).
+_WIDE_BELOW = int(np.sum(ALPHA_GRID_WIDE < ALPHA_GRID[0]))
+_WIDE_OUTSIDE = (ALPHA_GRID_WIDE < ALPHA_GRID[0]) | (ALPHA_GRID_WIDE > ALPHA_GRID[-1])
+assert np.array_equal(ALPHA_GRID_WIDE[~_WIDE_OUTSIDE], ALPHA_GRID)
 
 
 @dataclass(frozen=True)
@@ -203,9 +207,16 @@ def equilibrium(af: Airframe, aero: AeroModel, speed, iterations: int = 40) -> E
     speed = np.asarray(speed, float)
     shape = np.broadcast(af.hull.length, speed).shape
     cd0 = axial_drag_coefficient(af, aero, speed)
+    m_first = None
     for alphas in (ALPHA_GRID, ALPHA_GRID_WIDE):
         grid = alphas.reshape((-1,) + (1,) * len(shape))
-        m = moment_about_confluence(af, aero, grid, speed, cd0) * np.ones((1,) + shape)
+        if m_first is None:
+            m = moment_about_confluence(af, aero, grid, speed, cd0) * np.ones((1,) + shape)
+            m_first = m
+        else:  # the wide grid holds the first one: only its other angles are new
+            outside = grid[_WIDE_OUTSIDE]
+            m_out = moment_about_confluence(af, aero, outside, speed, cd0) * np.ones((1,) + shape)
+            m = np.concatenate([m_out[:_WIDE_BELOW], m_first, m_out[_WIDE_BELOW:]])
         down = (m[:-1] > 0.0) & (m[1:] <= 0.0)
         mid = 0.5 * (grid[:-1] + grid[1:]) * np.ones((1,) + shape)
         score = np.where(down, np.abs(mid), np.inf)
@@ -233,7 +244,9 @@ def equilibrium(af: Airframe, aero: AeroModel, speed, iterations: int = 40) -> E
         f_hi = np.where(pos, np.where(side == 1, 0.5 * f_hi, f_hi), fx)
         side = np.where(pos, 1, -1)
         tiny = np.abs(fx) <= 1e-12 * (1.0 + np.abs(f_lo) + np.abs(f_hi))
-        if np.all((np.abs(hi - lo) < 1e-12) | tiny):
+        # columns without a stable root take the least-|moment| grid angle below: they have no
+        # bracket to converge, so they must not keep the others iterating to the limit
+        if np.all((np.abs(hi - lo) < 1e-12) | tiny | ~found):
             break
     alpha = x
     # where no stable root: the grid angle with the least |moment|

@@ -128,14 +128,17 @@ def march(
     inv_ea = 1.0 / spec.axial_stiffness
     w = weight_per_length
     h = 0.5 * ds
+    tx_i, tz_i, x_i, z_i = tx[0], tz[0], x[0], z[0]  # the running node, kept as locals
+    u_i = u_nodes[0]
     for i in range(segments):
-        fx1, fz1, cx1, cz1 = _line_load(tx[i], tz[i], u_nodes[i], kn, kt, w, inv_ea)
-        fx2, fz2, cx2, cz2 = _line_load(tx[i] + ds * fx1, tz[i] + ds * fz1, u_nodes[i + 1],
-                                        kn, kt, w, inv_ea)
-        tx[i + 1] = tx[i] + h * (fx1 + fx2)
-        tz[i + 1] = tz[i] + h * (fz1 + fz2)
-        x[i + 1] = x[i] - h * (cx1 + cx2)
-        z[i + 1] = z[i] - h * (cz1 + cz2)
+        u_j = u_nodes[i + 1]
+        fx1, fz1, cx1, cz1 = _line_load(tx_i, tz_i, u_i, kn, kt, w, inv_ea)
+        fx2, fz2, cx2, cz2 = _line_load(tx_i + ds * fx1, tz_i + ds * fz1, u_j, kn, kt, w, inv_ea)
+        tx_i = tx[i + 1] = tx_i + h * (fx1 + fx2)
+        tz_i = tz[i + 1] = tz_i + h * (fz1 + fz2)
+        x_i = x[i + 1] = x_i - h * (cx1 + cx2)
+        z_i = z[i + 1] = z_i - h * (cz1 + cz2)
+        u_i = u_j
     return tx, tz, x, z
 
 

@@ -1,67 +1,149 @@
 """Cached wrappers around the engine for the pages (the only place pages get designs from).
 
-The cache key is the canonical JSON text of an inputs dict (:func:`app_ui.state.inputs_key`), so
-two sessions with the same inputs share one computation. Invalid inputs raise ``ValueError``
-(nothing is cached for them); the pages catch it and show the message.
+The cache key is the frozen inputs themselves: a resolved :class:`~aerostat_core.Requirement`
+and a :class:`~aerostat_core.Configuration` (frozen dataclasses, hashed and compared field by
+field), so two sessions with the same inputs share one computation and a hit costs one hash.
+The results are shared, not copied: treat them as read-only. Inputs that arrive as the canonical
+JSON text of the session state (:func:`app_ui.state.inputs_key`) are parsed once per distinct
+text. Invalid inputs raise ``ValueError`` (nothing is cached for them); the pages catch it and
+show the message.
 
 Typical use in a page::
 
     from app_ui import cache, state
-    rep = cache.cached_report(state.current_inputs_key())    # plain data for tables and plots
-    d = cache.cached_design(state.current_inputs_key())      # the Design object itself
+    rep = cache.cached_report(state.current_inputs_key())    # DesignReport for tables and plots
+    d = cache.design_of(req, cfg)                            # the Design object itself
 """
 
 from __future__ import annotations
 
+import functools
 import json
+import threading
+from collections import OrderedDict
+from collections.abc import Callable, Hashable, Mapping
+from typing import Any
 
 import streamlit as st
 
-from aerostat_core import Design, design
+from aerostat_core import Configuration, Design, Requirement, budget, design
 from aerostat_core.io import cases_to_json, inputs_from_dict, rows_to_csv
-from aerostat_core.report import case_designs, cases_csv, comparison_rows, design_report
+from aerostat_core.report import DesignReport, cases_csv, comparison_rows, design_report
 
-from .state import inputs_key
+#: Designs (and reports) kept for every session together.
+MAX_DESIGNS = 256
 
 
-def _inputs(inputs_json: str):
-    req, cfg = inputs_from_dict(json.loads(inputs_json))
+class _LRU:
+    """A least-recently-used map shared by every session (thread-safe)."""
+
+    def __init__(self, size: int) -> None:
+        self.size = size
+        self._data: OrderedDict = OrderedDict()
+        self._lock = threading.Lock()
+
+    def get(self, key: Hashable, compute: Callable[[], Any]) -> Any:
+        with self._lock:
+            if key in self._data:
+                self._data.move_to_end(key)
+                return self._data[key]
+        value = compute()  # outside the lock: other sessions keep going
+        with self._lock:
+            self._data[key] = value
+            while len(self._data) > self.size:
+                self._data.popitem(last=False)
+        return value
+
+
+@st.cache_resource(show_spinner=False)
+def _store(kind: str) -> _LRU:
+    """The process-wide LRU of ``kind`` ("design", "report", "comparison")."""
+    return _LRU(MAX_DESIGNS if kind != "comparison" else 64)
+
+
+def _key(req: Requirement, cfg: Configuration) -> tuple[Requirement, Configuration]:
     return req.resolved(), cfg  # the limits as applied (rule-set values filled in)
 
 
-@st.cache_data(max_entries=256, show_spinner=False)
+def design_of(req: Requirement, cfg: Configuration) -> Design:
+    """:func:`aerostat_core.design` of the inputs, computed once per distinct inputs."""
+    key = _key(req, cfg)
+    return _store("design").get(key, lambda: design(*key))
+
+
+def report_of(req: Requirement, cfg: Configuration) -> DesignReport:
+    """:func:`aerostat_core.report.design_report` of :func:`design_of` the inputs."""
+    key = _key(req, cfg)
+    return _store("report").get(key, lambda: design_report(design_of(*key)))
+
+
+@functools.lru_cache(maxsize=MAX_DESIGNS)
+def inputs_of(inputs_json: str) -> tuple[Requirement, Configuration]:
+    """(resolved Requirement, Configuration) of canonical inputs JSON, parsed once per text
+    (raises ``ValueError``; failures are not cached)."""
+    return _key(*inputs_from_dict(json.loads(inputs_json)))
+
+
 def cached_design(inputs_json: str) -> Design:
-    """:func:`aerostat_core.design` of the inputs in ``inputs_json``."""
-    return design(*_inputs(inputs_json))
+    """:func:`design_of` the inputs in ``inputs_json``."""
+    return design_of(*inputs_of(inputs_json))
 
 
-@st.cache_data(max_entries=256, show_spinner=False)
-def cached_report(inputs_json: str) -> dict:
-    """:func:`aerostat_core.report.design_report` of the inputs in ``inputs_json``."""
-    return design_report(cached_design(inputs_json))
+def cached_report(inputs_json: str) -> DesignReport:
+    """:func:`report_of` the inputs in ``inputs_json``."""
+    return report_of(*inputs_of(inputs_json))
 
 
-def report_for(inputs: dict) -> dict:
-    """:func:`cached_report` of an inputs dict."""
-    return cached_report(inputs_key(inputs))
+def report_for(inputs: Mapping[str, Any]) -> DesignReport:
+    """:func:`report_of` an inputs dict."""
+    return report_of(*inputs_from_dict(dict(inputs)))
 
 
-@st.cache_data(max_entries=64, show_spinner=False)
-def cached_comparison(cases_json: str) -> list[dict]:
-    """:func:`aerostat_core.report.comparison_rows` of ``{name: inputs}`` (JSON text)."""
-    cases = json.loads(cases_json)
-    return comparison_rows(case_designs(cases))
+def case_inputs(cases: Mapping[str, Mapping[str, Any]]) -> dict[str, tuple]:
+    """Frozen inputs of every saved case, in order, after the compute budget of them all.
+    Raises ``ValueError`` naming the case."""
+    budget.check_cases(cases)
+    out = {}
+    for name, inputs in cases.items():
+        try:
+            out[name] = _key(*inputs_from_dict(dict(inputs)))
+        except ValueError as exc:
+            raise ValueError(f"case {name!r}: {exc}") from None
+    return out
 
 
-@st.cache_data(max_entries=64, show_spinner=False)
-def cached_cases_csv(cases_json: str) -> str:
-    """One tidy CSV of every case in ``{name: inputs}`` (JSON text)."""
-    return cases_csv(json.loads(cases_json))
+def designs_of(cases: Mapping[str, Mapping[str, Any]]) -> dict[str, Design]:
+    """:func:`design_of` every saved case (each computed once, shared with the reports)."""
+    return {name: design_of(*key) for name, key in case_inputs(cases).items()}
+
+
+def comparison_of(cases: Mapping[str, Mapping[str, Any]]) -> list[dict]:
+    """:func:`aerostat_core.report.comparison_rows` of ``{name: inputs}``."""
+    keys = case_inputs(cases)
+    key = tuple(keys.items())
+    return _store("comparison").get(
+        key, lambda: comparison_rows({n: design_of(*k) for n, k in keys.items()})
+    )
+
+
+def cases_csv_of(cases: Mapping[str, Mapping[str, Any]]) -> str:
+    """One tidy CSV of every case in ``{name: inputs}`` (the cached designs)."""
+    return cases_csv(cases, designs_of(cases))
 
 
 def cases_key(cases: dict) -> str:
     """Canonical JSON of ``{name: inputs}`` (keeps the case order)."""
     return json.dumps(cases, separators=(",", ":"))
+
+
+def cached_comparison(cases_json: str) -> list[dict]:
+    """:func:`comparison_of` the cases in ``cases_json`` (JSON text)."""
+    return comparison_of(json.loads(cases_json))
+
+
+def cached_cases_csv(cases_json: str) -> str:
+    """:func:`cases_csv_of` the cases in ``cases_json`` (JSON text)."""
+    return cases_csv_of(json.loads(cases_json))
 
 
 def csv_bytes(rows: list[dict]) -> bytes:

@@ -35,6 +35,17 @@ def median_time(fn, repeats: int) -> float:
     return statistics.median(times)
 
 
+def median_cpu(fn, repeats: int) -> float:
+    """Median process CPU time of ``fn()`` [s]: steadier than wall time on a shared machine."""
+    fn()
+    times = []
+    for _ in range(repeats):
+        t0 = time.process_time()
+        fn()
+        times.append(time.process_time() - t0)
+    return statistics.median(times)
+
+
 def main() -> None:
     req, cfg = thesis_baseline()
     sized_cfg = cfg.with_design_variables(volume=None)
@@ -51,6 +62,10 @@ def main() -> None:
     practice = Requirement(payload_mass=10, altitude=300)
     t = median_time(lambda: design(practice), 30)
     print(f"design(Requirement(10 kg, 300 m)), practice rules:       median {t * 1e3:.2f} ms")
+    for label, fn in (("design, given volume", lambda: design(req, cfg)),
+                      ("design, sized (thesis rules)", lambda: design(req, sized_cfg)),
+                      ("design(), sized (practice default)", lambda: design(practice))):
+        print(f"  CPU time, {label + ':':36s} median {median_cpu(fn, 30) * 1e3:.2f} ms")
     rng = np.random.default_rng(0)
     n = 10_000
     f = rng.uniform(2.5, 4.5, n)

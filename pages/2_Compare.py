@@ -121,10 +121,9 @@ with st.expander("Cases file: export / import", icon=":material/folder_open:"):
             disabled=not cases,
             help="Every input of every case; upload it again to restore them.",
         )
-        cases_json = cache.cases_key(cases)
         st.download_button(
             "Download all cases (CSV)",
-            data=lambda: cache.cached_cases_csv(cases_json).encode("utf-8"),
+            data=lambda: cache.cases_csv_of(cases).encode("utf-8"),
             file_name="aerostat-cases.csv",
             mime="text/csv",
             on_click="ignore",
@@ -196,7 +195,7 @@ try:  # the whole comparison against the compute budget, before any case is comp
 except budget.BudgetError as exc:
     st.error(text.plain(str(exc)), icon=":material/speed:")
     st.stop()
-reports: dict[str, dict] = {}
+reports: dict = {}  # name -> DesignReport: each case designed once (shared with the table)
 for name in selected:
     try:
         reports[name] = cache.report_for(cases[name])
@@ -221,7 +220,7 @@ with tab_table:
             "Show only the rows that differ", key="compare_only_diff", persist_state="session"
         )
         try:
-            rows = cache.cached_comparison(cache.cases_key(sub)) if sub else []
+            rows = cache.comparison_of(sub) if sub else []
         except Exception as exc:  # noqa: BLE001
             st.error(text.plain(short(f"The comparison could not be built: {exc}")))
             rows = []
