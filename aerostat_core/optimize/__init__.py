@@ -85,12 +85,14 @@ from .compare import (
     baseline_vs_optimum,
     compare_solvers,
     comparison_rows,
+    design_change_rows,
     history_rows,
+    optimum_configuration,
     optimum_inputs,
     solve,
     thesis_comparison_rows,
 )
-from .curves import PERFORMANCE_CURVES, performance_comparison_rows, performance_curves
+from .curves import PERFORMANCE_CURVES, curves_of, performance_comparison_rows, performance_curves
 from .pareto import ParetoFront, default_limits, nondominated_mask, pareto_front, pareto_nsga2
 from .problem import FunctionBatch, FunctionProblem, OptimizationProblem
 from .pso import solve_pso
@@ -121,6 +123,9 @@ __all__ = [
     "ParetoFront",
     "agreement",
     "baseline_vs_optimum",
+    "curves_of",
+    "design_change_rows",
+    "optimum_configuration",
     "check_bounds",
     "compare_solvers",
     "comparison_rows",

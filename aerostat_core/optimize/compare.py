@@ -187,7 +187,21 @@ def baseline_vs_optimum(
     from ..design import design
 
     base = design(req, cfg_baseline)
-    opt = design(req, cfg_baseline.with_design_variables(volume=None, **dict(x_optimum)))
+    opt = design(req, optimum_configuration(cfg_baseline, x_optimum))
+    return design_change_rows(base, opt)
+
+
+def optimum_configuration(
+    cfg_baseline: Configuration, x_optimum: Mapping[str, float]
+) -> Configuration:
+    """The baseline configuration with the design variables ``x_optimum`` and a sized volume
+    (the optimum that :func:`baseline_vs_optimum` designs)."""
+    return cfg_baseline.with_design_variables(volume=None, **dict(x_optimum))
+
+
+def design_change_rows(base: Any, opt: Any) -> list[dict[str, Any]]:
+    """The rows of :func:`baseline_vs_optimum` from two designs already made
+    (:class:`aerostat_core.design.Design`), so a caller that has them designs nothing again."""
     items = [
         ("Hull volume", "m3", base.volume, opt.volume),
         ("Total mass", "kg", base.total_mass, opt.total_mass),

@@ -35,7 +35,11 @@ def performance_curves(req: Requirement, cfg: Configuration) -> dict[str, Any]:
     req = req.resolved()
     from ..design import design
 
-    d = design(req, cfg)
+    return curves_of(design(req, cfg))
+
+
+def curves_of(d: Any) -> dict[str, Any]:
+    """:func:`performance_curves` of a design already made (:class:`aerostat_core.design.Design`)."""
     p = d.performance
     out = {"wind_speed": np.asarray(p.wind_speed, float)}
     for k in PERFORMANCE_CURVES:

@@ -398,3 +398,22 @@ def test_default_limits_hold_the_requirement_limit_once() -> None:
     req = thesis_baseline()[0]
     lims = default_limits(req)
     assert np.sum(np.isclose(lims, req.blow_by_limit, rtol=1e-6)) == 1
+
+
+def test_rows_and_curves_from_designs_already_made_equal_the_designing_calls() -> None:
+    """Optimise designs the baseline and the optimum once and hands them to both tables."""
+    from aerostat_core import design
+    from aerostat_core.optimize import (
+        curves_of,
+        design_change_rows,
+        optimum_configuration,
+        performance_curves,
+    )
+
+    req, cfg = thesis_baseline()
+    x = {"fineness_ratio": 3.0, "area_change": -20.0, "position": 0.7}
+    base, opt = design(req, cfg), design(req, optimum_configuration(cfg, x))
+    assert design_change_rows(base, opt) == baseline_vs_optimum(req, cfg, x)
+    a, b = curves_of(opt), performance_curves(req, optimum_configuration(cfg, x))
+    assert a["total_mass"] == b["total_mass"] and np.array_equal(a["blow_by"], b["blow_by"])
+    assert opt.configuration.fins.area_change == -20.0 and base.volume != opt.volume
