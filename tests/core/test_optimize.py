@@ -11,7 +11,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from aerostat_core import thesis_baseline
+from aerostat_core import design, thesis_baseline, thesis_optimized
 from aerostat_core.optimize import (
     CONSTRAINTS,
     DEFAULT_BOUNDS,
@@ -191,9 +191,17 @@ def test_thesis_calibration_and_preset_constants(thesis_results) -> None:
     best = min(thesis_results, key=lambda r: r.objective)
     assert best.design["volume_m3"] == pytest.approx(THESIS_REPORTED["optimum_volume_m3"], rel=0.02)
     assert THESIS_BLOW_BY_LIMIT == thesis_baseline()[0].blow_by_limit
+    # The fineness ratio is pinned by the problem; fin area and fin position trade along a valley
+    # of equal weathervane margin (the three solvers stop at different points of it, within
+    # 0.05 % in mass), so the recorded point is checked on the valley: near it within 3 % of the
+    # bounds' span, and as heavy as the best found within 0.05 %.
     for k, v in THESIS_OPTIMUM.items():
         scale = np.ptp(DEFAULT_BOUNDS[k])
-        assert best.x[k] == pytest.approx(v, abs=0.01 * scale)
+        tol = 0.01 if k == "fineness_ratio" else 0.03
+        assert best.x[k] == pytest.approx(v, abs=tol * scale)
+    recorded = design(*thesis_optimized())
+    assert recorded.feasible
+    assert recorded.total_mass == pytest.approx(best.objective, rel=5e-4)
     # prediction, not a calibration: 64.7 kg vs the thesis' 71.6 kg (-9.6 %: smaller fins, f 2.5)
     assert best.objective == pytest.approx(THESIS_REPORTED["optimum_mass_kg"], rel=0.15)
 
