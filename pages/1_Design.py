@@ -9,8 +9,15 @@ import streamlit as st
 from aerostat_core import thesis_baseline
 from aerostat_core.io import design_to_json
 from aerostat_core.report import tether_profile_rows
-from app_ui import cache, envelope_view, mission_view, plots, shapes_view, state, widgets
-from app_ui.plots import geometry_frame, mass_frame, performance_frame, performance_styler
+from app_ui import cache, envelope_view, formats, mission_view, plots, shapes_view, state, widgets
+from app_ui.tables import (
+    PERF_HELP,
+    PERF_TABLES,
+    geometry_frame,
+    mass_frame,
+    performance_frame,
+    performance_styler,
+)
 
 st.title("Aerostat design")
 st.caption(
@@ -45,8 +52,9 @@ def _on_upload() -> None:
         st.session_state.pop(widgets.ERROR_KEY, None)
 
 
-def _fmt(v: float, digits: int = 1) -> str:
-    return f"{v:,.{digits}f}"
+def _fmt(v: float, quantity: str) -> str:
+    """A headline number at the decimals of its quantity (the same in every table)."""
+    return formats.text(v, quantity)
 
 
 TABS = ("Geometry", "3-D view", "Mass", "Performance", "Tether profiles", "Mission", "Envelope")
@@ -91,8 +99,8 @@ def _mass_tab(rep: dict) -> None:
             hide_index=True,
             width="stretch",
             column_config={
-                "Mass [kg]": st.column_config.NumberColumn(format="%.2f"),
-                "Share [%]": st.column_config.NumberColumn(format="%.1f"),
+                "Mass [kg]": st.column_config.NumberColumn(format=formats.printf("mass")),
+                "Share [%]": st.column_config.NumberColumn(format=formats.printf("share")),
             },
             key="mass_table",
         )
@@ -111,13 +119,17 @@ def _mass_tab(rep: dict) -> None:
 
 def _performance_tab(rep: dict) -> None:
     pdf = performance_frame(rep["performance_rows"])
-    st.dataframe(
-        performance_styler(pdf),
-        hide_index=True,
-        width="stretch",
-        height=min(35 * (len(pdf) + 1) + 3, 900),  # every row of a usual sweep in sight
-        key="performance_table",
-    )
+    # Two tables by theme: one table of 15 columns scrolled sideways at 1024 px.
+    for k, (title, columns) in enumerate(PERF_TABLES.items()):
+        st.markdown(f"**{title}**")
+        st.dataframe(
+            performance_styler(pdf, columns),
+            hide_index=True,
+            width="stretch",
+            height=min(35 * (len(pdf) + 1) + 3, 900),  # every row of a usual sweep in sight
+            column_config={c: st.column_config.Column(help=h) for c, h in PERF_HELP.items()},
+            key="performance_table" if k == 0 else f"performance_table_{k + 1}",
+        )
     st.caption("Rows with a red background break an operating limit (last column says which).")
     st.download_button(
         "Performance table (CSV)",
@@ -247,7 +259,7 @@ with col_out:
     c = widgets.metric_row(5)
     c[0].metric(
         "Volume [m³]",
-        _fmt(s["volume_m3"]),
+        _fmt(s["volume_m3"], "volume"),
         help="Hull volume. Sized: the smallest hull meeting the blow-by limit with positive "
         "free lift."
         if rep["sized"]
@@ -256,16 +268,16 @@ with col_out:
         delta_color="off",
         delta_arrow="off",
     )
-    c[1].metric("Length [m]", _fmt(s["length_m"], 2), help="Hull length l.")
-    c[2].metric("Diameter [m]", _fmt(s["diameter_m"], 2), help="Maximum hull diameter d.")
+    c[1].metric("Length [m]", _fmt(s["length_m"], "length"), help="Hull length l.")
+    c[2].metric("Diameter [m]", _fmt(s["diameter_m"], "diameter"), help="Maximum hull diameter d.")
     c[3].metric(
         "Total mass [kg]",
-        _fmt(s["total_mass_kg"]),
+        _fmt(s["total_mass_kg"], "total_mass"),
         help="Hull, fins, lifting gas, miscellaneous, payload and tether.",
     )
     c[4].metric(
         "Free lift [kg]",
-        _fmt(s["free_lift_kg"]),
+        _fmt(s["free_lift_kg"], "free_lift"),
         help="Gross buoyancy minus total weight, in kilograms "
         f"({s['percent_static_lift']:.0f} % of the gross buoyancy).",
     )
@@ -274,31 +286,33 @@ with col_out:
     bb = s["blow_by_at_design_wind_m"]
     c[0].metric(
         "Blow-by [m]",
-        _fmt(bb),
-        delta=f"{widgets.signed(bb - lim['blow_by_limit'], 1)} m",
+        _fmt(bb, "blow_by"),
+        delta=f"{widgets.signed(bb - lim['blow_by_limit'], formats.decimals('blow_by'))} m",
         delta_color="inverse",
         help=f"Downwind offset of the confluence point from the winch; limit "
         f"{lim['blow_by_limit']:g} m (the delta is blow-by minus limit).",
     )
     c[1].metric(
         "α_eq [deg]",
-        _fmt(s["alpha_at_design_wind_deg"], 2),
+        _fmt(s["alpha_at_design_wind_deg"], "alpha_eq"),
         help="Equilibrium angle of attack (moment balance about the confluence point).",
     )
     c[2].metric(
         "Tension [N]",
-        _fmt(s["tension_top_at_design_wind_N"], 0),
+        _fmt(s["tension_top_at_design_wind_N"], "tension"),
         help="Tether tension at the confluence point.",
     )
     sf = s["safety_factor_at_design_wind"]
     c[3].metric(
         "Safety factor [-]",
-        _fmt(sf, 2),
-        delta=widgets.signed(sf - lim["min_safety_factor"], 2),
+        _fmt(sf, "safety_factor"),
+        delta=widgets.signed(sf - lim["min_safety_factor"], formats.decimals("safety_factor")),
         help="Tether breaking strength / largest tension along the tether; required "
         f"{lim['min_safety_factor']:g} (the delta is the margin).",
     )
-    c[4].metric("Gas cost [USD]", _fmt(s["gas_cost_USD"], 0), help="Hull volume × gas price.")
+    c[4].metric(
+        "Gas cost [USD]", _fmt(s["gas_cost_USD"], "gas_cost"), help="Hull volume × gas price."
+    )
 
     if rep["feasible"]:
         st.success(

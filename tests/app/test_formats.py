@@ -1,0 +1,113 @@
+"""One precision per quantity (issue 9 item 9): the formatting table of app_ui.formats is what the
+Design metrics, the Design tables, the Optimise tables and the figures' hover texts show."""
+
+from __future__ import annotations
+
+import json
+import re
+
+import pytest
+
+from app_ui import formats, tables
+from tests.app.helpers import chart, goto, messages, metric, show_tab
+
+OPT_PAGE = "pages/4_Optimise.py"
+
+
+def _decimals(text: str) -> int:
+    """Decimals of a shown number ("1,234.5" -> 1, "12" -> 0)."""
+    m = re.search(r"-?[\d,]+(?:\.(\d+))?", text)
+    assert m, text
+    return len(m.group(1) or "")
+
+
+def _element(at, first_column: str, has: str):
+    """The dataframe element whose first column is ``first_column`` and that has ``has``."""
+    return next(
+        el
+        for el in at.dataframe
+        if list(el.value.columns[:1]) == [first_column] and has in el.value.columns
+    )
+
+
+def _column_format(el, column: str) -> str | None:
+    """The printf format a dataframe element gives a column (its column config)."""
+    cfg = json.loads(el.proto.columns or "{}")
+    return cfg.get(column, {}).get("type_config", {}).get("format")
+
+
+def _styled_cells(styler, column: str) -> list[str]:
+    """The shown texts of one column of a pandas styler."""
+    ctx = styler._translate(False, False)
+    col = list(styler.data.columns).index(column)
+    return [row[col + 1]["display_value"] for row in ctx["body"]]
+
+
+def test_the_table_is_the_brief_one():
+    assert {k: (v.unit, v.decimals) for k, v in formats.KINDS.items() if k in (
+        "mass", "volume", "force", "angle", "speed", "percent"
+    )} == {
+        "mass": ("kg", 1), "volume": ("m³", 1), "force": ("N", 0), "angle": ("deg", 1),
+        "speed": ("m/s", 1), "percent": ("%", 1),
+    }  # fmt: skip
+    assert formats.text(-0.04, "blow_by") == "0.0"  # never "-0.0"
+    assert formats.text(12345.678, "tension") == "12,346"
+
+
+def test_same_quantity_same_decimals_on_design_optimise_and_in_the_tables(thesis_at):
+    at = thesis_at
+    shown = {
+        "total_mass": metric(at, "Total mass [kg]"),
+        "volume": metric(at, "Volume [m³]"),
+        "blow_by": metric(at, "Blow-by [m]"),
+        "alpha_eq": metric(at, "α_eq [deg]"),
+        "tension": metric(at, "Tension [N]"),
+    }
+    for q, text in shown.items():
+        assert _decimals(text) == formats.decimals(q), (q, text)
+    # the Design tables: the mass table's column, the geometry's volume row, the sweep's blow-by
+    show_tab(at, "Mass")
+    mass_el = _element(at, "Item", "Mass [kg]")
+    assert _column_format(mass_el, "Mass [kg]") == "%.1f"
+    show_tab(at, "Performance")
+    from aerostat_core import design, thesis_baseline
+    from aerostat_core.report import design_report
+
+    rep = design_report(design(*thesis_baseline()))
+    df = tables.performance_frame(rep["performance_rows"])
+    first, second = tables.PERF_TABLES.values()
+    for cell in _styled_cells(tables.performance_styler(df, first), "Blow-by [m]"):
+        assert _decimals(cell) == formats.decimals("blow_by"), cell
+    for cell in _styled_cells(tables.performance_styler(df, second), "α_eq [deg]"):
+        assert _decimals(cell) == formats.decimals("alpha_eq"), cell
+    geo = tables.geometry_styler(tables.geometry_frame(rep["geometry_rows"]))
+    volume_row = [r for r in rep["geometry_rows"]].index(
+        next(r for r in rep["geometry_rows"] if r["quantity"] == "Hull volume")
+    )
+    assert _styled_cells(geo, "Value")[volume_row] == shown["volume"]
+    # the hover text of a Design figure
+    blow = chart(at, "perf_blow_by")["data"][0]["hovertemplate"]
+    assert f"%{{y:.{formats.decimals('blow_by')}f}}" in blow
+
+    # Optimise: the solver comparison and the Pareto table give the same decimals
+    goto(at, OPT_PAGE)
+    at.radio(key="opt_level").set_value("Quick")
+    at.multiselect(key="opt_solvers").set_value(["slsqp", "pso"])
+    at.button(key="opt_run").click().run()
+    assert not at.exception, [e.value for e in at.exception]
+    opt_el = _element(at, "Solver", "Total mass [kg]")
+    for col, q in (("Total mass [kg]", "total_mass"), ("Volume [m³]", "volume"),
+                   ("Blow-by [m]", "blow_by"), ("α_eq [deg]", "alpha_eq")):  # fmt: skip
+        assert _column_format(opt_el, col) == formats.printf(q), col
+    pareto_el = _element(at, "Blow-by limit [m]", "Total mass [kg]")
+    assert _column_format(pareto_el, "Total mass [kg]") == formats.printf("total_mass")
+    spread = next(m for m in messages(at, "success") if "Spread" in m)
+    best = re.search(r"best ([\d.,]+) kg", spread).group(1)
+    assert _decimals(best) == formats.decimals("total_mass")
+    conv = chart(at, "opt_convergence")["data"][0]["hovertemplate"]
+    assert "%{y:.1f} kg" in conv
+
+
+@pytest.mark.parametrize("q", sorted(formats.QUANTITIES))
+def test_every_quantity_has_a_kind(q):
+    assert formats.kind_of(q) in formats.KINDS
