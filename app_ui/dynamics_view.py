@@ -50,12 +50,8 @@ from aerostat_core.dynamics.turbulence import DRYDEN_W20
 from aerostat_core.io import inputs_from_dict, inputs_to_dict
 from aerostat_core.presets import thesis_optimised_label
 
-ACCENT = "#1f5fa8"
-SECOND = "#e69f00"
-THIRD = "#009e73"
-LIMIT = "#c0392b"
-_FONT = dict(family="sans-serif", size=13)
-_MARGIN = dict(l=60, r=20, t=50, b=50)
+from .theme import ACCENT, FONT, MARGIN, SECOND, THIRD
+from .theme import LIMIT_COLOUR as LIMIT
 
 CURRENT = "Current design"
 THESIS = thesis_optimised_label()
@@ -418,7 +414,7 @@ def current_inputs_or_none(state: Mapping[str, Any]) -> dict | None:
 
 # --- figures ------------------------------------------------------------------------------------
 def _fig(data: list, title: str, xt: str, yt: str, **layout: Any) -> go.Figure:
-    lay = dict(title=dict(text=title), font=_FONT, margin=_MARGIN, template="plotly_white",
+    lay = dict(title=dict(text=title), font=FONT, margin=MARGIN, template="plotly_white",
                xaxis=dict(title=dict(text=xt)), yaxis=dict(title=dict(text=yt)),
                legend=dict(orientation="h", y=-0.2), height=360)
     lay.update(layout)

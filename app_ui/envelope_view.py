@@ -24,7 +24,8 @@ from aerostat_core.site_wind import MAX_CSV_BYTES, WeibullSite, flyable_time, re
 from aerostat_core.uncertainty import monte_carlo, rule_set_spread
 
 from . import cache
-from .plots import PALETTE, WIND_AXIS
+from .plots import WIND_AXIS
+from .theme import MARGIN, PALETTE
 
 SITE_KEY = "envelope_site"  # session key: {"kind": "weibull", ...} or {"kind": "csv", ...}
 MC_KEY = "envelope_mc"  # session key: {"n": N, "seed": S} once the user ran it
@@ -217,7 +218,7 @@ def bands_figure(mc: dict, rep: dict) -> go.Figure:
             col=col,
         )
         fig.update_xaxes(title_text=WIND_AXIS, row=1, col=col)
-    fig.update_layout(height=380, margin={"l": 60, "r": 20, "t": 40, "b": 50})
+    fig.update_layout(height=380, margin={**MARGIN, "t": 40})
     return fig
 
 

@@ -107,10 +107,12 @@ _SHOWN_UNIT = {formats.unit(u): u for u in ("m3", "m2")}
 def geometry_styler(df: pd.DataFrame) -> Styler:
     """The geometry table with each value at the decimals of its kind (counts as integers,
     "4" not "4.000"; the hull volume as the headline metric; lengths as the metrics)."""
-    styler = df.style
+    rows: dict[str, list] = {}  # kind -> row labels: one format call per kind, not per row
     for i, q, u in zip(df.index, df["Quantity"], df["Unit"]):
-        kind = formats.kind_of_unit(_SHOWN_UNIT.get(str(u), str(u)), str(q))
-        styler = styler.format(formats.pyformat(kind), subset=pd.IndexSlice[[i], ["Value"]])
+        rows.setdefault(formats.kind_of_unit(_SHOWN_UNIT.get(str(u), str(u)), str(q)), []).append(i)
+    styler = df.style
+    for kind, idx in rows.items():
+        styler = styler.format(formats.pyformat(kind), subset=pd.IndexSlice[idx, ["Value"]])
     return styler
 
 
