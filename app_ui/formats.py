@@ -148,3 +148,18 @@ def pyformat(quantity: str) -> str:
 def d3(quantity: str) -> str:
     """d3 format of a quantity, for plotly hover templates (``%{y:.1f}``)."""
     return f".{decimals(quantity)}f"
+
+
+def formatter(quantity: str):
+    """A cell formatter for pandas stylers: :func:`text` of the quantity (never "-0.0"; "–"
+    for a missing value), other cell types unchanged."""
+
+    def fmt(v: Any) -> str:
+        if isinstance(v, bool) or not isinstance(v, (int, float)):
+            try:
+                v = float(v)
+            except (TypeError, ValueError):
+                return str(v)
+        return text(v, quantity)
+
+    return fmt

@@ -65,7 +65,9 @@ from .optimize_jobs import (
 )
 from .optimize_tables import (
     COMPARISON_FORMAT,
+    COMPARISON_TABLES,
     PARETO_FORMAT,
+    PARETO_TABLES,
     SUMMARY_FORMAT,
     SWEEP_FORMAT,
     changes_frame,
@@ -73,7 +75,9 @@ from .optimize_tables import (
     comparison_frame,
     csv_of,
     pareto_frame,
+    styled,
     summary_frame,
+    summary_table,
     sweep_frame,
     thesis_frame,
 )
@@ -138,9 +142,10 @@ def render_results(job: Mapping[str, Any], baseline_inputs_json: str) -> None:
         st.info("No solver finished.")
         return
     st.subheader("Solver comparison (thesis Table 4.12)", anchor=False)
-    st.dataframe(
-        comparison_frame(results), hide_index=True, column_config=COMPARISON_FORMAT, key="opt_table"
-    )
+    cmp_df = comparison_frame(results)
+    for title, columns in COMPARISON_TABLES.items():  # static tables: 14 columns did not fit
+        st.markdown(f"**{title}**")
+        st.table(styled(cmp_df, columns))
     st.download_button(
         "Comparison (CSV)",
         csv_of(comparison_rows(results)),
@@ -178,11 +183,7 @@ def render_results(job: Mapping[str, Any], baseline_inputs_json: str) -> None:
     cmp = cached_comparison(
         req_d["inputs"], baseline_inputs_json, json.dumps(best.x, sort_keys=True)
     )
-    st.dataframe(
-        changes_styler(changes_frame(cmp["changes"])),
-        hide_index=True,
-        key="opt_changes",
-    )
+    st.table(changes_styler(changes_frame(cmp["changes"])))
     st.caption(
         "Baseline: the design inputs as given (their volume if set, else sized). "
         "Optimum: the best solver's variables with the hull sized to the requirement."
@@ -193,7 +194,7 @@ def render_results(job: Mapping[str, Any], baseline_inputs_json: str) -> None:
             "90.65 → 71.6 kg, USD 1925 of helium saved)"
         )
         tf = thesis_frame(cmp["thesis"])
-        st.dataframe(changes_styler(tf, list(tf.columns[1:])), hide_index=True, key="opt_thesis")
+        st.table(changes_styler(tf, list(tf.columns[1:])))
         st.caption(
             f"Calibrated: the blow-by limit ({THESIS_BLOW_BY_LIMIT:g} m at 15 m/s, not given "
             "in the thesis) so that the optimum is ~120 m³. Predicted: the optimum's mass and "
@@ -228,12 +229,10 @@ def render_results(job: Mapping[str, Any], baseline_inputs_json: str) -> None:
             "within that limit (epsilon-constraint method, volume free, every constraint "
             "met); red crosses: limits no design within the bounds can meet."
         )
-        st.dataframe(
-            pareto_frame(front),
-            hide_index=True,
-            column_config=PARETO_FORMAT,
-            key="opt_pareto_table",
-        )
+        p_df = pareto_frame(front)
+        for title, columns in PARETO_TABLES.items():
+            st.markdown(f"**{title}**")
+            st.table(styled(p_df, columns))
         st.download_button(
             "Pareto front (CSV)",
             csv_of(front.rows()),
@@ -319,6 +318,7 @@ __all__ = [
     "solver_results",
     "start_job",
     "summary_frame",
+    "summary_table",
     "sweep_frame",
     "thesis_frame",
     "unit",

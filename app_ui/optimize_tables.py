@@ -120,8 +120,8 @@ def changes_styler(
         kind = "percent" if u.startswith("%") else formats.kind_of_unit(_RAW_UNIT.get(u, u))
         if str(q).startswith("Gas"):
             kind = "cost"
-        styler = styler.format(formats.pyformat(kind), subset=pd.IndexSlice[[i], list(columns)])
-    return styler
+        styler = styler.format(formats.formatter(kind), subset=pd.IndexSlice[[i], list(columns)])
+    return styler.hide(axis="index")
 
 
 _RAW_UNIT = {"m³": "m3", "m²": "m2"}
@@ -212,3 +212,117 @@ def summary_frame(res: SensitivityResult) -> pd.DataFrame:
 def csv_of(rows: list[dict]) -> bytes:
     """CSV bytes of flat rows (pure: :func:`aerostat_core.io.rows_to_csv`)."""
     return csv_bytes(rows)
+
+
+#: Rows of the transposed range summary: (row label, summary key, shown in the variable's unit).
+_SUMMARY_ROWS = (
+    ("Baseline", "baseline", True),
+    ("Low end of the range", "low", True),
+    ("High end of the range", "high", True),
+    ("Mass change at the low end [%]", "mass_change_low_pct", False),
+    ("Mass change at the high end [%]", "mass_change_high_pct", False),
+    ("Volume change at the low end [%]", "volume_change_low_pct", False),
+    ("Volume change at the high end [%]", "volume_change_high_pct", False),
+    ("Feasible from", "feasible_from", True),
+    ("Feasible to", "feasible_to", True),
+)
+SUMMARY_FIRST_COLUMN = "Over each range"
+
+
+def summary_table(res: SensitivityResult) -> Styler:
+    """The range summary transposed: one row per quantity, one column per design variable (4
+    columns instead of 10, so it fits at 1024 px), each cell at the decimals of its quantity."""
+    rows = {r["variable"]: r for r in res.summary_rows()}
+    names = list(rows)
+    df = pd.DataFrame(
+        {SUMMARY_FIRST_COLUMN: [label for label, _, _ in _SUMMARY_ROWS]}
+        | {
+            var_label(n): [
+                shown(n, rows[n][key]) if own else rows[n][key] for _, key, own in _SUMMARY_ROWS
+            ]
+            for n in names
+        }
+    )
+    styler = df.style.hide(axis="index")
+    own_rows = [i for i, (_, _, own) in enumerate(_SUMMARY_ROWS) if own]
+    pct_rows = [i for i, (_, _, own) in enumerate(_SUMMARY_ROWS) if not own]
+    for n in names:
+        col = [var_label(n)]
+        styler = styler.format(
+            formats.formatter(_VAR_KIND[n]), subset=pd.IndexSlice[own_rows, col], na_rep="–"
+        )
+        styler = styler.format(
+            formats.formatter("percent"), subset=pd.IndexSlice[pct_rows, col], na_rep="–"
+        )
+    return styler
+
+
+#: Quantity (:mod:`app_ui.formats`) of each design variable in its display unit.
+_VAR_KIND = {
+    "fineness_ratio": "fineness_ratio",
+    "area_change": "area_change",
+    "position": "position",
+}
+
+
+#: Quantity (:mod:`app_ui.formats`) of every numeric column of the Optimise tables.
+COLUMN_KINDS = {
+    "f [-]": "fineness_ratio",
+    "ΔS_f [%]": "area_change",
+    "Δl_f [% of l]": "position",
+    "Total mass [kg]": "total_mass",
+    "Volume [m³]": "volume",
+    "Blow-by [m]": "blow_by",
+    "Blow-by limit [m]": "blow_by_limit",
+    "α_eq [deg]": "alpha_eq",
+    "Gas cost [USD]": "gas_cost",
+    "Time [s]": "time",
+    "Evaluations": "count",
+    "Batches": "count",
+}
+#: The solver comparison as three static tables (14 columns scrolled sideways at 1024 px).
+COMPARISON_TABLES: dict[str, tuple[str, ...]] = {
+    "Optimum of each solver": (
+        "Solver",
+        "Total mass [kg]",
+        "Volume [m³]",
+        "Blow-by [m]",
+        "α_eq [deg]",
+        "Gas cost [USD]",
+    ),
+    "Design variables at the optimum": ("Solver", "f [-]", "ΔS_f [%]", "Δl_f [% of l]"),
+    "Cost of the run": (
+        "Solver",
+        "Evaluations",
+        "Batches",
+        "Time [s]",
+        "Status",
+        "Active constraints / bounds",
+    ),
+}
+#: The Pareto table as two static tables.
+PARETO_TABLES: dict[str, tuple[str, ...]] = {
+    "Along the front": (
+        "Blow-by limit [m]",
+        "Blow-by [m]",
+        "Total mass [kg]",
+        "Volume [m³]",
+        "Gas cost [USD]",
+        "On front",
+    ),
+    "Design variables along the front": (
+        "Blow-by limit [m]",
+        "f [-]",
+        "ΔS_f [%]",
+        "Δl_f [% of l]",
+        "Why infeasible",
+    ),
+}
+
+
+def styled(df: pd.DataFrame, columns: Sequence[str] | None = None) -> Styler:
+    """A static table of ``columns`` of ``df`` (default all), each numeric column at the
+    decimals of its quantity, no index."""
+    shown_df = df if columns is None else df[list(columns)]
+    fmt = {c: formats.formatter(COLUMN_KINDS[c]) for c in shown_df.columns if c in COLUMN_KINDS}
+    return shown_df.style.format(fmt, na_rep="–").hide(axis="index")

@@ -2,9 +2,10 @@
 :func:`aerostat_core.report.design_report` to pandas frames and stylers (no Streamlit; tested
 directly). Units sit in every column name; decimals come from :mod:`app_ui.formats`.
 
-The performance sweep has 15 columns, too many for one table at 1024 px: it is shown as two
-tables by theme (:data:`PERF_TABLES`: where the aerostat flies and how the tether lies; the
-forces and the stability), each starting with the wind speed, so no table scrolls sideways.
+The performance sweep has 15 columns, too many for one table at 1024 px (the result column is
+under 400 px wide there): it is shown as three static tables by theme (:data:`PERF_TABLES`:
+where the aerostat flies, the tether, the forces and stability), each starting with the wind
+speed, whose headers wrap, so no table scrolls sideways.
 """
 
 from __future__ import annotations
@@ -62,28 +63,31 @@ PERF_KINDS: dict[str, str] = {
     "C_mα [1/rad]": "cm_alpha",
     "C_mα,CV [1/rad]": "cm_alpha",
 }
-#: The sweep's two tables: title -> columns (each with the wind speed and the limit flags).
+#: The sweep's tables by theme: title -> columns (each with the wind speed; the limit flags in
+#: the first). Six columns at most: the result column is under 400 px wide at 1024 px.
 PERF_TABLES: dict[str, tuple[str, ...]] = {
-    "Where it flies: blow-by, height and tether": (
+    "Where it flies": (
         "Wind [m/s]",
         "Blow-by [m]",
         "Flying height [m]",
         "Altitude loss [m]",
+        "Limits exceeded",
+    ),
+    "Tether": (
+        "Wind [m/s]",
+        "Tension at top [N]",
+        "Tension at winch [N]",
         "Tether angle at top [deg]",
         "Tether angle at winch [deg]",
-        "Limits exceeded",
+        "Safety factor [-]",
     ),
     "Forces and stability": (
         "Wind [m/s]",
         "α_eq [deg]",
         "Dynamic lift [N]",
         "Drag [N]",
-        "Tension at top [N]",
-        "Tension at winch [N]",
-        "Safety factor [-]",
         "C_mα [1/rad]",
         "C_mα,CV [1/rad]",
-        "Limits exceeded",
     ),
 }
 LIMIT_ROW_STYLE = "background-color: #fde2e2"
@@ -112,7 +116,7 @@ def geometry_styler(df: pd.DataFrame) -> Styler:
         rows.setdefault(formats.kind_of_unit(_SHOWN_UNIT.get(str(u), str(u)), str(q)), []).append(i)
     styler = df.style
     for kind, idx in rows.items():
-        styler = styler.format(formats.pyformat(kind), subset=pd.IndexSlice[idx, ["Value"]])
+        styler = styler.format(formats.formatter(kind), subset=pd.IndexSlice[idx, ["Value"]])
     return styler
 
 
@@ -148,8 +152,8 @@ def performance_styler(df: pd.DataFrame, columns: Sequence[str] | None = None) -
     def rowstyle(row: pd.Series) -> list[str]:
         return [LIMIT_ROW_STYLE if limited[row.name] else ""] * len(row)
 
-    fmt = {c: formats.pyformat(PERF_KINDS[c]) for c in shown.columns if c in PERF_KINDS}
-    return shown.style.apply(rowstyle, axis=1).format(fmt)
+    fmt = {c: formats.formatter(PERF_KINDS[c]) for c in shown.columns if c in PERF_KINDS}
+    return shown.style.apply(rowstyle, axis=1).format(fmt).hide(axis="index")
 
 
 def format_value(v: Any) -> str:

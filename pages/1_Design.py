@@ -63,7 +63,9 @@ TAB_KEY = "design_tab"
 
 def _geometry_tab(rep: dict) -> None:
     st.plotly_chart(plots.side_view_figure(rep), key="side_view")
-    g1, g2 = st.columns([1.2, 1])
+    # The table over the whole result column: beside the notes it was 200 px wide at 1024 px
+    # and scrolled sideways.
+    g1, g2 = st.container(), st.container()
     with g1:
         st.dataframe(
             plots.geometry_styler(geometry_frame(rep["geometry_rows"])),
@@ -92,7 +94,8 @@ def _geometry_tab(rep: dict) -> None:
 
 
 def _mass_tab(rep: dict) -> None:
-    m1, m2 = st.columns([1, 1.4])
+    # One above the other: beside the chart the table was 150 px wide at 1024 px and scrolled.
+    m1, m2 = st.container(), st.container()
     with m1:
         st.dataframe(
             mass_frame(rep["mass_rows"]),
@@ -119,17 +122,13 @@ def _mass_tab(rep: dict) -> None:
 
 def _performance_tab(rep: dict) -> None:
     pdf = performance_frame(rep["performance_rows"])
-    # Two tables by theme: one table of 15 columns scrolled sideways at 1024 px.
-    for k, (title, columns) in enumerate(PERF_TABLES.items()):
-        st.markdown(f"**{title}**")
-        st.dataframe(
-            performance_styler(pdf, columns),
-            hide_index=True,
-            width="stretch",
-            height=min(35 * (len(pdf) + 1) + 3, 900),  # every row of a usual sweep in sight
-            column_config={c: st.column_config.Column(help=h) for c, h in PERF_HELP.items()},
-            key="performance_table" if k == 0 else f"performance_table_{k + 1}",
+    # Three static tables by theme, headers that wrap: one grid of 15 columns scrolled sideways
+    # at 1024 px (the result column is under 400 px wide there).
+    for title, columns in PERF_TABLES.items():
+        st.markdown(
+            f"**{title}**", help=" ".join(PERF_HELP[c] for c in columns if c in PERF_HELP) or None
         )
+        st.table(performance_styler(pdf, columns))
     st.caption("Rows with a red background break an operating limit (last column says which).")
     st.download_button(
         "Performance table (CSV)",
@@ -246,10 +245,15 @@ with col_out:
         f"Rule set: **{rules.name}** ({rules.title}). "
         + (f"Sized by: {s['binding_constraint'].replace('_', ' ')}." if rep["sized"] else "")
     )
-    with st.expander("Constraint table: every limit, its margin and where it is checked",
-                     icon=":material/rule:"):
-        st.dataframe(pd.DataFrame(widgets.constraint_table_rows(rep["constraints"])),
-                     hide_index=True, width="stretch", key="constraint_table")
+    with st.expander(
+        "Constraint table: every limit, its margin and where it is checked", icon=":material/rule:"
+    ):
+        st.dataframe(
+            pd.DataFrame(widgets.constraint_table_rows(rep["constraints"])),
+            hide_index=True,
+            width="stretch",
+            key="constraint_table",
+        )
     if stale:
         st.warning(
             "These results are for the last valid inputs: your latest change was not applied "

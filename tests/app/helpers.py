@@ -49,12 +49,36 @@ def values(tr: dict, axis: str) -> np.ndarray:
     return np.array([np.nan if x is None else x for x in v], dtype=float)
 
 
+def shown_table(at: AppTest, first_column: str) -> pd.DataFrame:
+    """The texts a static table (``st.table`` of a styler) shows, by its first column."""
+    import pyarrow as pa
+
+    for t in at.table:
+        if len(t.value.columns) and t.value.columns[0] == first_column:
+            data = t.proto.arrow_data
+            if data.HasField("styler"):
+                return pa.ipc.open_stream(data.styler.display_values).read_all().to_pandas()
+            return t.value.astype(str)
+    raise KeyError(f"no static table starting with {first_column!r}")
+
+
+def table_with(at: AppTest, first_column: str, column: str) -> pd.DataFrame:
+    """The dataframe or static table whose first column is ``first_column`` and that has
+    ``column`` (pages show a wide table as several by theme)."""
+    for df in [*at.dataframe, *at.table]:
+        cols = list(df.value.columns)
+        if cols[:1] == [first_column] and column in cols:
+            return df.value
+    raise KeyError(f"no table starting with {first_column!r} with column {column!r}")
+
+
 def table(at: AppTest, first_column: str) -> pd.DataFrame:
-    """The dataframe element whose first column has this name."""
-    for df in at.dataframe:
+    """The dataframe (or static table) element whose first column has this name."""
+    elements = [*at.dataframe, *at.table]
+    for df in elements:
         if len(df.value.columns) and df.value.columns[0] == first_column:
             return df.value
-    cols = [df.value.columns[0] for df in at.dataframe if len(df.value.columns)]
+    cols = [df.value.columns[0] for df in elements if len(df.value.columns)]
     raise KeyError(f"no table starting with {first_column!r}; tables start with {cols}")
 
 

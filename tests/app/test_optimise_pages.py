@@ -13,12 +13,10 @@ from aerostat_core import thesis_baseline
 from aerostat_core.io import inputs_from_dict, inputs_to_dict
 from aerostat_core.optimize import DEFAULT_BOUNDS, VARIABLES
 from aerostat_core.sensitivity import one_at_a_time, two_variable_map
-from tests.app.helpers import chart, chart_keys, goto, messages, table, values
+from tests.app.helpers import chart, chart_keys, goto, messages, table, table_with, values
 
 SENS_PAGE = "pages/3_Sensitivity.py"
 OPT_PAGE = "pages/4_Optimise.py"
-
-
 
 
 @pytest.fixture
@@ -27,12 +25,15 @@ def at(thesis_at):
     (the app itself opens on the practice default)."""
     return thesis_at
 
+
 def _set(at, key, value):
     for kind in ("number_input", "radio", "selectbox", "text_input", "checkbox", "multiselect"):
         for el in getattr(at, kind):
             if getattr(el, "key", None) == key:
                 # number boxes are text boxes (read like the Design form's): type the number
-                typed = f"{value:g}" if kind == "text_input" and not isinstance(value, str) else value
+                typed = (
+                    f"{value:g}" if kind == "text_input" and not isinstance(value, str) else value
+                )
                 el.set_value(typed)
                 return
     raise KeyError(key)
@@ -73,11 +74,16 @@ def test_sensitivity_sweeps_plot_the_engine_values(sens):
         assert np.all(y <= req.blow_by_limit * (1 + 1e-6))
         on = res.sweeps[name].designs.binding == "blow_by"
         assert on.sum() >= 4 and np.allclose(y[on], req.blow_by_limit, rtol=1e-6)
-    df = table(sens, "Variable")
-    assert list(df["Low"]) == pytest.approx([shown(k, DEFAULT_BOUNDS[k][0]) for k in VARIABLES])
-    assert df["Variable"].iloc[2] == "Fin position Δl_f (root LE) [% of hull length]"
-    assert df["Low"].iloc[2] == pytest.approx(60.0)
-    assert df["Mass change at high [%]"].iloc[1] == pytest.approx(
+    # the range summary, transposed (one column per variable, so it fits at 1024 px)
+    df = table(sens, "Over each range").set_index("Over each range")
+    from app_ui.optimise_view import var_label
+
+    assert list(df.columns) == [var_label(k) for k in VARIABLES]
+    assert df.columns[2] == "Fin position Δl_f (root LE) [% of hull length]"
+    low = df.loc["Low end of the range"]
+    assert list(low) == pytest.approx([shown(k, DEFAULT_BOUNDS[k][0]) for k in VARIABLES])
+    assert low.iloc[2] == pytest.approx(60.0)
+    assert df.loc["Mass change at the high end [%]"].iloc[1] == pytest.approx(
         res.summary_rows()[1]["mass_change_high_pct"]
     )
 
@@ -169,7 +175,11 @@ def test_optimise_quick_run_shows_agreeing_solvers_and_every_plot(ran):
     mass = df["Total mass [kg]"].to_numpy()
     assert np.ptp(mass) / mass.min() < 0.01
     assert np.allclose(df["Blow-by [m]"], thesis_baseline()[0].blow_by_limit, rtol=1e-6)
-    assert (df["Evaluations"] > 0).all() and (df["Time [s]"] > 0).all()
+    runs = table_with(ran, "Solver", "Evaluations")  # the comparison by theme, 3 tables
+    assert list(runs["Solver"]) == list(df["Solver"])
+    assert (runs["Evaluations"] > 0).all() and (runs["Time [s]"] > 0).all()
+    variables = table_with(ran, "Solver", "Δl_f [% of l]")
+    assert ((variables["Δl_f [% of l]"] >= 40) & (variables["Δl_f [% of l]"] <= 95)).all()
     assert any("Spread of the optimum total mass" in s for s in messages(ran, "success"))
     assert chart_keys(ran) == ["opt_convergence", "opt_performance", "opt_pareto"]
     conv = chart(ran, "opt_convergence")
