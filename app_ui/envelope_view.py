@@ -23,9 +23,10 @@ from aerostat_core.io import inputs_from_dict
 from aerostat_core.site_wind import MAX_CSV_BYTES, WeibullSite, flyable_time, read_wind_csv
 from aerostat_core.uncertainty import monte_carlo, rule_set_spread
 
-from . import cache
+from . import cache, entry
 from .plots import WIND_AXIS
 from .theme import MARGIN, PALETTE
+from .widgets import plain
 
 SITE_KEY = "envelope_site"  # session key: {"kind": "weibull", ...} or {"kind": "csv", ...}
 MC_KEY = "envelope_mc"  # session key: {"n": N, "seed": S} once the user ran it
@@ -251,22 +252,38 @@ def report_button(inputs_json: str) -> None:
     )
 
 
+#: The site form's number boxes: key -> (label, default, lowest, highest, unit).
+_SITE_BOXES = {
+    "site_k": ("Weibull k [-]", 2.0, 0.5, 10.0, "-"),
+    "site_c": ("Weibull c [m/s]", 6.0, 0.1, 40.0, "m/s"),
+    "site_zref": ("Reference height [m]", 10.0, 1.0, 1000.0, "m"),
+    "site_alpha": ("Shear exponent [-]", round(1 / 7, 3), 0.0, 0.6, "-"),
+}
+
+
 def _site_form() -> None:
     with st.form("site_form", border=True):
         st.markdown("**Site wind**")
         kind = st.radio("Source", ["Weibull", "Hourly CSV"], horizontal=True, key="site_kind")
         c = st.columns(4)
-        k = c[0].number_input("Weibull k [-]", 0.5, 10.0, 2.0, 0.1, key="site_k")
-        cc = c[1].number_input("Weibull c [m/s]", 0.1, 40.0, 6.0, 0.5, key="site_c")
-        zr = c[2].number_input("Reference height [m]", 1.0, 1000.0, 10.0, 1.0, key="site_zref")
-        al = c[3].number_input(
-            "Shear exponent [-]", 0.0, 0.6, round(1 / 7, 3), 0.01, key="site_alpha"
-        )
+        # text boxes read like the Design form's ("2,5" is 2.5, never 25)
+        texts = {
+            key: entry.number_box(label, key=key, value=default, container=col)
+            for col, (key, (label, default, _lo, _hi, _u)) in zip(c, _SITE_BOXES.items())
+        }
         target = st.slider("Target availability [%]", 50.0, 99.9, 95.0, 0.1, key="site_target")
         up = st.file_uploader(
             "Hourly wind CSV (timestamp, speed [m/s])", type=["csv"], key="site_csv"
         )
         if st.form_submit_button("Compute flyable time", icon=":material/air:"):
+            try:
+                k, cc, zr, al = (
+                    entry.read(texts[key], label, lo=lo, hi=hi, unit=u)
+                    for key, (label, _d, lo, hi, u) in _SITE_BOXES.items()
+                )
+            except ValueError as exc:
+                st.session_state[SITE_KEY] = {"error": str(exc)}
+                return
             spec: dict[str, Any] = {
                 "kind": "csv" if kind == "Hourly CSV" else "weibull",
                 "shape": k,
@@ -341,8 +358,13 @@ def _uncertainty(inputs_json: str, rep: dict) -> None:
     with st.form("mc_form", border=False):
         c = st.columns([1, 1, 1], vertical_alignment="bottom")
         n = c[0].selectbox("Monte Carlo samples", MC_SIZES, index=2, key="mc_n")
-        seed = c[1].number_input("Seed", 0, 2**31 - 1, 0, 1, key="mc_seed")
+        seed_text = entry.number_box("Seed", key="mc_seed", value=0, integer=True, container=c[1])
         if c[2].form_submit_button("Run Monte Carlo", icon=":material/casino:"):
+            try:
+                seed = entry.read(seed_text, "Seed", integer=True, lo=0, hi=2**31 - 1)
+            except ValueError as exc:
+                st.error(plain(str(exc)), icon=":material/error:")
+                return
             st.session_state[MC_KEY] = {"n": int(n), "seed": int(seed)}
     run = st.session_state.get(MC_KEY)
     if not run:

@@ -12,7 +12,8 @@ import streamlit as st
 
 from aerostat_core.mission import BALLONET_MODES, POWER_ROUTES
 
-from . import cache, state
+from . import cache, entry, state
+from .widgets import plain
 
 #: Labels of the choices (the values are the engine's).
 POWER_LABELS = {"onboard": "Onboard battery", "tether": "Through the tether"}
@@ -29,6 +30,21 @@ def _fmt(v: float | None, digits: int = 1) -> str:
     return "never" if v is None else f"{v:,.{digits}f}"
 
 
+#: The mission form's number boxes: key -> (label, lowest, highest, unit).
+_BOXES = {
+    "mission_power": ("Payload power [W]", 0.0, 1e5, "W"),
+    "mission_endurance": ("Endurance without top-up [day]", 0.0, 365.0, "day"),
+    "mission_deployment": ("Deployment length [day]", 0.0, 3650.0, "day"),
+    "mission_superheat": ("Gas superheat [K]", 0.0, 40.0, "K"),
+}
+
+
+def _read(key: str) -> float:
+    """A mission box's number (a decimal comma is a decimal point); ValueError names the box."""
+    label, lo, hi, unit = _BOXES[key]
+    return float(entry.read(st.session_state.get(key), label, lo=lo, hi=hi, unit=unit))
+
+
 def _apply() -> None:
     """Form callback: write the mission inputs into the current design inputs."""
     ss = st.session_state
@@ -36,17 +52,17 @@ def _apply() -> None:
     try:
         req2 = replace(
             req,
-            payload_power=float(ss["mission_power"]),
+            payload_power=_read("mission_power"),
             power_via=ss["mission_power_via"],
-            endurance_days=float(ss["mission_endurance"]),
-            deployment_days=float(ss["mission_deployment"]),
+            endurance_days=_read("mission_endurance"),
+            deployment_days=_read("mission_deployment"),
         )
         cfg2 = replace(
             cfg,
             mission=replace(
                 cfg.mission,
                 ballonet=ss["mission_ballonet"],
-                superheat=float(ss["mission_superheat"]),
+                superheat=_read("mission_superheat"),
             ),
         )
     except ValueError as exc:
@@ -60,13 +76,11 @@ def _inputs(req, cfg) -> None:
     with st.form(FORM_KEY, border=True):
         st.markdown("**Mission inputs** (off by default: no power, no endurance requirement)")
         c = st.columns(3)
-        c[0].number_input(
+        entry.number_box(
             "Payload power [W]",
-            min_value=0.0,
-            max_value=1e5,
-            value=float(req.payload_power),
-            step=10.0,
             key="mission_power",
+            value=req.payload_power,
+            container=c[0],
             help="Electrical power the payload draws (thesis Table 2.4); 0 models no supply.",
         )
         c[1].selectbox(
@@ -78,24 +92,20 @@ def _inputs(req, cfg) -> None:
             help="An onboard battery adds its mass; through the tether adds copper conductors "
             "to the tether (mass, diameter and drag, strength).",
         )
-        c[2].number_input(
+        entry.number_box(
             "Endurance without top-up [day]",
-            min_value=0.0,
-            max_value=365.0,
-            value=float(req.endurance_days),
-            step=1.0,
             key="mission_endurance",
+            value=req.endurance_days,
+            container=c[2],
             help="Days the free-lift margin must last while helium permeates out (thesis §2.3: "
             "tactical 5-7 days). 0: no requirement.",
         )
         c = st.columns(3)
-        c[0].number_input(
+        entry.number_box(
             "Deployment length [day]",
-            min_value=0.0,
-            max_value=3650.0,
-            value=float(req.deployment_days),
-            step=5.0,
             key="mission_deployment",
+            value=req.deployment_days,
+            container=c[0],
             help="Period over which the helium top-up gas and its cost are reported.",
         )
         c[1].selectbox(
@@ -107,19 +117,17 @@ def _inputs(req, cfg) -> None:
             help="The thesis flies below 500 m without one (§2.2.1(c)); a built ballonet adds its "
             "fabric to the mass breakdown.",
         )
-        c[2].number_input(
+        entry.number_box(
             "Gas superheat [K]",
-            min_value=0.0,
-            max_value=40.0,
-            value=float(cfg.mission.superheat),
-            step=1.0,
             key="mission_superheat",
+            value=cfg.mission.superheat,
+            container=c[2],
             help="Day-time gas temperature above ambient at the operating altitude.",
         )
         st.form_submit_button("Apply mission inputs", on_click=_apply, icon=":material/send:")
     err = st.session_state.get(ERROR_KEY)
     if err:
-        st.error(err, icon=":material/error:")
+        st.error(plain(err), icon=":material/error:")
 
 
 def render(d) -> None:
