@@ -50,6 +50,7 @@ from aerostat_core.dynamics.turbulence import DRYDEN_W20
 from aerostat_core.io import inputs_from_dict, inputs_to_dict
 from aerostat_core.presets import thesis_optimised_label
 
+from . import entry
 from .theme import ACCENT, FONT, MARGIN, SECOND, THIRD
 from .theme import LIMIT_COLOUR as LIMIT
 
@@ -96,6 +97,8 @@ def _num(form: Mapping[str, Any], key: str, integer: bool = False) -> float:
     label, lo, hi, unit = RANGES[key]
     v = form.get(key)
     u = "" if unit == "-" else f" {unit}"
+    if isinstance(v, str):  # a text box: read like the Design form's ("12,5" is 12.5)
+        v = entry.read(v, label)
     try:
         x = float(v)
     except (TypeError, ValueError):
