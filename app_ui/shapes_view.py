@@ -31,7 +31,7 @@ from aerostat_core.shape_comparison import (
 from aerostat_core.shape_optimize import fineness_sweeps, optimise_shapes
 from aerostat_core.shapes import SHAPE_INFO, profile_radius_ratio
 
-from . import entry
+from . import entry, formats
 from .theme import PALETTE, base_layout
 from .widgets import plain
 
@@ -156,7 +156,7 @@ def study_frame(rows: list[dict], objective: str) -> pd.DataFrame:
         objective: objective,
         "fineness_ratio": "l/d [-]",
         "area_change_pct": "ΔS_f [%]",
-        "position": "Δl_f [-]",
+        "position": "Δl_f [% of l]",  # % of the hull length, as on every page
         "volume_m3": "Volume [m³]",
         "total_mass_kg": "Total mass [kg]",
         "blow_by_m": "Blow-by [m]",
@@ -164,7 +164,23 @@ def study_frame(rows: list[dict], objective: str) -> pd.DataFrame:
         "message": "Note",
     }
     df = pd.DataFrame(rows)
+    if "position" in df:  # the engine's fraction of the hull length -> %
+        df["position"] = pd.to_numeric(df["position"], errors="coerce") * 100.0
     return df[[k for k in names if k in df.columns]].rename(columns=names)
+
+
+#: Column formats of :func:`study_frame` (decimals from :mod:`app_ui.formats`).
+STUDY_FORMAT = {
+    col: st.column_config.NumberColumn(format=formats.printf(q))
+    for col, q in (
+        ("l/d [-]", "fineness_ratio"),
+        ("ΔS_f [%]", "area_change"),
+        ("Δl_f [% of l]", "position"),
+        ("Volume [m³]", "volume"),
+        ("Total mass [kg]", "total_mass"),
+        ("Blow-by [m]", "blow_by"),
+    )
+}
 
 
 # --- figures ---------------------------------------------------------------------------------
