@@ -9,7 +9,18 @@ import streamlit as st
 from aerostat_core import thesis_baseline
 from aerostat_core.io import design_to_json
 from aerostat_core.report import tether_profile_rows
-from app_ui import cache, envelope_view, formats, mission_view, plots, shapes_view, state, widgets
+from app_ui import (
+    cache,
+    envelope_view,
+    formats,
+    mission_view,
+    plots,
+    preload,
+    shapes_view,
+    side_view,
+    state,
+    widgets,
+)
 from app_ui.tables import (
     PERF_HELP,
     PERF_TABLES,
@@ -62,19 +73,17 @@ TAB_KEY = "design_tab"
 
 
 def _geometry_tab(rep: dict) -> None:
-    st.plotly_chart(plots.side_view_figure(rep), key="side_view")
-    # The table over the whole result column: beside the notes it was 200 px wide at 1024 px
-    # and scrolled sideways.
+    # Static drawing and table on the first tab: a plotly chart or a data grid here pulled
+    # 5 MB of JavaScript into a fresh browser before the first result (the interactive side
+    # view is on the 3-D view tab).
+    st.html(side_view.side_view_svg(rep))
+    st.caption(
+        "Side view to scale, level hull, nose on the left: CB centre of buoyancy (green), "
+        "CG centre of gravity (black), C confluence point (red), confluence lines schematic."
+    )
     g1, g2 = st.container(), st.container()
     with g1:
-        st.dataframe(
-            plots.geometry_styler(geometry_frame(rep["geometry_rows"])),
-            hide_index=True,
-            width="stretch",
-            # every row in sight (it showed 12 of 26): 35 px a row plus the header
-            height=35 * (len(rep["geometry_rows"]) + 1) + 3,
-            key="geometry_table",
-        )
+        st.table(plots.geometry_styler(geometry_frame(rep["geometry_rows"])).hide(axis="index"))
     with g2:
         st.markdown(
             "**Reading the geometry.** ξ is measured from the nose, aft positive; z is up. "
@@ -248,11 +257,8 @@ with col_out:
     with st.expander(
         "Constraint table: every limit, its margin and where it is checked", icon=":material/rule:"
     ):
-        st.dataframe(
-            pd.DataFrame(widgets.constraint_table_rows(rep["constraints"])),
-            hide_index=True,
-            width="stretch",
-            key="constraint_table",
+        st.table(  # static: a data grid here loaded 1 MB of JavaScript before the first result
+            pd.DataFrame(widgets.constraint_table_rows(rep["constraints"])).style.hide(axis="index")
         )
     if stale:
         st.warning(
@@ -379,6 +385,7 @@ with col_out:
                 "Drag to rotate, scroll to zoom. Fins in orange; confluence lines are "
                 "schematic (the engine models only the confluence point)."
             )
+            st.plotly_chart(plots.side_view_figure(rep), key="side_view")
     with tabs["Mass"]:
         if tabs["Mass"].open:
             _mass_tab(rep)
@@ -394,3 +401,6 @@ with col_out:
     with tabs["Envelope"]:
         if tabs["Envelope"].open:
             envelope_view.render(state.current_inputs_key(), rep)
+
+# Last element: the chart and grid code loads while the user reads the first result.
+preload.warm_bundles()

@@ -145,3 +145,33 @@ def goto(at: AppTest, page: str) -> AppTest:
     at.switch_page(page)
     at.run()
     return at
+
+
+def side_view(at: AppTest) -> dict:
+    """The Design page's static side view (an SVG drawn to scale): its scale [px/m], the hull
+    outline's extent in metres, and the marked points {key: (xi, z)} [m]."""
+    import xml.etree.ElementTree as ET
+
+    for el in at.get("html"):
+        body = el.proto.body
+        if 'data-testid="side-view"' not in body:
+            continue
+        root = ET.fromstring(body)
+        ns = "{http://www.w3.org/2000/svg}"
+        scale = float(root.get("data-scale"))
+        hull = next(e for e in root.iter(f"{ns}polygon") if e.get("data-part") == "hull")
+        xy = np.array([[float(v) for v in p.split(",")] for p in hull.get("points").split()])
+        points = {
+            g.get("data-point"): (float(g.get("data-xi")), float(g.get("data-z")))
+            for g in root.iter(f"{ns}g")
+            if g.get("data-point")
+        }
+        parts = [e.get("data-part") for e in root.iter() if e.get("data-part")]
+        return {
+            "scale": scale,
+            "hull_length": float(np.ptp(xy[:, 0])) / scale,
+            "hull_height": float(np.ptp(xy[:, 1])) / scale,
+            "points": points,
+            "parts": parts,
+        }
+    raise KeyError("no side view on the page")

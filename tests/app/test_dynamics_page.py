@@ -35,7 +35,9 @@ def _set(at: AppTest, key: str, value) -> None:
         for el in getattr(at, kind):
             if getattr(el, "key", None) == key:
                 # the number boxes are text boxes (read like the Design form's)
-                typed = f"{value:g}" if kind == "text_input" and not isinstance(value, str) else value
+                typed = (
+                    f"{value:g}" if kind == "text_input" and not isinstance(value, str) else value
+                )
                 el.set_value(typed)
                 return
     raise KeyError(key)
@@ -210,7 +212,8 @@ def test_second_click_return_and_second_session_replay_from_the_store(dyn):
     assert not at.exception
     at = _run(at)
     assert values(trace(chart(at, "dyn_position"), "blow-by x_C [m]"), "y") == pytest.approx(
-        values(trace(first, "blow-by x_C [m]"), "y"))
+        values(trace(first, "blow-by x_C [m]"), "y")
+    )
     other = AppTest.from_file(str(APP_PATH), default_timeout=180)  # a second session
     other.run()
     other.switch_page(DYN_PAGE)

@@ -54,8 +54,9 @@ def test_bad_wind_csv_gets_a_message_not_a_traceback(at):
     at.run()
     assert not at.exception
     # the cell is quoted as plain text, its markdown escaped
-    assert any(r"row 1: '\*\*gusty\*\*' is not a wind speed" in m
-               for m in raw_messages(at, "error"))
+    assert any(
+        r"row 1: '\*\*gusty\*\*' is not a wind speed" in m for m in raw_messages(at, "error")
+    )
 
 
 def test_site_boxes_read_a_decimal_comma_or_name_the_box(at):

@@ -17,6 +17,7 @@ def at(thesis_at):
     """The thesis baseline (given volume), as these checks assume."""
     return thesis_at
 
+
 def test_mission_tab_shows_the_design_mission_outputs(at):
     show_tab(at, "Mission")
     assert not at.exception
