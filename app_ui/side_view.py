@@ -5,8 +5,8 @@ bundle that a chart pulls in held the first result back by about 3 s on 2 busy c
 (benchmarks/bench_app.py, first result in a fresh browser). The drawing needs no interaction;
 the interactive side view sits in the 3-D view tab. Pure: data in, SVG text out (no Streamlit).
 
-Every marked point carries its coordinates (``data-xi``, ``data-z`` in metres) and a hover title,
-so a test can read back what is drawn.
+Shown with ``st.image`` (an ``<img>`` of a data URL: ``st.html`` strips SVG). Every marked point
+carries its coordinates (``data-xi``, ``data-z`` in metres), so a test reads back what is drawn.
 """
 
 from __future__ import annotations

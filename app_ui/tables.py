@@ -91,6 +91,9 @@ PERF_TABLES: dict[str, tuple[str, ...]] = {
     ),
 }
 LIMIT_ROW_STYLE = "background-color: #fde2e2"
+#: Table styles of a static table whose text cells wrap: Streamlit lets a cell grow to a wide
+#: maximum before it wraps, which made the geometry table scroll at 1024 px.
+WRAP = [{"selector": "td > *, th > *", "props": "max-width: 14em; white-space: normal;"}]
 DIFF_ROW_STYLE = "background-color: #fff3c4"
 
 
@@ -114,10 +117,27 @@ def geometry_styler(df: pd.DataFrame) -> Styler:
     rows: dict[str, list] = {}  # kind -> row labels: one format call per kind, not per row
     for i, q, u in zip(df.index, df["Quantity"], df["Unit"]):
         rows.setdefault(formats.kind_of_unit(_SHOWN_UNIT.get(str(u), str(u)), str(q)), []).append(i)
-    styler = df.style
+    styler = df.style.set_table_styles(WRAP)
     for kind, idx in rows.items():
         styler = styler.format(formats.formatter(kind), subset=pd.IndexSlice[idx, ["Value"]])
     return styler
+
+
+def constraint_styler(df: pd.DataFrame) -> Styler:
+    """The constraint table as a static table that fits at 1024 px: the unit joined to the
+    value, limit and margin, where it is checked joined to the constraint (two columns less),
+    text cells that wrap, no index."""
+    if "Unit" in df:
+        unit = df["Unit"].map(lambda u: "" if u in ("-", "", None) else f" {formats.unit(u)}")
+        for col in ("Value", "Limit", "Margin"):
+            if col in df:
+                df = df.assign(**{col: df[col].astype(str) + unit})
+        df = df.drop(columns=["Unit"])
+    if "Checked at" in df and "Constraint" in df:  # "Blow-by, at 15 m/s": one column less
+        at = df["Checked at"].astype(str).map(lambda t: f", at {t}" if t.strip() else "")
+        df = df.assign(Constraint=df["Constraint"].astype(str) + at).drop(columns=["Checked at"])
+    wrap = [{"selector": "td > *, th > *", "props": "max-width: 7em; white-space: normal;"}]
+    return df.style.set_table_styles(wrap).hide(axis="index")
 
 
 def mass_frame(rows: Sequence[Mapping[str, Any]]) -> pd.DataFrame:

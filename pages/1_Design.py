@@ -24,6 +24,7 @@ from app_ui import (
 from app_ui.tables import (
     PERF_HELP,
     PERF_TABLES,
+    constraint_styler,
     geometry_frame,
     mass_frame,
     performance_frame,
@@ -76,7 +77,7 @@ def _geometry_tab(rep: dict) -> None:
     # Static drawing and table on the first tab: a plotly chart or a data grid here pulled
     # 5 MB of JavaScript into a fresh browser before the first result (the interactive side
     # view is on the 3-D view tab).
-    st.html(side_view.side_view_svg(rep))
+    st.image(side_view.side_view_svg(rep), width="stretch")  # an SVG, sent as a data URL
     st.caption(
         "Side view to scale, level hull, nose on the left: CB centre of buoyancy (green), "
         "CG centre of gravity (black), C confluence point (red), confluence lines schematic."
@@ -257,9 +258,9 @@ with col_out:
     with st.expander(
         "Constraint table: every limit, its margin and where it is checked", icon=":material/rule:"
     ):
-        st.table(  # static: a data grid here loaded 1 MB of JavaScript before the first result
-            pd.DataFrame(widgets.constraint_table_rows(rep["constraints"])).style.hide(axis="index")
-        )
+        # static, cells that wrap: a data grid here loaded 1 MB of JavaScript before the first
+        # result, and scrolled sideways at 1024 px
+        st.table(constraint_styler(pd.DataFrame(widgets.constraint_table_rows(rep["constraints"]))))
     if stale:
         st.warning(
             "These results are for the last valid inputs: your latest change was not applied "

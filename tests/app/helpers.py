@@ -152,8 +152,12 @@ def side_view(at: AppTest) -> dict:
     outline's extent in metres, and the marked points {key: (xi, z)} [m]."""
     import xml.etree.ElementTree as ET
 
-    for el in at.get("html"):
-        body = el.proto.body
+    for el in at.get("image"):  # st.image of an SVG string: a base64 data URL
+        urls = [img.url for img in el.proto.imgs]
+        svg = [u for u in urls if u.startswith("data:image/svg+xml;base64,")]
+        if not svg:
+            continue
+        body = base64.b64decode(svg[0].split(",", 1)[1]).decode("utf-8")
         if 'data-testid="side-view"' not in body:
             continue
         root = ET.fromstring(body)
