@@ -50,7 +50,7 @@ from aerostat_core.dynamics.turbulence import DRYDEN_W20
 from aerostat_core.io import inputs_from_dict, inputs_to_dict
 from aerostat_core.presets import thesis_optimised_label
 
-from . import entry
+from . import entry, formats
 from .theme import ACCENT, FONT, MARGIN, SECOND, THIRD
 from .theme import LIMIT_COLOUR as LIMIT
 
@@ -417,8 +417,10 @@ def current_inputs_or_none(state: Mapping[str, Any]) -> dict | None:
 
 # --- figures ------------------------------------------------------------------------------------
 def _fig(data: list, title: str, xt: str, yt: str, **layout: Any) -> go.Figure:
+    # hover at the decimals of each axis' quantity (app_ui.formats), not 15 digits
     lay = dict(title=dict(text=title), font=FONT, margin=MARGIN, template="plotly_white",
-               xaxis=dict(title=dict(text=xt)), yaxis=dict(title=dict(text=yt)),
+               xaxis=dict(title=dict(text=xt), hoverformat=formats.axis_hover(xt)),
+               yaxis=dict(title=dict(text=yt), hoverformat=formats.axis_hover(yt)),
                legend=dict(orientation="h", y=-0.2), height=360)
     lay.update(layout)
     return go.Figure(dict(data=data, layout=lay))

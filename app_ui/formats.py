@@ -163,3 +163,15 @@ def formatter(quantity: str):
         return text(v, quantity)
 
     return fmt
+
+
+#: Axis unit -> kind, for figures whose axes carry their unit in brackets ("Height z [m]"):
+#: positions along and above the ground are distances (as the blow-by), not hull lengths.
+_KIND_OF_AXIS_UNIT = {**_KIND_OF_UNIT, "m": "distance", "s": "time", "kg": "mass"}
+
+
+def axis_hover(title: str) -> str:
+    """d3 hover format of an axis from the unit in its title ("Tension [N]" -> ".0f")."""
+    unit_text = title.rsplit("[", 1)[-1].rstrip("]") if "[" in title else "-"
+    raw = {"m³": "m3", "m²": "m2"}.get(unit_text, unit_text)
+    return d3(_KIND_OF_AXIS_UNIT.get(raw, "ratio"))

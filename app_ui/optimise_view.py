@@ -79,6 +79,7 @@ from .optimize_tables import (
     summary_frame,
     summary_table,
     sweep_frame,
+    sweep_styler,
     thesis_frame,
 )
 from .plots_optimize import (
@@ -319,6 +320,7 @@ __all__ = [
     "start_job",
     "summary_frame",
     "summary_table",
+    "sweep_styler",
     "sweep_frame",
     "thesis_frame",
     "unit",

@@ -17,6 +17,7 @@ from aerostat_core.sensitivity import SensitivityResult
 from . import formats
 from .cache import csv_bytes
 from .optimize_form import DISPLAY, shown, unit, var_label
+from .tables import WRAP
 
 
 def comparison_frame(results: Sequence[OptimisationResult]) -> pd.DataFrame:
@@ -279,6 +280,7 @@ COLUMN_KINDS = {
     "Time [s]": "time",
     "Evaluations": "count",
     "Batches": "count",
+    "Dynamic lift [N]": "dynamic_lift",
 }
 #: The solver comparison as three static tables (14 columns scrolled sideways at 1024 px).
 COMPARISON_TABLES: dict[str, tuple[str, ...]] = {
@@ -325,4 +327,17 @@ def styled(df: pd.DataFrame, columns: Sequence[str] | None = None) -> Styler:
     decimals of its quantity, no index."""
     shown_df = df if columns is None else df[list(columns)]
     fmt = {c: formats.formatter(COLUMN_KINDS[c]) for c in shown_df.columns if c in COLUMN_KINDS}
-    return shown_df.style.format(fmt, na_rep="–").hide(axis="index")
+    return shown_df.style.format(fmt, na_rep="–").set_table_styles(WRAP).hide(axis="index")
+
+
+def sweep_styler(df: pd.DataFrame) -> Styler:
+    """:func:`sweep_frame` as a static table: each variable's values at its own decimals."""
+    styler = styled(df)
+    labels = {var_label(n): n for n in _VAR_KIND}
+    for label, name in labels.items():
+        rows = list(df.index[df["Variable"] == label])
+        if rows:
+            styler = styler.format(
+                formats.formatter(_VAR_KIND[name]), subset=pd.IndexSlice[rows, ["Value"]]
+            )
+    return styler

@@ -41,7 +41,9 @@ def warm_bundles() -> None:
         f"const urls = {json.dumps(list(urls))};"
         "const go = () => urls.forEach(u => import(new URL(u, document.baseURI).href)"
         ".catch(() => {}));"
-        "(window.requestIdleCallback || ((f) => setTimeout(f, 500)))(go, {timeout: 3000});"
+        # 2 s after the first result (not on the user's first click), then when idle
+        "setTimeout(() => (window.requestIdleCallback || ((f) => setTimeout(f, 0)))"
+        "(go, {timeout: 3000}), 2000);"
         "})();</script>"
     )
     st.html(script, unsafe_allow_javascript=True)

@@ -203,8 +203,10 @@ def blow_by_figure(cmp: Mapping[str, Any], title: str) -> go.Figure:
             layout=base_layout(
                 title,
                 height=420,
-                xaxis=dict(title=dict(text=WIND_AXIS)),
-                yaxis=dict(title=dict(text="Blow-by [m]")),
+                xaxis=dict(title=dict(text=WIND_AXIS), hoverformat=formats.axis_hover(WIND_AXIS)),
+                yaxis=dict(
+                    title=dict(text="Blow-by [m]"), hoverformat=formats.axis_hover("Blow-by [m]")
+                ),
             ),
         )
     )
@@ -235,8 +237,16 @@ def profiles_figure(shapes: list[str] | None = None) -> go.Figure:
             layout=base_layout(
                 "Hull profiles at their standard fineness ratio (length = 1)",
                 height=460,
-                xaxis=dict(title=dict(text="Station ξ / l [-]")),
-                yaxis=dict(title=dict(text="Radius r / l [-]"), scaleanchor="x", scaleratio=1),
+                xaxis=dict(
+                    title=dict(text="Station ξ / l [-]"),
+                    hoverformat=formats.axis_hover("Station ξ / l [-]"),
+                ),
+                yaxis=dict(
+                    title=dict(text="Radius r / l [-]"),
+                    hoverformat=formats.axis_hover("Radius r / l [-]"),
+                    scaleanchor="x",
+                    scaleratio=1,
+                ),
             ),
         )
     )
@@ -266,8 +276,15 @@ def sweeps_figure(sweeps: Mapping[str, Mapping[str, list]]) -> go.Figure:
             layout=base_layout(
                 "Sized total mass versus fineness ratio, per shape",
                 height=440,
-                xaxis=dict(title=dict(text="Fineness ratio l/d [-]")),
-                yaxis=dict(title=dict(text="Total mass [kg]"), type="log"),
+                xaxis=dict(
+                    title=dict(text="Fineness ratio l/d [-]"),
+                    hoverformat=formats.axis_hover("Fineness ratio l/d [-]"),
+                ),
+                yaxis=dict(
+                    title=dict(text="Total mass [kg]"),
+                    hoverformat=formats.axis_hover("Total mass [kg]"),
+                    type="log",
+                ),
             ),
         )
     )

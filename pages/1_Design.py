@@ -76,12 +76,14 @@ TAB_KEY = "design_tab"
 def _geometry_tab(rep: dict) -> None:
     # Static drawing and table on the first tab: a plotly chart or a data grid here pulled
     # 5 MB of JavaScript into a fresh browser before the first result (the interactive side
-    # view is on the 3-D view tab).
+    # view is a toggle away).
     st.image(side_view.side_view_svg(rep), width="stretch")  # an SVG, sent as a data URL
     st.caption(
         "Side view to scale, level hull, nose on the left: CB centre of buoyancy (green), "
         "CG centre of gravity (black), C confluence point (red), confluence lines schematic."
     )
+    if st.toggle("Interactive side view (zoom, hover)", key="side_view_interactive"):
+        st.plotly_chart(plots.side_view_figure(rep), key="side_view")
     g1, g2 = st.container(), st.container()
     with g1:
         st.table(plots.geometry_styler(geometry_frame(rep["geometry_rows"])).hide(axis="index"))
@@ -386,7 +388,6 @@ with col_out:
                 "Drag to rotate, scroll to zoom. Fins in orange; confluence lines are "
                 "schematic (the engine models only the confluence point)."
             )
-            st.plotly_chart(plots.side_view_figure(rep), key="side_view")
     with tabs["Mass"]:
         if tabs["Mass"].open:
             _mass_tab(rep)

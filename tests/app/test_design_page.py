@@ -235,8 +235,8 @@ def test_side_view_marks_buoyancy_gravity_and_confluence(at):
     assert side["points"]["c"] == pytest.approx((float(af.xi_c), float(af.z_c)))
     assert side["hull_length"] == pytest.approx(float(af.hull.length), rel=1e-3)
     assert side["parts"].count("confluence line") >= 2 and "fin" in side["parts"]
-    # the interactive side view on the 3-D view tab: the same points
-    show_tab(at, "3-D view")
+    # the interactive side view, a toggle away: the same points
+    at.toggle(key="side_view_interactive").set_value(True).run()
     fig = chart(at, "side_view")
     cb = trace(fig, "centre of buoyancy (CB)")
     cg = trace(fig, "centre of gravity (CG)")
@@ -451,7 +451,7 @@ def test_downloads_are_offered_in_every_tab(at):
 def test_only_the_open_tab_is_computed(at):
     assert chart_keys(at) == []  # the first tab draws no chart: its side view is static
     show_tab(at, "3-D view")
-    assert chart_keys(at) == ["hull_3d", "side_view"]
+    assert chart_keys(at) == ["hull_3d"]
     show_tab(at, "Performance")
     assert chart_keys(at) == ["perf_blow_by", "perf_alpha", "perf_lift", "perf_tension", "perf_cm"]
     submit(at, in_payload=12.0)  # the open tab stays open after a change
