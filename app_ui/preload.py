@@ -39,11 +39,13 @@ def warm_bundles() -> None:
         "<script>(() => {"
         "if (window.__aerostatWarm) return; window.__aerostatWarm = true;"
         f"const urls = {json.dumps(list(urls))};"
-        "const go = () => urls.forEach(u => import(new URL(u, document.baseURI).href)"
-        ".catch(() => {}));"
-        # 2 s after the first result (not on the user's first click), then when idle
+        # one after the other (the chart bundle first): two at once made both late
+        "const go = () => urls.reduce((p, u) => p.then(() => import("
+        "new URL(u, document.baseURI).href)).catch(() => {}), Promise.resolve());"
+        # a second after the first result (not during the first click on Update design),
+        # then when idle
         "setTimeout(() => (window.requestIdleCallback || ((f) => setTimeout(f, 0)))"
-        "(go, {timeout: 3000}), 2000);"
+        "(go, {timeout: 300}), 800);"
         "})();</script>"
     )
     st.html(script, unsafe_allow_javascript=True)

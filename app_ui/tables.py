@@ -151,6 +151,12 @@ def mass_frame(rows: Sequence[Mapping[str, Any]]) -> pd.DataFrame:
     )
 
 
+def mass_styler(df: pd.DataFrame) -> Styler:
+    """:func:`mass_frame` as a static table: masses and shares at their decimals, no index."""
+    fmt = {"Mass [kg]": formats.formatter("mass"), "Share [%]": formats.formatter("share")}
+    return df.style.format(fmt).hide(axis="index")
+
+
 def performance_frame(rows: Sequence[Mapping[str, Any]]) -> pd.DataFrame:
     """Performance rows with display column names; ``limit_exceeded`` kept as the last column
     (the styler hides it)."""

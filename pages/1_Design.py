@@ -27,6 +27,7 @@ from app_ui.tables import (
     constraint_styler,
     geometry_frame,
     mass_frame,
+    mass_styler,
     performance_frame,
     performance_styler,
 )
@@ -109,16 +110,7 @@ def _mass_tab(rep: dict) -> None:
     # One above the other: beside the chart the table was 150 px wide at 1024 px and scrolled.
     m1, m2 = st.container(), st.container()
     with m1:
-        st.dataframe(
-            mass_frame(rep["mass_rows"]),
-            hide_index=True,
-            width="stretch",
-            column_config={
-                "Mass [kg]": st.column_config.NumberColumn(format=formats.printf("mass")),
-                "Share [%]": st.column_config.NumberColumn(format=formats.printf("share")),
-            },
-            key="mass_table",
-        )
+        st.table(mass_styler(mass_frame(rep["mass_rows"])))  # static: no grid bundle to load
         st.download_button(
             "Mass table (CSV)",
             data=cache.csv_bytes(rep["mass_rows"]),
