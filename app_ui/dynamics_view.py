@@ -50,12 +50,9 @@ from aerostat_core.dynamics.turbulence import DRYDEN_W20
 from aerostat_core.io import inputs_from_dict, inputs_to_dict
 from aerostat_core.presets import thesis_optimised_label
 
-ACCENT = "#1f5fa8"
-SECOND = "#e69f00"
-THIRD = "#009e73"
-LIMIT = "#c0392b"
-_FONT = dict(family="sans-serif", size=13)
-_MARGIN = dict(l=60, r=20, t=50, b=50)
+from . import entry, formats
+from .theme import ACCENT, FONT, MARGIN, SECOND, THIRD
+from .theme import LIMIT_COLOUR as LIMIT
 
 CURRENT = "Current design"
 THESIS = thesis_optimised_label()
@@ -100,6 +97,8 @@ def _num(form: Mapping[str, Any], key: str, integer: bool = False) -> float:
     label, lo, hi, unit = RANGES[key]
     v = form.get(key)
     u = "" if unit == "-" else f" {unit}"
+    if isinstance(v, str):  # a text box: read like the Design form's ("12,5" is 12.5)
+        v = entry.read(v, label)
     try:
         x = float(v)
     except (TypeError, ValueError):
@@ -418,8 +417,10 @@ def current_inputs_or_none(state: Mapping[str, Any]) -> dict | None:
 
 # --- figures ------------------------------------------------------------------------------------
 def _fig(data: list, title: str, xt: str, yt: str, **layout: Any) -> go.Figure:
-    lay = dict(title=dict(text=title), font=_FONT, margin=_MARGIN, template="plotly_white",
-               xaxis=dict(title=dict(text=xt)), yaxis=dict(title=dict(text=yt)),
+    # hover at the decimals of each axis' quantity (app_ui.formats), not 15 digits
+    lay = dict(title=dict(text=title), font=FONT, margin=MARGIN, template="plotly_white",
+               xaxis=dict(title=dict(text=xt), hoverformat=formats.axis_hover(xt)),
+               yaxis=dict(title=dict(text=yt), hoverformat=formats.axis_hover(yt)),
                legend=dict(orientation="h", y=-0.2), height=360)
     lay.update(layout)
     return go.Figure(dict(data=data, layout=lay))

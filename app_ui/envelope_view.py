@@ -23,9 +23,10 @@ from aerostat_core.io import inputs_from_dict
 from aerostat_core.site_wind import MAX_CSV_BYTES, WeibullSite, flyable_time, read_wind_csv
 from aerostat_core.uncertainty import monte_carlo, rule_set_spread
 
-from . import cache
-from .plots import PALETTE, WIND_AXIS
-from .show import spec_number
+from . import cache, entry
+from .plots import WIND_AXIS
+from .text import plain
+from .theme import MARGIN, PALETTE
 
 SITE_KEY = "envelope_site"  # session key: {"kind": "weibull", ...} or {"kind": "csv", ...}
 MC_KEY = "envelope_mc"  # session key: {"n": N, "seed": S} once the user ran it
@@ -218,7 +219,7 @@ def bands_figure(mc: dict, rep: dict) -> go.Figure:
             col=col,
         )
         fig.update_xaxes(title_text=WIND_AXIS, row=1, col=col)
-    fig.update_layout(height=380, margin={"l": 60, "r": 20, "t": 40, "b": 50})
+    fig.update_layout(height=380, margin={**MARGIN, "t": 40})
     return fig
 
 
@@ -251,20 +252,38 @@ def report_button(inputs_json: str) -> None:
     )
 
 
+#: The site form's number boxes: key -> (label, default, lowest, highest, unit).
+_SITE_BOXES = {  # key -> (WeibullSite field, default); label, unit, range from the registry
+    "site_k": ("shape", 2.0),
+    "site_c": ("scale", 6.0),
+    "site_zref": ("reference_height", 10.0),
+    "site_alpha": ("shear_exponent", round(1 / 7, 3)),
+}
+
+
 def _site_form() -> None:
     with st.form("site_form", border=True):
         st.markdown("**Site wind**")
         kind = st.radio("Source", ["Weibull", "Hourly CSV"], horizontal=True, key="site_kind")
         c = st.columns(4)
-        k = spec_number(c[0], WeibullSite, "shape", 2.0, "site_k")
-        cc = spec_number(c[1], WeibullSite, "scale", 6.0, "site_c")
-        zr = spec_number(c[2], WeibullSite, "reference_height", 10.0, "site_zref")
-        al = spec_number(c[3], WeibullSite, "shear_exponent", round(1 / 7, 3), "site_alpha")
+        # text boxes read like the Design form's ("2,5" is 2.5, never 25)
+        texts = {
+            key: entry.spec_box(col, WeibullSite, name, default, key)
+            for col, (key, (name, default)) in zip(c, _SITE_BOXES.items())
+        }
         target = st.slider("Target availability [%]", 50.0, 99.9, 95.0, 0.1, key="site_target")
         up = st.file_uploader(
             "Hourly wind CSV (timestamp, speed [m/s])", type=["csv"], key="site_csv"
         )
         if st.form_submit_button("Compute flyable time", icon=":material/air:"):
+            try:
+                k, cc, zr, al = (
+                    entry.spec_read(texts[key], WeibullSite, name)
+                    for key, (name, _d) in _SITE_BOXES.items()
+                )
+            except ValueError as exc:
+                st.session_state[SITE_KEY] = {"error": str(exc)}
+                return
             spec: dict[str, Any] = {
                 "kind": "csv" if kind == "Hourly CSV" else "weibull",
                 "shape": k,
@@ -339,8 +358,13 @@ def _uncertainty(inputs_json: str, rep: dict) -> None:
     with st.form("mc_form", border=False):
         c = st.columns([1, 1, 1], vertical_alignment="bottom")
         n = c[0].selectbox("Monte Carlo samples", MC_SIZES, index=2, key="mc_n")
-        seed = c[1].number_input("Seed", 0, 2**31 - 1, 0, 1, key="mc_seed")
+        seed_text = entry.number_box("Seed", key="mc_seed", value=0, integer=True, container=c[1])
         if c[2].form_submit_button("Run Monte Carlo", icon=":material/casino:"):
+            try:
+                seed = entry.read(seed_text, "Seed", integer=True, lo=0, hi=2**31 - 1)
+            except ValueError as exc:
+                st.error(plain(str(exc)), icon=":material/error:")
+                return
             st.session_state[MC_KEY] = {"n": int(n), "seed": int(seed)}
     run = st.session_state.get(MC_KEY)
     if not run:

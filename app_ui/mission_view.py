@@ -16,8 +16,7 @@ from aerostat_core.fields import spec_for_path
 from aerostat_core.mission import MissionSpec
 from aerostat_core.validation import InputError
 
-from . import cache, state
-from .show import spec_number
+from . import cache, entry, state
 from .text import plain
 
 #: Labels of the choices (the values are the engine's).
@@ -35,6 +34,21 @@ def _fmt(v: float | None, digits: int = 1) -> str:
     return "never" if v is None else f"{v:,.{digits}f}"
 
 
+#: The mission form's number boxes: key -> (input dataclass, field); label, unit and range come
+#: from the field registry.
+_BOXES = {
+    "mission_power": (Requirement, "payload_power"),
+    "mission_endurance": (Requirement, "endurance_days"),
+    "mission_deployment": (Requirement, "deployment_days"),
+    "mission_superheat": (MissionSpec, "superheat"),
+}
+
+
+def _read(key: str) -> float:
+    """A mission box's SI number (a decimal comma is a decimal point); ValueError names the box."""
+    return entry.spec_read(st.session_state.get(key), *_BOXES[key])
+
+
 def _apply() -> None:
     """Form callback: write the mission inputs into the current design inputs."""
     ss = st.session_state
@@ -42,17 +56,17 @@ def _apply() -> None:
     try:
         req2 = replace(
             req,
-            payload_power=float(ss["mission_power"]),
+            payload_power=_read("mission_power"),
             power_via=ss["mission_power_via"],
-            endurance_days=float(ss["mission_endurance"]),
-            deployment_days=float(ss["mission_deployment"]),
+            endurance_days=_read("mission_endurance"),
+            deployment_days=_read("mission_deployment"),
         )
         cfg2 = replace(
             cfg,
             mission=replace(
                 cfg.mission,
                 ballonet=ss["mission_ballonet"],
-                superheat=float(ss["mission_superheat"]),
+                superheat=_read("mission_superheat"),
             ),
         )
     except InputError as exc:  # in the form's words: the registry label, not Class.field
@@ -76,16 +90,16 @@ def _inputs(req, cfg) -> None:
     with st.form(FORM_KEY, border=True):
         st.markdown("**Mission inputs** (off by default: no power, no endurance requirement)")
         c = st.columns(3)
-        spec_number(c[0], Requirement, "payload_power", req.payload_power, "mission_power")
+        entry.spec_box(c[0], Requirement, "payload_power", req.payload_power, "mission_power")
         _select(c[1], "requirement.power_via", "mission_power_via", req.power_via, POWER_LABELS)
-        spec_number(c[2], Requirement, "endurance_days", req.endurance_days, "mission_endurance")
+        entry.spec_box(c[2], Requirement, "endurance_days", req.endurance_days, "mission_endurance")
         c = st.columns(3)
-        spec_number(
+        entry.spec_box(
             c[0], Requirement, "deployment_days", req.deployment_days, "mission_deployment"
         )
         _select(c[1], "configuration.mission.ballonet", "mission_ballonet", cfg.mission.ballonet,
                 BALLONET_LABELS)
-        spec_number(c[2], MissionSpec, "superheat", cfg.mission.superheat, "mission_superheat")
+        entry.spec_box(c[2], MissionSpec, "superheat", cfg.mission.superheat, "mission_superheat")
         st.form_submit_button("Apply mission inputs", on_click=_apply, icon=":material/send:")
     err = st.session_state.get(ERROR_KEY)
     if err:

@@ -18,29 +18,27 @@ from collections.abc import Mapping, Sequence
 from typing import Any
 
 import numpy as np
-import pandas as pd
 import plotly.graph_objects as go
-from pandas.io.formats.style import Styler
 
 from aerostat_core.report import hull_outline, hull_surface
 
-ACCENT = "#1f5fa8"
-LIMIT_COLOUR = "#d62728"
-LIMIT_TRACE = "operating limit exceeded"
-#: Qualitative palette for several cases / wind speeds (colour-blind friendly, Okabe-Ito based).
-PALETTE = (
-    "#1f5fa8",
-    "#e69f00",
-    "#009e73",
-    "#cc79a7",
-    "#56b4e9",
-    "#d55e00",
-    "#7f7f7f",
-    "#b8a200",
-    "#000000",
+from . import formats
+from .tables import (  # noqa: F401 - the Design and Compare pages' tables, re-exported
+    DIFF_ROW_STYLE,
+    LIMIT_ROW_STYLE,
+    PERF_COLUMNS,
+    comparison_frame,
+    comparison_styler,
+    format_value,
+    geometry_frame,
+    geometry_styler,
+    mass_frame,
+    performance_frame,
+    performance_styler,
 )
-_FONT = dict(family="sans-serif", size=13)
-_MARGIN = dict(l=60, r=20, t=50, b=50)
+from .theme import ACCENT, LIMIT_COLOUR, NEUTRAL, PALETTE, THIRD, base_layout
+
+LIMIT_TRACE = "operating limit exceeded"
 
 #: Performance quantities: key in rep["perf"] -> (title, axis label with unit).
 PERF_QUANTITIES: dict[str, tuple[str, str]] = {
@@ -54,6 +52,16 @@ PERF_QUANTITIES: dict[str, tuple[str, str]] = {
     "flying_height": ("Flying height", "Height [m]"),
 }
 WIND_AXIS = "Wind speed at the aerostat [m/s]"
+#: Quantity of each performance curve (decimals of its hover text, :mod:`app_ui.formats`).
+PERF_KINDS = {"tension_top": "tension", "tension_winch": "tension"}
+_LEN = formats.d3("length")
+
+
+def perf_hover(key: str, unit: str) -> str:
+    """Hover text of a performance curve: wind and value at the decimals of their kinds."""
+    d = formats.d3(PERF_KINDS.get(key, key))
+    u = "" if unit == "-" else f" {unit}"
+    return f"%{{x:{formats.d3('wind')}}} m/s: %{{y:{d}}}{u}<extra>%{{fullData.name}}</extra>"
 
 
 def _l(a: Any) -> list:
@@ -68,7 +76,7 @@ def _ref_line(
     axis: str,
     value: float,
     text: str = "",
-    colour: str = "#7f7f7f",
+    colour: str = NEUTRAL,
     dash: str = "dash",
     yref: str = "y",
 ) -> tuple[dict, dict | None]:
@@ -110,12 +118,7 @@ def _figure(
 ) -> go.Figure:
     """One validated figure from trace dicts, a title, reference lines and layout options.
     No plotly template: ``st.plotly_chart`` applies the app's Streamlit theme."""
-    lay: dict[str, Any] = dict(
-        title=dict(text=title, font=dict(size=15)),
-        font=_FONT,
-        margin=_MARGIN,
-        legend=dict(orientation="h", y=-0.22),
-    )
+    lay = base_layout(title)
     shapes, notes = [], []
     for ln in lines:
         shape, note = _ref_line(**ln)
@@ -142,7 +145,7 @@ def _limit_trace(x: Any, y: Any, limited: Any, text: Sequence[str], **kw: Any) -
         name=LIMIT_TRACE,
         marker=dict(symbol="x", size=11, color=LIMIT_COLOUR, line=dict(width=1)),
         text=[text[i] for i in idx],
-        hovertemplate="%{x:.1f} m/s: %{text}<extra></extra>",
+        hovertemplate=f"%{{x:{formats.d3('wind')}}} m/s: %{{text}}<extra></extra>",
     )
     trace.update(kw)
     return [trace]
@@ -151,7 +154,7 @@ def _limit_trace(x: Any, y: Any, limited: Any, text: Sequence[str], **kw: Any) -
 # --- geometry ---------------------------------------------------------------------------------
 
 _POINTS = (
-    ("cb", "centre of buoyancy (CB)", "CB", "circle", "#009e73"),
+    ("cb", "centre of buoyancy (CB)", "CB", "circle", THIRD),
     ("cg", "centre of gravity (CG)", "CG", "diamond", "#000000"),
     ("c", "confluence point (C)", "C", "triangle-down", LIMIT_COLOUR),
 )
@@ -320,7 +323,7 @@ def side_view_figure(rep: Mapping[str, Any]) -> go.Figure:
                 text=[short],
                 textposition="top right",
                 marker=dict(symbol=symbol, size=11, color=colour),
-                hovertemplate=f"{label}: ξ = %{{x:.2f}} m, z = %{{y:.2f}} m<extra></extra>",
+                hovertemplate=f"{label}: ξ = %{{x:{_LEN}}} m, z = %{{y:{_LEN}}} m<extra></extra>",
             )
         )
     return _figure(
@@ -348,13 +351,16 @@ def mass_figure(rep: Mapping[str, Any]) -> go.Figure:
         orientation="h",
         marker_color=ACCENT,
         name="mass",
-        text=[f"{m:.1f} kg ({s:.0f} %)" for m, s in zip(masses, shares)],
+        text=[
+            f"{formats.text(m, 'mass')} kg ({formats.text(s, 'share')} %)"
+            for m, s in zip(masses, shares)
+        ],
         textposition="auto",
-        hovertemplate="%{y}: %{x:.2f} kg<extra></extra>",
+        hovertemplate=f"%{{y}}: %{{x:{formats.d3('mass')}}} kg<extra></extra>",
     )
     return _figure(
         [trace],
-        f"Mass breakdown (total {total:.1f} kg)",
+        f"Mass breakdown (total {formats.text(total, 'mass')} kg)",
         height=360,
         showlegend=False,
         xaxis=_axis("Mass [kg]"),
@@ -378,6 +384,7 @@ def performance_figure(rep: Mapping[str, Any], key: str) -> go.Figure:
             name=title,
             line=dict(color=ACCENT, width=2.5),
             marker=dict(size=5),
+            hovertemplate=perf_hover(key, ylabel.rsplit("[", 1)[-1].rstrip("]")),
         )
     ]
     traces += _limit_trace(v, y, p["limited"], p["flag_text"])
@@ -411,6 +418,7 @@ def tension_figure(rep: Mapping[str, Any]) -> go.Figure:
             name="tension at the confluence point [N]",
             line=dict(color=ACCENT, width=2.5),
             marker=dict(size=5),
+            hovertemplate=perf_hover("tension_top", "N"),
         ),
         dict(
             type="scatter",
@@ -419,6 +427,7 @@ def tension_figure(rep: Mapping[str, Any]) -> go.Figure:
             mode="lines",
             name="tension at the winch [N]",
             line=dict(color=ACCENT, width=1.5, dash="dash"),
+            hovertemplate=perf_hover("tension_winch", "N"),
         ),
         dict(
             type="scatter",
@@ -427,7 +436,8 @@ def tension_figure(rep: Mapping[str, Any]) -> go.Figure:
             mode="lines",
             name="safety factor [-]",
             yaxis="y2",
-            line=dict(color="#009e73", width=2),
+            line=dict(color=THIRD, width=2),
+            hovertemplate=perf_hover("safety_factor", "-"),
         ),
     ]
     traces += _limit_trace(v, p["tension_top"], p["limited"], p["flag_text"])
@@ -435,7 +445,7 @@ def tension_figure(rep: Mapping[str, Any]) -> go.Figure:
         dict(
             axis="y",
             value=lim["min_safety_factor"],
-            colour="#009e73",
+            colour=THIRD,
             dash="dot",
             yref="y2",
             text=f"required safety factor {lim['min_safety_factor']:g}",
@@ -481,7 +491,7 @@ def cm_figure(rep: Mapping[str, Any]) -> go.Figure:
             y=[float(np.interp(a_eq, a, cm))],
             mode="markers",
             name="trim (α_eq at the design wind)",
-            marker=dict(size=11, color="#009e73", symbol="circle"),
+            marker=dict(size=11, color=THIRD, symbol="circle"),
         ),
     ]
     return _figure(
@@ -594,7 +604,10 @@ def tether_figure(rep: Mapping[str, Any], speeds: Sequence[float] | None = None)
         top = int(np.argmax(z))
         tops_x.append(float(x[top]))
         tops_z.append(float(z[top]))
-        tops_t.append(f"{w:g} m/s: blow-by {x[top]:.1f} m, height {z[top]:.1f} m")
+        tops_t.append(
+            f"{w:g} m/s: blow-by {formats.text(x[top], 'blow_by')} m, "
+            f"height {formats.text(z[top], 'flying_height')} m"
+        )
     traces.append(
         dict(
             type="scatter",
@@ -643,7 +656,10 @@ def compare_performance_figure(reps: Mapping[str, Mapping[str, Any]], key: str) 
         name = plain_label(case)
         p = rep["perf"]
         colour = PALETTE[k % len(PALETTE)]
-        traces.append(_line(p["wind_speed"], p[key], name, colour, legendgroup=name))
+        hover = perf_hover(key, ylabel.rsplit("[", 1)[-1].rstrip("]"))
+        traces.append(
+            _line(p["wind_speed"], p[key], name, colour, legendgroup=name, hovertemplate=hover)
+        )
         traces += _limit_trace(
             p["wind_speed"],
             p[key],
@@ -680,142 +696,3 @@ def compare_tether_figure(reps: Mapping[str, Mapping[str, Any]], wind: float) ->
         )
     traces.append(_winch_trace(label=False))
     return _to_scale_figure(traces, f"Tether profiles at {wind:g} m/s (to scale)")
-
-
-# --- tables (display frames: units in every column name) -----------------------------------
-
-_UNIT_TEXT = {"m3": "m³", "m2": "m²", "-": "-"}
-
-#: Performance-row keys -> display column names (units in brackets).
-PERF_COLUMNS: dict[str, str] = {
-    "wind_speed_m_s": "Wind [m/s]",
-    "alpha_eq_deg": "α_eq [deg]",
-    "dynamic_lift_N": "Dynamic lift [N]",
-    "drag_N": "Drag [N]",
-    "blow_by_m": "Blow-by [m]",
-    "flying_height_m": "Flying height [m]",
-    "altitude_loss_m": "Altitude loss [m]",
-    "tension_top_N": "Tension at top [N]",
-    "tension_winch_N": "Tension at winch [N]",
-    "tether_angle_top_deg": "Tether angle at top [deg from vertical]",
-    "tether_angle_winch_deg": "Tether angle at winch [deg from vertical]",
-    "safety_factor": "Safety factor [-]",
-    "cm_alpha_per_rad": "C_mα [1/rad]",
-    "cm_alpha_aero_cv_per_rad": "Weathervane C_mα, hull + fins about CV [1/rad]",
-    "flags": "Limits exceeded",
-}
-#: Decimals per performance column.
-_PERF_DECIMALS = {
-    "Wind [m/s]": 1,
-    "α_eq [deg]": 2,
-    "Safety factor [-]": 2,
-    "C_mα [1/rad]": 3,
-    "Weathervane C_mα, hull + fins about CV [1/rad]": 3,
-}
-LIMIT_ROW_STYLE = "background-color: #fde2e2"
-
-
-def geometry_frame(rows: Sequence[Mapping[str, Any]]) -> pd.DataFrame:
-    """Geometry rows as a frame: Quantity, Value, Unit."""
-    return pd.DataFrame(
-        {
-            "Quantity": [r["quantity"] for r in rows],
-            "Value": [float(r["value"]) for r in rows],
-            "Unit": [_UNIT_TEXT.get(r["unit"], r["unit"]) for r in rows],
-        }
-    )
-
-
-def geometry_styler(df: pd.DataFrame) -> Styler:
-    """The geometry table with each value in its own format: counts as integers ("4", not
-    "4.000"), the hull volume with the headline metric's 1 decimal, the rest with 3."""
-    styler = df.style
-    for i, q in zip(df.index, df["Quantity"]):
-        fmt = "{:.0f}" if str(q).startswith("Number") else VALUE_FORMATS.get(str(q), "{:.3f}")
-        styler = styler.format(fmt, subset=pd.IndexSlice[[i], ["Value"]])
-    return styler
-
-
-#: Display format of quantities shown in more than one place (the same precision everywhere).
-VALUE_FORMATS = {"Hull volume": "{:,.1f}", "Hull length l": "{:.2f}", "Hull diameter d": "{:.2f}"}
-
-
-def mass_frame(rows: Sequence[Mapping[str, Any]]) -> pd.DataFrame:
-    """Mass rows as a frame: Item, Mass [kg], Share [%]."""
-    return pd.DataFrame(
-        {
-            "Item": [r["item"] for r in rows],
-            "Mass [kg]": [float(r["mass_kg"]) for r in rows],
-            "Share [%]": [float(r["share_pct"]) for r in rows],
-        }
-    )
-
-
-def performance_frame(rows: Sequence[Mapping[str, Any]]) -> pd.DataFrame:
-    """Performance rows with display column names; ``limit_exceeded`` kept as the last column
-    (the styler hides it)."""
-    df = pd.DataFrame([{PERF_COLUMNS.get(k, k): v for k, v in r.items()} for r in rows])
-    for col in df.columns:
-        if df[col].dtype.kind == "f":
-            df[col] = df[col].round(9) + 0.0  # no "-0.0" for values that are zero
-    return df
-
-
-def performance_styler(df: pd.DataFrame) -> Styler:
-    """Red background on rows that break an operating limit; fixed decimals per column."""
-    limited = df["limit_exceeded"].to_numpy(bool) if "limit_exceeded" in df else np.zeros(len(df))
-    shown = df.drop(columns=["limit_exceeded"], errors="ignore")
-
-    def rowstyle(row: pd.Series) -> list[str]:
-        return [LIMIT_ROW_STYLE if limited[row.name] else ""] * len(row)
-
-    fmt = {c: f"{{:.{_PERF_DECIMALS.get(c, 1)}f}}" for c in shown.columns if c != "Limits exceeded"}
-    return shown.style.apply(rowstyle, axis=1).format(fmt)
-
-
-def format_value(v: Any) -> str:
-    """A table cell as text: 4 significant digits (thousands separated above 1000), booleans as
-    yes/no, None as auto.
-
-    >>> [format_value(x) for x in (372.96, 12.345, 10.0, 0.6789, 0.0123, 12000.0, True, None, "+")]
-    ['373', '12.35', '10', '0.6789', '0.0123', '12,000', 'yes', 'auto', '+']
-    """
-    if isinstance(v, (bool, np.bool_)):
-        return "yes" if v else "no"
-    if v is None:
-        return "auto"
-    if isinstance(v, (int, float, np.floating, np.integer)):
-        x = float(v)
-        if abs(x) >= 1000:
-            return f"{x:,.0f}"
-        return f"{x:.4g}"
-    return str(v)
-
-
-def comparison_frame(
-    rows: Sequence[Mapping[str, Any]], names: Sequence[str], only_differences: bool = False
-) -> pd.DataFrame:
-    """Side-by-side table (one column per case, values as text) from
-    :func:`aerostat_core.report.comparison_rows`; ``Differs`` says where the cases disagree."""
-    keep = [r for r in rows if r["differs"] or not only_differences]
-    data: dict[str, list] = {
-        "Section": [r["section"] for r in keep],
-        "Quantity": [r["quantity"] for r in keep],
-    }
-    for n in names:
-        data[n] = [format_value(r.get(n)) for r in keep]
-    data["Differs"] = [bool(r["differs"]) for r in keep]
-    return pd.DataFrame(data)
-
-
-DIFF_ROW_STYLE = "background-color: #fff3c4"
-
-
-def comparison_styler(df: pd.DataFrame) -> Styler:
-    """Yellow background on the rows where the cases differ."""
-    differs = df["Differs"].to_numpy(bool)
-
-    def rowstyle(row: pd.Series) -> list[str]:
-        return [DIFF_ROW_STYLE if differs[row.name] else ""] * len(row)
-
-    return df.style.apply(rowstyle, axis=1)

@@ -32,9 +32,10 @@ from aerostat_core.shape_comparison import (
 from aerostat_core.shape_optimize import fineness_sweeps, optimise_shapes
 from aerostat_core.shapes import SHAPE_INFO, profile_radius_ratio
 
-from .plots import PALETTE
+from . import entry, formats
+from .theme import PALETTE, base_layout
+from .widgets import plain
 
-_FONT = dict(family="sans-serif", size=13)
 _COLOURS = {k: PALETTE[i] for i, k in enumerate(TABLE_SHAPES)}
 WIND_AXIS = "Wind speed at the aerostat [m/s]"
 
@@ -156,7 +157,7 @@ def study_frame(rows: list[dict], objective: str) -> pd.DataFrame:
         objective: objective,
         "fineness_ratio": "l/d [-]",
         "area_change_pct": "ΔS_f [%]",
-        "position": "Δl_f [-]",
+        "position": "Δl_f [% of l]",  # % of the hull length, as on every page
         "volume_m3": "Volume [m³]",
         "total_mass_kg": "Total mass [kg]",
         "blow_by_m": "Blow-by [m]",
@@ -164,7 +165,23 @@ def study_frame(rows: list[dict], objective: str) -> pd.DataFrame:
         "message": "Note",
     }
     df = pd.DataFrame(rows)
+    if "position" in df:  # the engine's fraction of the hull length -> %
+        df["position"] = pd.to_numeric(df["position"], errors="coerce") * 100.0
     return df[[k for k in names if k in df.columns]].rename(columns=names)
+
+
+#: Column formats of :func:`study_frame` (decimals from :mod:`app_ui.formats`).
+STUDY_FORMAT = {
+    col: st.column_config.NumberColumn(format=formats.printf(q))
+    for col, q in (
+        ("l/d [-]", "fineness_ratio"),
+        ("ΔS_f [%]", "area_change"),
+        ("Δl_f [% of l]", "position"),
+        ("Volume [m³]", "volume"),
+        ("Total mass [kg]", "total_mass"),
+        ("Blow-by [m]", "blow_by"),
+    )
+}
 
 
 # --- figures ---------------------------------------------------------------------------------
@@ -184,14 +201,13 @@ def blow_by_figure(cmp: Mapping[str, Any], title: str) -> go.Figure:
     return go.Figure(
         dict(
             data=traces,
-            layout=dict(
-                title=dict(text=title),
-                font=_FONT,
+            layout=base_layout(
+                title,
                 height=420,
-                margin=dict(l=60, r=20, t=50, b=50),
-                xaxis=dict(title=dict(text=WIND_AXIS)),
-                yaxis=dict(title=dict(text="Blow-by [m]")),
-                legend=dict(orientation="h", y=-0.2),
+                xaxis=dict(title=dict(text=WIND_AXIS), hoverformat=formats.axis_hover(WIND_AXIS)),
+                yaxis=dict(
+                    title=dict(text="Blow-by [m]"), hoverformat=formats.axis_hover("Blow-by [m]")
+                ),
             ),
         )
     )
@@ -219,14 +235,19 @@ def profiles_figure(shapes: list[str] | None = None) -> go.Figure:
     return go.Figure(
         dict(
             data=traces,
-            layout=dict(
-                title=dict(text="Hull profiles at their standard fineness ratio (length = 1)"),
-                font=_FONT,
+            layout=base_layout(
+                "Hull profiles at their standard fineness ratio (length = 1)",
                 height=460,
-                margin=dict(l=60, r=20, t=50, b=50),
-                xaxis=dict(title=dict(text="Station ξ / l [-]")),
-                yaxis=dict(title=dict(text="Radius r / l [-]"), scaleanchor="x", scaleratio=1),
-                legend=dict(orientation="h", y=-0.25),
+                xaxis=dict(
+                    title=dict(text="Station ξ / l [-]"),
+                    hoverformat=formats.axis_hover("Station ξ / l [-]"),
+                ),
+                yaxis=dict(
+                    title=dict(text="Radius r / l [-]"),
+                    hoverformat=formats.axis_hover("Radius r / l [-]"),
+                    scaleanchor="x",
+                    scaleratio=1,
+                ),
             ),
         )
     )
@@ -253,14 +274,18 @@ def sweeps_figure(sweeps: Mapping[str, Mapping[str, list]]) -> go.Figure:
     return go.Figure(
         dict(
             data=traces,
-            layout=dict(
-                title=dict(text="Sized total mass versus fineness ratio, per shape"),
-                font=_FONT,
+            layout=base_layout(
+                "Sized total mass versus fineness ratio, per shape",
                 height=440,
-                margin=dict(l=60, r=20, t=50, b=50),
-                xaxis=dict(title=dict(text=column_label("configuration.hull.fineness_ratio"))),
-                yaxis=dict(title=dict(text="Total mass [kg]"), type="log"),
-                legend=dict(orientation="h", y=-0.25),
+                xaxis=dict(
+                    title=dict(text=column_label("configuration.hull.fineness_ratio")),
+                    hoverformat=formats.axis_hover(column_label("configuration.hull.fineness_ratio")),
+                ),
+                yaxis=dict(
+                    title=dict(text="Total mass [kg]"),
+                    hoverformat=formats.axis_hover("Total mass [kg]"),
+                    type="log",
+                ),
             ),
         )
     )
@@ -302,28 +327,28 @@ def geometry_note(shape: str) -> str:
 def export_panel(inputs_json: str) -> None:
     """Design page: STL of hull and fins, gore and fin patterns (DXF, SVG, CSV) downloads."""
     c = st.columns([1, 1, 2])
-    n = c[0].number_input(
+    # Text boxes read like the Design form's ("12,5" is 12.5, never 125).
+    n_text = entry.number_box(
         "Gores",
-        3,
-        64,
-        12,
-        1,
         key="exp_gores",
+        value=12,
+        integer=True,
+        container=c[0],
         help="Number of identical gores the hull is cut from (3-64).",
     )
-    seam = c[1].number_input(
+    seam_text = entry.number_box(
         "Seam allowance [mm]",
-        0.0,
-        200.0,
-        20.0,
-        5.0,
         key="exp_seam",
+        value=20.0,
+        container=c[1],
         help="Added outside the seam line of every pattern (0-200 mm).",
     )
     try:
+        n = entry.read(n_text, "Gores", integer=True, lo=3, hi=64)
+        seam = entry.read(seam_text, "Seam allowance [mm]", lo=0.0, hi=200.0, unit="mm")
         files = cached_exports(inputs_json, int(n), float(seam))
     except ValueError as exc:
-        st.error(f"Cannot export the geometry: {exc}", icon=":material/error:")
+        st.error(plain(f"Cannot export the geometry: {exc}"), icon=":material/error:")
         return
     c[2].caption(
         f"Patterns: {files['area']}. STL in metres, body axes (x aft from the nose, "
@@ -341,7 +366,9 @@ def export_panel(inputs_json: str) -> None:
     ):
         col.download_button(
             label,
-            files[key],
+            # a callable: the files (the STL is 2 MB) are sent only when asked for, not with
+            # every page view (a fresh browser fetched them all before the first result)
+            lambda key=key, n=n, seam=seam: cached_exports(inputs_json, int(n), float(seam))[key],
             file_name=name,
             mime=mime,
             on_click="ignore",

@@ -7,8 +7,6 @@ from typing import Any
 
 import streamlit as st
 
-from aerostat_core.fields import field_spec
-
 from .text import plain
 
 
@@ -29,23 +27,6 @@ def metric_row(n: int) -> list[_MetricSlot]:
     metric to the next line instead of cutting it to "1…" (fixed columns did at 1024 px)."""
     row = st.container(horizontal=True, wrap=True, gap="large")
     return [_MetricSlot(row)] * n
-
-
-def spec_number(col: Any, owner: type, name: str, value: float, key: str) -> float:
-    """A number box for field ``name`` of input dataclass ``owner``: label, unit, range, step
-    and help from the field registry (aerostat_core.fields). Returns the value in SI units; an
-    open bound is left to the engine's check, which names the range."""
-    s = field_spec(owner, name)
-    shown = col.number_input(
-        f"{s.label} [{s.shown_unit}]",
-        min_value=None if s.lo_open else float(s.lo * s.scale),
-        max_value=None if s.hi_open else float(s.hi * s.scale),
-        value=float(value * s.scale),
-        step=float(s.step or 1.0),
-        key=key,
-        help=s.help or None,
-    )
-    return float(shown) / s.scale
 
 
 def feedback(level: str, text: str) -> None:

@@ -14,14 +14,26 @@ from app_ui import (
     envelope_view,
     form,
     form_model,
+    formats,
     mission_view,
     plots,
+    preload,
     shapes_view,
     show,
+    side_view,
     state,
     text,
 )
-from app_ui.plots import geometry_frame, mass_frame, performance_frame, performance_styler
+from app_ui.tables import (
+    PERF_HELP,
+    PERF_TABLES,
+    constraint_styler,
+    geometry_frame,
+    mass_frame,
+    mass_styler,
+    performance_frame,
+    performance_styler,
+)
 
 st.title("Aerostat design")
 st.caption(
@@ -56,8 +68,9 @@ def _on_upload() -> None:
         st.session_state.pop(form_model.ERROR_KEY, None)
 
 
-def _fmt(v: float, digits: int = 1) -> str:
-    return f"{v:,.{digits}f}"
+def _fmt(v: float, quantity: str) -> str:
+    """A headline number at the decimals of its quantity (the same in every table)."""
+    return formats.text(v, quantity)
 
 
 TABS = ("Geometry", "3-D view", "Mass", "Performance", "Tether profiles", "Mission", "Envelope")
@@ -65,17 +78,19 @@ TAB_KEY = "design_tab"
 
 
 def _geometry_tab(rep: dict) -> None:
-    st.plotly_chart(plots.side_view_figure(rep), key="side_view")
-    g1, g2 = st.columns([1.2, 1])
+    # Static drawing and table on the first tab: a plotly chart or a data grid here pulled
+    # 5 MB of JavaScript into a fresh browser before the first result (the interactive side
+    # view is a toggle away).
+    st.image(side_view.side_view_svg(rep), width="stretch")  # an SVG, sent as a data URL
+    st.caption(
+        "Side view to scale, level hull, nose on the left: CB centre of buoyancy (green), "
+        "CG centre of gravity (black), C confluence point (red), confluence lines schematic."
+    )
+    if st.toggle("Interactive side view (zoom, hover)", key="side_view_interactive"):
+        st.plotly_chart(plots.side_view_figure(rep), key="side_view")
+    g1, g2 = st.container(), st.container()
     with g1:
-        st.dataframe(
-            plots.geometry_styler(geometry_frame(rep["geometry_rows"])),
-            hide_index=True,
-            width="stretch",
-            # every row in sight (it showed 12 of 26): 35 px a row plus the header
-            height=35 * (len(rep["geometry_rows"]) + 1) + 3,
-            key="geometry_table",
-        )
+        st.table(plots.geometry_styler(geometry_frame(rep["geometry_rows"])).hide(axis="index"))
     with g2:
         st.markdown(
             "**Reading the geometry.** ξ is measured from the nose, aft positive; z is up. "
@@ -95,18 +110,10 @@ def _geometry_tab(rep: dict) -> None:
 
 
 def _mass_tab(rep: dict) -> None:
-    m1, m2 = st.columns([1, 1.4])
+    # One above the other: beside the chart the table was 150 px wide at 1024 px and scrolled.
+    m1, m2 = st.container(), st.container()
     with m1:
-        st.dataframe(
-            mass_frame(rep["mass_rows"]),
-            hide_index=True,
-            width="stretch",
-            column_config={
-                "Mass [kg]": st.column_config.NumberColumn(format="%.2f"),
-                "Share [%]": st.column_config.NumberColumn(format="%.1f"),
-            },
-            key="mass_table",
-        )
+        st.table(mass_styler(mass_frame(rep["mass_rows"])))  # static: no grid bundle to load
         st.download_button(
             "Mass table (CSV)",
             data=cache.csv_bytes(rep["mass_rows"]),
@@ -122,13 +129,13 @@ def _mass_tab(rep: dict) -> None:
 
 def _performance_tab(rep: dict) -> None:
     pdf = performance_frame(rep["performance_rows"])
-    st.dataframe(
-        performance_styler(pdf),
-        hide_index=True,
-        width="stretch",
-        height=min(35 * (len(pdf) + 1) + 3, 900),  # every row of a usual sweep in sight
-        key="performance_table",
-    )
+    # Three static tables by theme, headers that wrap: one grid of 15 columns scrolled sideways
+    # at 1024 px (the result column is under 400 px wide there).
+    for title, columns in PERF_TABLES.items():
+        st.markdown(
+            f"**{title}**", help=" ".join(PERF_HELP[c] for c in columns if c in PERF_HELP) or None
+        )
+        st.table(performance_styler(pdf, columns))
     st.caption("Rows with a red background break an operating limit (last column says which).")
     st.download_button(
         "Performance table (CSV)",
@@ -245,10 +252,12 @@ with col_out:
         f"Rule set: **{rules.name}** ({rules.title}). "
         + (f"Sized by: {s['binding_constraint'].replace('_', ' ')}." if rep["sized"] else "")
     )
-    with st.expander("Constraint table: every limit, its margin and where it is checked",
-                     icon=":material/rule:"):
-        st.dataframe(pd.DataFrame(text.constraint_table_rows(rep["constraints"])),
-                     hide_index=True, width="stretch", key="constraint_table")
+    with st.expander(
+        "Constraint table: every limit, its margin and where it is checked", icon=":material/rule:"
+    ):
+        # static, cells that wrap: a data grid here loaded 1 MB of JavaScript before the first
+        # result, and scrolled sideways at 1024 px
+        st.table(constraint_styler(pd.DataFrame(text.constraint_table_rows(rep["constraints"]))))
     if stale:
         st.warning(
             "These results are for the last valid inputs: your latest change was not applied "
@@ -258,7 +267,7 @@ with col_out:
     c = show.metric_row(5)
     c[0].metric(
         "Volume [m³]",
-        _fmt(s["volume_m3"]),
+        _fmt(s["volume_m3"], "volume"),
         help="Hull volume. Sized: the smallest hull meeting the blow-by limit with positive "
         "free lift."
         if rep["sized"]
@@ -267,16 +276,16 @@ with col_out:
         delta_color="off",
         delta_arrow="off",
     )
-    c[1].metric("Length [m]", _fmt(s["length_m"], 2), help="Hull length l.")
-    c[2].metric("Diameter [m]", _fmt(s["diameter_m"], 2), help="Maximum hull diameter d.")
+    c[1].metric("Length [m]", _fmt(s["length_m"], "length"), help="Hull length l.")
+    c[2].metric("Diameter [m]", _fmt(s["diameter_m"], "diameter"), help="Maximum hull diameter d.")
     c[3].metric(
         "Total mass [kg]",
-        _fmt(s["total_mass_kg"]),
+        _fmt(s["total_mass_kg"], "total_mass"),
         help="Hull, fins, lifting gas, miscellaneous, payload and tether.",
     )
     c[4].metric(
         "Free lift [kg]",
-        _fmt(s["free_lift_kg"]),
+        _fmt(s["free_lift_kg"], "free_lift"),
         help="Gross buoyancy minus total weight, in kilograms "
         f"({s['percent_static_lift']:.0f} % of the gross buoyancy).",
     )
@@ -285,31 +294,33 @@ with col_out:
     bb = s["blow_by_at_design_wind_m"]
     c[0].metric(
         "Blow-by [m]",
-        _fmt(bb),
-        delta=f"{text.signed(bb - lim['blow_by_limit'], 1)} m",
+        _fmt(bb, "blow_by"),
+        delta=f"{text.signed(bb - lim['blow_by_limit'], formats.decimals('blow_by'))} m",
         delta_color="inverse",
         help=f"Downwind offset of the confluence point from the winch; limit "
         f"{lim['blow_by_limit']:g} m (the delta is blow-by minus limit).",
     )
     c[1].metric(
         "α_eq [deg]",
-        _fmt(s["alpha_at_design_wind_deg"], 2),
+        _fmt(s["alpha_at_design_wind_deg"], "alpha_eq"),
         help="Equilibrium angle of attack (moment balance about the confluence point).",
     )
     c[2].metric(
         "Tension [N]",
-        _fmt(s["tension_top_at_design_wind_N"], 0),
+        _fmt(s["tension_top_at_design_wind_N"], "tension"),
         help="Tether tension at the confluence point.",
     )
     sf = s["safety_factor_at_design_wind"]
     c[3].metric(
         "Safety factor [-]",
-        _fmt(sf, 2),
-        delta=text.signed(sf - lim["min_safety_factor"], 2),
+        _fmt(sf, "safety_factor"),
+        delta=text.signed(sf - lim["min_safety_factor"], formats.decimals("safety_factor")),
         help="Tether breaking strength / largest tension along the tether; required "
         f"{lim['min_safety_factor']:g} (the delta is the margin).",
     )
-    c[4].metric("Gas cost [USD]", _fmt(s["gas_cost_USD"], 0), help="Hull volume × gas price.")
+    c[4].metric(
+        "Gas cost [USD]", _fmt(s["gas_cost_USD"], "gas_cost"), help="Hull volume × gas price."
+    )
 
     if rep["feasible"]:
         st.success(
@@ -387,3 +398,6 @@ with col_out:
     with tabs["Envelope"]:
         if tabs["Envelope"].open:
             envelope_view.render(state.current_inputs_key(), rep)
+
+# Last element: the chart and grid code loads while the user reads the first result.
+preload.warm_bundles()

@@ -25,10 +25,11 @@ base = {
     "area_change": cfg.fins.area_change,
     "position": cfg.fins.position,
 }
+shown = {k: view.shown(k, v) for k, v in base.items()}  # the fin position in % of l
 vol_txt = f"given volume {cfg.hull.volume:g} m³" if cfg.hull.volume is not None else "volume sized"
 st.markdown(
-    f"**Baseline:** f = {base['fineness_ratio']:g}, ΔS_f = {base['area_change']:g} %, "
-    f"Δl_f = {base['position']:g}, {vol_txt}; payload {req.payload_mass:g} kg at "
+    f"**Baseline:** f = {shown['fineness_ratio']:g}, ΔS_f = {shown['area_change']:g} %, "
+    f"Δl_f = {shown['position']:g} % of l, {vol_txt}; payload {req.payload_mass:g} kg at "
     f"{req.altitude:g} m; blow-by limit {req.blow_by_limit:g} m at {req.design_wind:g} m/s; "
     f"rule set **{req.rules}** (every constraint of its table applies)."
 )
@@ -84,14 +85,21 @@ with st.form("sens_form"):
         persist_state="session",
     )
     st.markdown("**Ranges**")
-    ranges = view.variable_range_inputs("sens", "from", "to")
+    range_texts = view.variable_range_inputs("sens", "from", "to")
     st.form_submit_button("Update", type="primary", key="sens_run", icon=":material/refresh:")
 
 n_points, n_map = view.SENS_RESOLUTION[level]
-ranges_json = json.dumps({k: list(v) for k, v in ranges.items()}, sort_keys=True)
+try:  # the boxes as typed: a decimal comma is a decimal point, bounds checked in their unit
+    ranges = view.parse_ranges(range_texts, "from", "to")
+except ValueError as exc:
+    st.error(widgets.plain(short(f"Ranges: {exc}")), icon=":material/error:")
+    ranges = None
+ranges_json = json.dumps({k: list(v) for k, v in (ranges or {}).items()}, sort_keys=True)
 
 st.subheader("One factor at a time", anchor=False)
 try:
+    if ranges is None:
+        raise ValueError("fix the ranges above first")
     res = view.cached_sensitivity(inputs_json, ranges_json, n_points, sweep_mode == "resize")
 except ValueError as exc:
     st.error(widgets.plain(short(f"Cannot compute the sweeps: {exc}")), icon=":material/error:")
@@ -103,17 +111,14 @@ else:
         )
     st.plotly_chart(view.sensitivity_figure(res), key="sens_ofat")
     st.markdown("**Mass and volume change over each range** (relative to the baseline)")
-    st.dataframe(
-        view.summary_frame(res),
-        hide_index=True,
-        key="sens_summary",
-        column_config={
-            c: st.column_config.NumberColumn(format="%.2f")
-            for c in view.summary_frame(res).columns[1:]
-        },
-    )
+    st.table(view.summary_table(res))  # transposed: 4 columns fit at 1024 px, 10 did not
     with st.expander("All sweep points"):
-        st.dataframe(view.sweep_frame(res), hide_index=True, key="sens_points")
+        st.dataframe(
+            view.sweep_frame(res),
+            hide_index=True,
+            key="sens_points",
+            column_config=view.SWEEP_FORMAT,
+        )
     c1, c2 = st.columns(2)
     c1.download_button(
         "Sweeps (CSV)",
@@ -135,7 +140,9 @@ else:
     )
 
 st.subheader("Two variables at once", anchor=False)
-if x_var == y_var:
+if ranges is None:
+    st.info("Map: fix the ranges above first.", icon=":material/info:")
+elif x_var == y_var:
     st.error(
         f"Map: choose two different variables (both are {VARIABLE_INFO[x_var][0]}).",
         icon=":material/error:",
@@ -148,7 +155,7 @@ else:
     else:
         held = [k for k in VARIABLES if k not in (x_var, y_var)][0]
         st.caption(
-            f"{VARIABLE_INFO[held][0]} held at {base[held]:g}. "
+            f"{view.var_label(held)} held at {shown[held]:g}. "
             + (
                 "Red line: blow-by = limit; designs beyond it (crosses) break the limit "
                 "or another constraint."

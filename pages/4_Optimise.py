@@ -8,8 +8,8 @@ import streamlit as st
 
 from aerostat_core.optimize import OBJECTIVES, SOLVERS
 from aerostat_core.validation import short
+from app_ui import entry, widgets
 from app_ui import optimise_view as view
-from app_ui import widgets
 
 st.title("Optimise")
 st.caption(
@@ -35,9 +35,10 @@ with st.expander("Problem definition", icon=":material/functions:"):
 
 # The limit box follows the design inputs unless the user edits it here.
 if st.session_state.get("_opt_limit_src") != req.blow_by_limit:
-    st.session_state["opt_limit"] = float(req.blow_by_limit)
+    st.session_state["opt_limit"] = widgets.format_value(req.blow_by_limit)
     st.session_state["_opt_limit_src"] = req.blow_by_limit
 
+# Every number is a text box read like the Design form's ("12,5" is 12.5, never 125).
 with st.form("opt_form"):
     c = st.columns(4)
     objective = c[0].radio(
@@ -57,20 +58,20 @@ with st.form("opt_form"):
         help="Quick: fewer starts, evaluations and generations (seconds). "
         "Normal: the settings of the comparison table.",
     )
-    seed = c[2].number_input(
+    seed_text = entry.number_box(
         "Random seed [-]",
-        value=0,
-        step=1,
         key="opt_seed",
-        persist_state="session",
+        value=0,
+        integer=True,
+        container=c[2],
         help="Seeds the starts, the surrogate sample and the swarm: the "
         "same seed gives the same result.",
     )
-    limit = c[3].number_input(
+    limit_text = entry.number_box(
         "Blow-by limit [m]",
-        step=1.0,
-        format="%.1f",
         key="opt_limit",
+        value=req.blow_by_limit,
+        container=c[3],
         help=f"At the design wind {req.design_wind:g} m/s. Taken from the design inputs; "
         "change it here to explore (the Pareto front shows the whole range).",
     )
@@ -83,30 +84,20 @@ with st.form("opt_form"):
         persist_state="session",
     )
     st.markdown("**Bounds of the design variables**")
-    bounds = view.variable_range_inputs("opt", "lower", "upper")
+    bound_texts = view.variable_range_inputs("opt", "lower", "upper")
     st.markdown("**Trade-off curve**")
     p = st.columns(4)
     pareto = p[0].checkbox(
         "Compute the Pareto front", value=True, key="opt_pareto_on", persist_state="session"
     )
-    n_pts = p[1].number_input(
-        "Points [-]", value=11, step=1, key="opt_pareto_n", persist_state="session"
+    n_text = entry.number_box(
+        "Points [-]", key="opt_pareto_n", value=11, integer=True, container=p[1]
     )
-    low = p[2].number_input(
-        "Lowest limit [× limit]",
-        value=0.6,
-        step=0.1,
-        format="%.2f",
-        key="opt_pareto_low",
-        persist_state="session",
+    low_text = entry.number_box(
+        "Lowest limit [× limit]", key="opt_pareto_low", value=0.6, container=p[2]
     )
-    high = p[3].number_input(
-        "Highest limit [× limit]",
-        value=2.0,
-        step=0.1,
-        format="%.2f",
-        key="opt_pareto_high",
-        persist_state="session",
+    high_text = entry.number_box(
+        "Highest limit [× limit]", key="opt_pareto_high", value=2.0, container=p[3]
     )
     submitted = st.form_submit_button(
         "Run optimisation", type="primary", key="opt_run", icon=":material/play_arrow:"
@@ -116,16 +107,16 @@ if submitted:
     try:
         request = view.build_request(
             inputs_json,
-            limit=limit,
-            bounds=bounds,
+            limit=entry.read(limit_text, "Blow-by limit [m]"),
+            bounds=view.parse_ranges(bound_texts, "lower", "upper"),
             objective=objective,
             level=view.RUN_LEVELS[level],
-            seed=int(seed),
+            seed=entry.read(seed_text, "Random seed [-]", integer=True, lo=0, hi=999_999_999),
             solvers=solvers,
             pareto=pareto,
-            pareto_points=int(n_pts),
-            pareto_low=float(low),
-            pareto_high=float(high),
+            pareto_points=entry.read(n_text, "Points [-]", integer=True) if pareto else 11,
+            pareto_low=entry.read(low_text, "Lowest limit [× limit]") if pareto else 0.6,
+            pareto_high=entry.read(high_text, "Highest limit [× limit]") if pareto else 2.0,
         )
     except ValueError as exc:
         st.error(widgets.plain(short(f"Cannot run: {exc}")), icon=":material/error:")

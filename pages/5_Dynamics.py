@@ -6,6 +6,7 @@ import pandas as pd
 import streamlit as st
 
 from app_ui import dynamics_view as view
+from app_ui import entry, widgets
 
 st.title("Dynamics")
 st.caption(
@@ -27,45 +28,40 @@ sources = view.design_sources(cases_state)
 scenario = st.radio("Wind scenario", list(view.SCENARIOS), format_func=view.SCENARIOS.get,
                     index=2, horizontal=True, key="dyn_scenario", persist_state="session")
 
+def num(col, label: str, key: str, value: float, integer: bool = False, help: str | None = None):  # noqa: A002
+    """A number box read like the Design form's ("12,5" is 12.5); the text goes to the request,
+    which reads it and checks its range."""
+    return entry.number_box(label, key=key, value=value, container=col, integer=integer, help=help)
+
+
 with st.form("dyn_form"):
     c = st.columns(3)
     source = c[0].selectbox("Design", sources, key="dyn_source", persist_state="session",
                             help="The current design of the Design page, the thesis' optimised "
                                  "aerostat, or a saved case.")
-    speed = c[1].number_input("Mean wind at the aerostat [m/s]", value=10.0, step=1.0,
-                              key="dyn_speed", persist_state="session",
+    speed = num(c[1], "Mean wind at the aerostat [m/s]", "dyn_speed", 10.0,
                               help="Wind at the confluence point's static height at t = 0.")
-    duration = c[2].number_input("Simulated time [s]", value=150.0, step=10.0, key="dyn_duration",
-                                 persist_state="session")
+    duration = num(c[2], "Simulated time [s]", "dyn_duration", 150.0)
     form = {"source": source, "scenario": scenario, "speed": speed, "duration": duration}
     if scenario == "varying":
         v = st.columns(4)
-        form["t_change"] = v[0].number_input("Change starts at [s]", value=20.0, key="dyn_tc",
-                                             persist_state="session")
-        form["u_new"] = v[1].number_input("New wind speed [m/s]", value=15.0, key="dyn_unew",
-                                          persist_state="session")
-        form["ramp"] = v[2].number_input("Ramp time [s]", value=5.0, key="dyn_ramp",
-                                         persist_state="session",
+        form["t_change"] = num(v[0], "Change starts at [s]", "dyn_tc", 20.0)
+        form["u_new"] = num(v[1], "New wind speed [m/s]", "dyn_unew", 15.0)
+        form["ramp"] = num(v[2], "Ramp time [s]", "dyn_ramp", 5.0,
                                          help="With the unsteady-wind inertia on, a short ramp "
                                               "gives a much harsher transient.")
         form["second_change"] = v[3].checkbox("Second change", key="dyn_second",
                                               persist_state="session")
         v2 = st.columns(4)
-        form["t_change2"] = v2[0].number_input("Second change starts at [s]", value=80.0,
-                                               key="dyn_tc2", persist_state="session")
-        form["u_new2"] = v2[1].number_input("Second new wind speed [m/s]", value=7.0,
-                                            key="dyn_unew2", persist_state="session")
+        form["t_change2"] = num(v2[0], "Second change starts at [s]", "dyn_tc2", 80.0)
+        form["u_new2"] = num(v2[1], "Second new wind speed [m/s]", "dyn_unew2", 7.0)
     elif scenario == "gust":
         g = st.columns(5)
-        form["gust_u"] = g[0].number_input("Gust amplitude, horizontal [m/s]", value=5.0,
-                                           key="dyn_gu", persist_state="session")
-        form["gust_w"] = g[1].number_input("Gust amplitude, vertical [m/s]", value=0.0,
-                                           key="dyn_gw", persist_state="session")
-        form["gust_length"] = g[2].number_input("Gust length d_m [m]", value=60.0,
-                                                key="dyn_gl", persist_state="session",
+        form["gust_u"] = num(g[0], "Gust amplitude, horizontal [m/s]", "dyn_gu", 5.0)
+        form["gust_w"] = num(g[1], "Gust amplitude, vertical [m/s]", "dyn_gw", 0.0)
+        form["gust_length"] = num(g[2], "Gust length d_m [m]", "dyn_gl", 60.0,
                                                 help="Rise time = d_m / mean wind.")
-        form["gust_start"] = g[3].number_input("Gust starts at [s]", value=20.0, key="dyn_gs",
-                                               persist_state="session")
+        form["gust_start"] = num(g[3], "Gust starts at [s]", "dyn_gs", 20.0)
         form["gust_hold"] = g[4].checkbox("Ramp and hold", key="dyn_ghold",
                                           persist_state="session",
                                           help="Off: the full 1 − cos gust returns to zero.")
@@ -79,16 +75,12 @@ with st.form("dyn_form"):
         form["intensity"] = tb[0].selectbox("Intensity", list(view.INTENSITIES), index=0,
                                             format_func=view.INTENSITIES.get, key="dyn_int",
                                             persist_state="session")
-        form["w20"] = tb[1].number_input("Custom W20 [m/s]", value=15.4, key="dyn_w20",
-                                         persist_state="session",
+        form["w20"] = num(tb[1], "Custom W20 [m/s]", "dyn_w20", 15.4,
                                          help="Used with 'Custom W20' only. σ_w = 0.1 W20.")
-        form["seed"] = tb[2].number_input("Random seed [-]", value=1, step=1, key="dyn_seed",
-                                          persist_state="session")
-        form["fade_in"] = tb[3].number_input("Fade-in [s]", value=20.0, key="dyn_fade",
-                                             persist_state="session",
+        form["seed"] = num(tb[2], "Random seed [-]", "dyn_seed", 1, integer=True)
+        form["fade_in"] = num(tb[3], "Fade-in [s]", "dyn_fade", 20.0,
                                              help="Statistics skip the fade-in.")
-        form["max_frequency"] = tb[4].number_input("Highest frequency [Hz]", value=1.0,
-                                                   key="dyn_fmax", persist_state="session")
+        form["max_frequency"] = num(tb[4], "Highest frequency [Hz]", "dyn_fmax", 1.0)
         tc = st.columns(2)
         form["vertical"] = tc[0].checkbox("Vertical turbulence w′", value=True, key="dyn_vert",
                                           persist_state="session")
@@ -102,19 +94,14 @@ with st.form("dyn_form"):
         form["profile"] = p[0].selectbox("Wind profile", list(view.PROFILES),
                                          format_func=view.PROFILES.get, key="dyn_profile",
                                          persist_state="session")
-        form["exponent"] = p[1].number_input("Power-law exponent [-]", value=1 / 7,
-                                             format="%.3f", key="dyn_exp", persist_state="session")
-        form["roughness"] = p[2].number_input("Log-law roughness length [m]", value=0.03,
-                                              format="%.4f", key="dyn_z0", persist_state="session")
+        form["exponent"] = num(p[1], "Power-law exponent [-]", "dyn_exp", 1 / 7)
+        form["roughness"] = num(p[2], "Log-law roughness length [m]", "dyn_z0", 0.03)
         m = st.columns(4)
         form["body"] = m[0].radio("Body model", list(view.BODIES), format_func=view.BODIES.get,
                                   key="dyn_body", persist_state="session")
-        form["segments"] = m[1].number_input("Tether segments [-]", value=20, step=1,
-                                             key="dyn_nseg", persist_state="session")
-        form["damping"] = m[2].number_input("Tether damping ratio ζ [-]", value=1.0,
-                                            key="dyn_zeta", persist_state="session")
-        form["wall"] = m[3].number_input("Wall-clock budget [s]", value=60.0, key="dyn_wall",
-                                         persist_state="session")
+        form["segments"] = num(m[1], "Tether segments [-]", "dyn_nseg", 20, integer=True)
+        form["damping"] = num(m[2], "Tether damping ratio ζ [-]", "dyn_zeta", 1.0)
+        form["wall"] = num(m[3], "Wall-clock budget [s]", "dyn_wall", 60.0)
         form["unsteady"] = st.checkbox(
             "Unsteady-wind inertia (added mass × fluid acceleration + Froude–Krylov)", value=True,
             key="dyn_unsteady", persist_state="session",
@@ -130,7 +117,7 @@ if submitted:
         req = view.build_request(form, view.current_inputs_or_none(st.session_state),
                                  cases_state)
     except ValueError as exc:
-        st.error(f"Cannot run: {exc}", icon=":material/error:")
+        st.error(widgets.plain(f"Cannot run: {exc}"), icon=":material/error:")
         st.session_state.pop("dyn_request", None)
     else:
         st.session_state["dyn_request"] = view.request_key(req)

@@ -7,7 +7,7 @@ import streamlit as st
 
 from aerostat_core.optimize import OBJECTIVES
 from app_ui import shapes_view as view
-from app_ui import state
+from app_ui import state, widgets
 
 st.title("Hull shapes")
 st.caption(
@@ -95,7 +95,7 @@ if run or st.session_state.get("shape_opt_done"):
         with st.spinner("Optimising every shape..."):
             rows = view.cached_shape_study(state.current_inputs_key(), objective)
     except ValueError as exc:
-        st.error(f"Cannot optimise the shapes: {exc}", icon=":material/error:")
+        st.error(widgets.plain(f"Cannot optimise the shapes: {exc}"), icon=":material/error:")
     else:
         best = [r for r in rows if r["best"]]
         if best:
@@ -106,4 +106,9 @@ if run or st.session_state.get("shape_opt_done"):
             )
         else:
             st.warning("No shape meets every requirement.", icon=":material/warning:")
-        st.dataframe(view.study_frame(rows, objective), hide_index=True, key="shape_opt_table")
+        st.dataframe(
+            view.study_frame(rows, objective),
+            hide_index=True,
+            key="shape_opt_table",
+            column_config=view.STUDY_FORMAT,
+        )

@@ -49,12 +49,36 @@ def values(tr: dict, axis: str) -> np.ndarray:
     return np.array([np.nan if x is None else x for x in v], dtype=float)
 
 
+def shown_table(at: AppTest, first_column: str) -> pd.DataFrame:
+    """The texts a static table (``st.table`` of a styler) shows, by its first column."""
+    import pyarrow as pa
+
+    for t in at.table:
+        if len(t.value.columns) and t.value.columns[0] == first_column:
+            data = t.proto.arrow_data
+            if data.HasField("styler"):
+                return pa.ipc.open_stream(data.styler.display_values).read_all().to_pandas()
+            return t.value.astype(str)
+    raise KeyError(f"no static table starting with {first_column!r}")
+
+
+def table_with(at: AppTest, first_column: str, column: str) -> pd.DataFrame:
+    """The dataframe or static table whose first column is ``first_column`` and that has
+    ``column`` (pages show a wide table as several by theme)."""
+    for df in [*at.dataframe, *at.table]:
+        cols = list(df.value.columns)
+        if cols[:1] == [first_column] and column in cols:
+            return df.value
+    raise KeyError(f"no table starting with {first_column!r} with column {column!r}")
+
+
 def table(at: AppTest, first_column: str) -> pd.DataFrame:
-    """The dataframe element whose first column has this name."""
-    for df in at.dataframe:
+    """The dataframe (or static table) element whose first column has this name."""
+    elements = [*at.dataframe, *at.table]
+    for df in elements:
         if len(df.value.columns) and df.value.columns[0] == first_column:
             return df.value
-    cols = [df.value.columns[0] for df in at.dataframe if len(df.value.columns)]
+    cols = [df.value.columns[0] for df in elements if len(df.value.columns)]
     raise KeyError(f"no table starting with {first_column!r}; tables start with {cols}")
 
 
@@ -121,3 +145,37 @@ def goto(at: AppTest, page: str) -> AppTest:
     at.switch_page(page)
     at.run()
     return at
+
+
+def side_view(at: AppTest) -> dict:
+    """The Design page's static side view (an SVG drawn to scale): its scale [px/m], the hull
+    outline's extent in metres, and the marked points {key: (xi, z)} [m]."""
+    import xml.etree.ElementTree as ET
+
+    for el in at.get("image"):  # st.image of an SVG string: a base64 data URL
+        urls = [img.url for img in el.proto.imgs]
+        svg = [u for u in urls if u.startswith("data:image/svg+xml;base64,")]
+        if not svg:
+            continue
+        body = base64.b64decode(svg[0].split(",", 1)[1]).decode("utf-8")
+        if 'data-testid="side-view"' not in body:
+            continue
+        root = ET.fromstring(body)
+        ns = "{http://www.w3.org/2000/svg}"
+        scale = float(root.get("data-scale"))
+        hull = next(e for e in root.iter(f"{ns}polygon") if e.get("data-part") == "hull")
+        xy = np.array([[float(v) for v in p.split(",")] for p in hull.get("points").split()])
+        points = {
+            g.get("data-point"): (float(g.get("data-xi")), float(g.get("data-z")))
+            for g in root.iter(f"{ns}g")
+            if g.get("data-point")
+        }
+        parts = [e.get("data-part") for e in root.iter() if e.get("data-part")]
+        return {
+            "scale": scale,
+            "hull_length": float(np.ptp(xy[:, 0])) / scale,
+            "hull_height": float(np.ptp(xy[:, 1])) / scale,
+            "points": points,
+            "parts": parts,
+        }
+    raise KeyError("no side view on the page")

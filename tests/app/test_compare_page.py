@@ -31,13 +31,12 @@ from tests.app.helpers import (
 GUI = list(thesis_gui_cases())
 
 
-
-
 @pytest.fixture
 def at(thesis_at):
     """These tests check the page against the thesis' numbers: start from the thesis baseline
     (the app itself opens on the practice default)."""
     return thesis_at
+
 
 def _button(at, label):
     return next(b for b in at.button if b.label == label)

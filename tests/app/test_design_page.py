@@ -24,6 +24,7 @@ from tests.app.helpers import (
     metric,
     metric_float,
     show_tab,
+    side_view,
     submit,
     table,
     trace,
@@ -36,6 +37,7 @@ def at(thesis_at):
     """These tests check the page against the thesis' numbers: start from the thesis baseline
     (the app itself opens on the practice default)."""
     return thesis_at
+
 
 def _baseline():
     return design(*thesis_baseline())
@@ -57,8 +59,7 @@ def test_opens_on_the_practice_default():
     assert metric_float(app, "Total mass [kg]") == pytest.approx(d.total_mass, abs=0.05)
     assert app.selectbox(key="in_rules").value == "practice"
     assert app.radio(key="in_volume_mode").value == "sized"
-    assert any("Rule set: **practice**" in c.value and "free lift" in c.value
-               for c in app.caption)
+    assert any("Rule set: **practice**" in c.value and "free lift" in c.value for c in app.caption)
     rows = table(app, "Constraint")
     assert list(rows["Met"]) == ["yes"] * len(d.constraint_rows())
     assert d.feasible
@@ -111,9 +112,8 @@ def test_sized_volume_follows_the_payload(at):
     geo = table(at, "Quantity")
     row = geo.loc[geo["Quantity"] == "Hull length l"]
     assert row["Value"].item() == pytest.approx(float(expected.airframe.hull.length))
-    side = chart(at, "side_view")
-    hull_x = values(trace(side, "hull"), "x")
-    assert hull_x.max() == pytest.approx(float(expected.airframe.hull.length))
+    side = side_view(at)  # the first tab's static drawing, to scale
+    assert side["hull_length"] == pytest.approx(float(expected.airframe.hull.length), rel=1e-3)
     # the 3-D view is the same hull: its mesh spans the new length (fins stay on the hull)
     show_tab(at, "3-D view")
     data = chart(at, "hull_3d")["data"]
@@ -227,8 +227,17 @@ def test_geometry_and_mass_tables_have_units_and_match(at):
 
 def test_side_view_marks_buoyancy_gravity_and_confluence(at):
     d = _baseline()
-    fig = chart(at, "side_view")
     af = d.airframe
+    # the first tab: a static drawing to scale (no plotly.js before the first result)
+    side = side_view(at)
+    assert side["points"]["cb"][0] == pytest.approx(float(af.hull.xi_cb))
+    assert side["points"]["cg"][0] == pytest.approx(float(af.mass.xi_cg))
+    assert side["points"]["c"] == pytest.approx((float(af.xi_c), float(af.z_c)))
+    assert side["hull_length"] == pytest.approx(float(af.hull.length), rel=1e-3)
+    assert side["parts"].count("confluence line") >= 2 and "fin" in side["parts"]
+    # the interactive side view, a toggle away: the same points
+    at.toggle(key="side_view_interactive").set_value(True).run()
+    fig = chart(at, "side_view")
     cb = trace(fig, "centre of buoyancy (CB)")
     cg = trace(fig, "centre of gravity (CG)")
     c = trace(fig, "confluence point (C)")
@@ -440,7 +449,9 @@ def test_downloads_are_offered_in_every_tab(at):
 
 
 def test_only_the_open_tab_is_computed(at):
-    assert [k for k in chart_keys(at)] == ["side_view"]
+    assert chart_keys(at) == []  # the first tab draws no chart: its side view is static
+    show_tab(at, "3-D view")
+    assert chart_keys(at) == ["hull_3d"]
     show_tab(at, "Performance")
     assert chart_keys(at) == ["perf_blow_by", "perf_alpha", "perf_lift", "perf_tension", "perf_cm"]
     submit(at, in_payload=12.0)  # the open tab stays open after a change

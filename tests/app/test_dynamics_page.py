@@ -15,7 +15,7 @@ from aerostat_core import Configuration, HullSpec, Requirement, design
 from aerostat_core.io import inputs_from_dict, inputs_to_dict
 from app_ui import dynamics_view as view
 from tests.app.conftest import APP_PATH
-from tests.app.helpers import chart, trace, values
+from tests.app.helpers import chart, messages, trace, values
 
 DYN_PAGE = "pages/5_Dynamics.py"
 
@@ -31,10 +31,14 @@ def dyn() -> AppTest:
 
 
 def _set(at: AppTest, key: str, value) -> None:
-    for kind in ("number_input", "selectbox", "radio", "checkbox"):
+    for kind in ("text_input", "number_input", "selectbox", "radio", "checkbox"):
         for el in getattr(at, kind):
             if getattr(el, "key", None) == key:
-                el.set_value(value)
+                # the number boxes are text boxes (read like the Design form's)
+                typed = (
+                    f"{value:g}" if kind == "text_input" and not isinstance(value, str) else value
+                )
+                el.set_value(typed)
                 return
     raise KeyError(key)
 
@@ -152,9 +156,25 @@ def test_saved_case_is_simulated(dyn):
 def test_bad_input_names_field_value_and_range(dyn):
     _set(dyn, "dyn_speed", 45.0)
     at = _run(dyn)
-    msg = " ".join(e.value for e in at.error)
+    msg = " ".join(messages(at, "error"))  # plain text (Markdown escapes removed)
     assert "Mean wind at the aerostat = 45 m/s" in msg and "[0, 30] m/s" in msg
     assert len(at.get("plotly_chart")) == 0
+
+
+def test_a_decimal_comma_is_a_decimal_point_never_ten_times(dyn):
+    _set(dyn, "dyn_speed", "4,5")  # 45 m/s would be refused (valid range [0, 30])
+    _set(dyn, "dyn_scenario", "steady")
+    _set(dyn, "dyn_duration", "2,5e1")
+    at = _run(dyn)
+    assert not messages(at, "error")
+    assert at.session_state["dyn_request"]
+    import json as _json
+
+    request = _json.loads(at.session_state["dyn_request"])
+    assert (request["speed"], request["duration"]) == (4.5, 25.0)
+    _set(at, "dyn_speed", "4.5,0")
+    at = _run(at)
+    assert any("Mean wind at the aerostat" in m and "ambiguous" in m for m in messages(at, "error"))
 
 
 def test_reversed_wind_runs_on_and_flags_stall(dyn):
@@ -192,7 +212,8 @@ def test_second_click_return_and_second_session_replay_from_the_store(dyn):
     assert not at.exception
     at = _run(at)
     assert values(trace(chart(at, "dyn_position"), "blow-by x_C [m]"), "y") == pytest.approx(
-        values(trace(first, "blow-by x_C [m]"), "y"))
+        values(trace(first, "blow-by x_C [m]"), "y")
+    )
     other = AppTest.from_file(str(APP_PATH), default_timeout=180)  # a second session
     other.run()
     other.switch_page(DYN_PAGE)

@@ -54,5 +54,18 @@ def test_bad_wind_csv_gets_a_message_not_a_traceback(at):
     at.run()
     assert not at.exception
     # the cell is quoted as plain text, its markdown escaped
-    assert any(r"row 1: '\*\*gusty\*\*' is not a wind speed" in m
-               for m in raw_messages(at, "error"))
+    assert any(
+        r"row 1: '\*\*gusty\*\*' is not a wind speed" in m for m in raw_messages(at, "error")
+    )
+
+
+def test_site_boxes_read_a_decimal_comma_or_name_the_box(at):
+    show_tab(at, "Envelope")
+    at.text_input(key="site_c").set_value("6,5")  # 6.5 m/s, never 65
+    at.button(key="FormSubmitter:site_form-Compute flyable time").click().run()
+    assert not at.exception
+    assert json.loads(at.session_state["envelope_site"]["json"])["scale"] == 6.5
+    at.text_input(key="site_k").set_value("2,0,1")
+    at.button(key="FormSubmitter:site_form-Compute flyable time").click().run()
+    errors = raw_messages(at, "error")
+    assert any("Weibull k" in e and "ambiguous" in e for e in errors), errors

@@ -17,6 +17,7 @@ def at(thesis_at):
     """The thesis baseline (given volume), as these checks assume."""
     return thesis_at
 
+
 def test_mission_tab_shows_the_design_mission_outputs(at):
     show_tab(at, "Mission")
     assert not at.exception
@@ -34,8 +35,8 @@ def test_mission_tab_shows_the_design_mission_outputs(at):
 def test_mission_form_writes_the_inputs_and_resizes(at):
     show_tab(at, "Mission")
     before = design(*state.current_inputs(at.session_state))
-    at.number_input(key="mission_power").set_value(50.0)
-    at.number_input(key="mission_endurance").set_value(3.0)
+    at.text_input(key="mission_power").set_value("50")  # a text box: "12,5" reads as 12.5
+    at.text_input(key="mission_endurance").set_value("3,0")
     at.button(key="FormSubmitter:mission_form-Apply mission inputs").click()
     at.run()
     assert not at.exception

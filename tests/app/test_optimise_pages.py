@@ -13,12 +13,10 @@ from aerostat_core import thesis_baseline
 from aerostat_core.io import inputs_from_dict, inputs_to_dict
 from aerostat_core.optimize import DEFAULT_BOUNDS, VARIABLES
 from aerostat_core.sensitivity import one_at_a_time, two_variable_map
-from tests.app.helpers import chart, chart_keys, goto, messages, table, values
+from tests.app.helpers import chart, chart_keys, goto, messages, table, table_with, values
 
 SENS_PAGE = "pages/3_Sensitivity.py"
 OPT_PAGE = "pages/4_Optimise.py"
-
-
 
 
 @pytest.fixture
@@ -27,11 +25,16 @@ def at(thesis_at):
     (the app itself opens on the practice default)."""
     return thesis_at
 
+
 def _set(at, key, value):
     for kind in ("number_input", "radio", "selectbox", "text_input", "checkbox", "multiselect"):
         for el in getattr(at, kind):
             if getattr(el, "key", None) == key:
-                el.set_value(value)
+                # number boxes are text boxes (read like the Design form's): type the number
+                typed = (
+                    f"{value:g}" if kind == "text_input" and not isinstance(value, str) else value
+                )
+                el.set_value(typed)
                 return
     raise KeyError(key)
 
@@ -71,11 +74,16 @@ def test_sensitivity_sweeps_plot_the_engine_values(sens):
         assert np.all(y <= req.blow_by_limit * (1 + 1e-6))
         on = res.sweeps[name].designs.binding == "blow_by"
         assert on.sum() >= 4 and np.allclose(y[on], req.blow_by_limit, rtol=1e-6)
-    df = table(sens, "Variable")
-    assert list(df["Low"]) == pytest.approx([shown(k, DEFAULT_BOUNDS[k][0]) for k in VARIABLES])
-    assert df["Variable"].iloc[2] == "Fin position Δl_f (root LE) [% of hull length]"
-    assert df["Low"].iloc[2] == pytest.approx(60.0)
-    assert df["Mass change at high [%]"].iloc[1] == pytest.approx(
+    # the range summary, transposed (one column per variable, so it fits at 1024 px)
+    df = table(sens, "Over each range").set_index("Over each range")
+    from app_ui.optimise_view import var_label
+
+    assert list(df.columns) == [var_label(k) for k in VARIABLES]
+    assert df.columns[2] == "Fin position Δl_f (root LE) [% of hull length]"
+    low = df.loc["Low end of the range"]
+    assert list(low) == pytest.approx([shown(k, DEFAULT_BOUNDS[k][0]) for k in VARIABLES])
+    assert low.iloc[2] == pytest.approx(60.0)
+    assert df.loc["Mass change at the high end [%]"].iloc[1] == pytest.approx(
         res.summary_rows()[1]["mass_change_high_pct"]
     )
 
@@ -114,9 +122,15 @@ def test_sensitivity_held_sweep_and_other_map(sens):
     [
         (
             {"sens_lo_fineness_ratio": 4.0, "sens_hi_fineness_ratio": 3.0},
-            ["lower bound 4", "fineness_ratio"],
+            ["lower bound 4 > upper bound 3", "Fineness ratio f"],
         ),
-        ({"sens_hi_position": 99.0}, ["position", "valid range [0.4, 0.95]"]),  # % of l
+        # in the unit of the boxes: the fin position in % of the hull length, never a fraction
+        (
+            {"sens_hi_position": 99.0},
+            ["Fin position", "bounds (60, 99)", "valid range [40, 95]"],
+        ),
+        ({"sens_lo_area_change": "-10,5.0"}, ["Fin-area change", "ambiguous"]),
+        ({"sens_lo_area_change": ""}, ["Fin-area change", "required"]),
     ],
 )
 def test_sensitivity_bad_range_names_the_field(sens, changes, words):
@@ -161,7 +175,11 @@ def test_optimise_quick_run_shows_agreeing_solvers_and_every_plot(ran):
     mass = df["Total mass [kg]"].to_numpy()
     assert np.ptp(mass) / mass.min() < 0.01
     assert np.allclose(df["Blow-by [m]"], thesis_baseline()[0].blow_by_limit, rtol=1e-6)
-    assert (df["Evaluations"] > 0).all() and (df["Time [s]"] > 0).all()
+    runs = table_with(ran, "Solver", "Evaluations")  # the comparison by theme, 3 tables
+    assert list(runs["Solver"]) == list(df["Solver"])
+    assert (runs["Evaluations"] > 0).all() and (runs["Time [s]"] > 0).all()
+    variables = table_with(ran, "Solver", "Δl_f [% of l]")
+    assert ((variables["Δl_f [% of l]"] >= 40) & (variables["Δl_f [% of l]"] <= 95)).all()
     assert any("Spread of the optimum total mass" in s for s in messages(ran, "success"))
     assert chart_keys(ran) == ["opt_convergence", "opt_performance", "opt_pareto"]
     conv = chart(ran, "opt_convergence")
@@ -207,9 +225,12 @@ def test_save_optimum_as_case(ran):
     [
         (
             {"opt_lo_fineness_ratio": 4.5, "opt_hi_fineness_ratio": 2.5},
-            ["lower bound 4.5", "upper bound 2.5", "fineness_ratio"],
+            ["lower bound 4.5", "upper bound 2.5", "Fineness ratio f"],
         ),
-        ({"opt_lo_area_change": 20.0, "opt_hi_area_change": 20.0}, ["empty", "area_change"]),
+        ({"opt_lo_area_change": 20.0, "opt_hi_area_change": 20.0}, ["empty", "Fin-area change"]),
+        ({"opt_hi_position": "96"}, ["Fin position", "% of hull length", "[40, 95]"]),
+        ({"opt_pareto_n": "11,5"}, ["Points", "not a whole number"]),
+        ({"opt_seed": "abc"}, ["Random seed", "not a number"]),
         ({"opt_limit": 400.0}, ["Blow-by limit", "blow_by_limit", "400"]),
         ({"opt_solvers": []}, ["choose at least one solver"]),
     ],
@@ -351,3 +372,35 @@ def test_an_optimisation_over_the_compute_budget_is_refused_before_it_runs():
             pareto_low=0.8,
             pareto_high=1.5,
         )
+
+
+# --- decimal comma (issue 9: "12,5" was read as 125 by the browser's number boxes) -------------
+
+
+def test_sensitivity_reads_a_decimal_comma_as_a_point(sens):
+    _set(sens, "sens_lo_fineness_ratio", "2,5")
+    _set(sens, "sens_hi_fineness_ratio", "4,5")
+    _set(sens, "sens_hi_position", "72,5")  # % of the hull length
+    sens.button(key="sens_run").click().run()
+    assert not sens.exception and not messages(sens, "error")
+    fig = chart(sens, "sens_ofat")
+    f = values(_traces(fig, "total_mass vs fineness_ratio")[0], "x")
+    assert f.min() == pytest.approx(2.5) and f.max() == pytest.approx(4.5)
+    pos = values(_traces(fig, "total_mass vs position")[0], "x")
+    assert pos.max() == pytest.approx(72.5)  # never 725 (refused) nor 7.25
+
+
+def test_optimise_reads_a_decimal_comma_as_a_point(opt):
+    _set(opt, "opt_lo_area_change", "-12,5")
+    _set(opt, "opt_hi_position", "72,5")
+    _set(opt, "opt_limit", "53,5")
+    _set(opt, "opt_pareto_low", "0,8")
+    _set(opt, "opt_solvers", ["slsqp"])
+    opt.button(key="opt_run").click().run()
+    assert not opt.exception and not messages(opt, "error")
+    request = opt.session_state["opt_job"]["request"]
+    bounds = json.loads(request["bounds"])
+    assert bounds["area_change"][0] == -12.5
+    assert bounds["position"][1] == pytest.approx(0.725)
+    assert json.loads(request["inputs"])["requirement"]["blow_by_limit"] == 53.5
+    assert min(request["limits"]) == pytest.approx(0.8 * 53.5)

@@ -96,12 +96,12 @@ def test_main_action_twice_and_from_a_second_session(page):
 
 
 def test_an_unexpected_error_is_a_reference_not_a_traceback(monkeypatch, caplog):
-    from app_ui import plots
+    from app_ui import side_view
 
     def broken(*_a, **_k):
         raise RuntimeError("internal detail that must not reach the screen")
 
-    monkeypatch.setattr(plots, "side_view_figure", broken)
+    monkeypatch.setattr(side_view, "side_view_svg", broken)  # drawn by the first run
     caplog.set_level(logging.ERROR, logger="aerostat.app")
     at = AppTest.from_file(str(APP_PATH), default_timeout=TIMEOUT_S)
     at.run()

@@ -5,7 +5,17 @@ from __future__ import annotations
 import pytest
 
 from aerostat_core.shape_comparison import thesis_shape_comparison
-from tests.app.helpers import DESIGN_PAGE, chart, goto, messages, submit, table, trace, values
+from tests.app.helpers import (
+    DESIGN_PAGE,
+    chart,
+    goto,
+    messages,
+    side_view,
+    submit,
+    table,
+    trace,
+    values,
+)
 
 SHAPES_PAGE = "pages/7_Shapes.py"
 
@@ -39,6 +49,8 @@ def test_shapes_page_optimises_every_shape(at):
     assert any("Best shape" in m for m in messages(at, "success"))
     t = [df.value for df in at.dataframe if "Best" in df.value.columns][0]
     assert len(t) == 8 and t["Best"].sum() == 1
+    pos = t["Δl_f [% of l]"].dropna()  # the fin position in % of the hull length, as elsewhere
+    assert len(pos) and ((pos >= 40) & (pos <= 95)).all()
 
 
 def test_design_page_shape_selector_resets_fineness_and_redraws(at):
@@ -48,10 +60,8 @@ def test_design_page_shape_selector_resets_fineness_and_redraws(at):
     hull = at.session_state["design_inputs"]["configuration"]["hull"]
     assert hull["shape"] == "sphere" and hull["fineness_ratio"] == 1.0
     assert not any("not applied" in m for m in messages(at, "warning"))
-    side = chart(at, "side_view")
-    hull_trace = side["data"][0]
-    x, y = values(hull_trace, "x"), values(hull_trace, "y")
-    assert (x.max() - x.min()) == pytest.approx(2 * y.max(), rel=1e-3)  # a circle, to scale
+    side = side_view(at)
+    assert side["hull_length"] == pytest.approx(side["hull_height"], rel=1e-2)  # a circle, to scale
     names = [b.label for b in at.get("download_button")]
     assert {
         "Hull and fins (STL)",

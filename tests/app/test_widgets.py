@@ -421,7 +421,9 @@ def test_geometry_counts_are_integers_and_volume_matches_the_metric(rep):
 
     assert re.search(r"Number of fins</td>\s*<td[^>]*>4</td>", html)
     assert re.search(r"Hull volume</td>\s*<td[^>]*>170.0</td>", html)  # the metric's precision
-    assert re.search(r"Fineness ratio l/d</td>\s*<td[^>]*>4.000</td>", html)
+    # ratios at the formatting table's 2 decimals, lengths at the metrics' 2 (app_ui.formats)
+    assert re.search(r"Fineness ratio l/d</td>\s*<td[^>]*>4.00</td>", html)
+    assert re.search(r"Hull length l</td>\s*<td[^>]*>17.32</td>", html)
 
 
 def test_secondary_axes_have_round_ticks(rep):

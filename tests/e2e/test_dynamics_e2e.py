@@ -25,7 +25,7 @@ def test_short_gust_run(app_page: Page, console_errors: list[str]):
     goto_page(page, "Dynamics")
     assert_no_exception(page, "Dynamics page")
     expect(page.get_by_role("heading", name="Dynamics")).to_be_visible()
-    box = page.get_by_role("spinbutton", name="Simulated time [s]", exact=True)
+    box = page.get_by_role("textbox", name="Simulated time [s]", exact=True)
     box.fill("60")
     box.press("Tab")
     page.get_by_role("button", name="Run simulation").click()
@@ -60,7 +60,7 @@ def test_short_gust_run(app_page: Page, console_errors: list[str]):
 
 
 def _run_60s(page: Page) -> None:
-    box = page.get_by_role("spinbutton", name="Simulated time [s]", exact=True)
+    box = page.get_by_role("textbox", name="Simulated time [s]", exact=True)
     box.fill("45")
     box.press("Tab")
     page.get_by_role("button", name="Run simulation").click()

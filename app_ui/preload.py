@@ -1,0 +1,51 @@
+"""Load the browser's heavy chart and grid code after the first result is on screen.
+
+A fresh browser fetches Streamlit's element code on first use: the plotly chart bundle is
+4.7 MB of JavaScript and the data grid about 1 MB. Drawn on the first tab, they held the first
+result back by about 3 s on 2 busy cores; drawn on the next tab, they made that tab switch slow
+instead. So the Design page's first tab uses a static drawing and static tables, and its last
+element asks the browser to import those two bundles when it is idle: the same module URLs the
+app imports, so the tab switch finds them evaluated. Nothing here touches user data; the script
+is a constant apart from the bundle names found in the installed Streamlit.
+"""
+
+from __future__ import annotations
+
+import functools
+import json
+from pathlib import Path
+
+import streamlit as st
+
+#: Streamlit's lazily loaded element bundles worth warming (file-name prefixes).
+BUNDLES = ("PlotlyChart", "DataFrame")
+
+
+@functools.cache
+def bundle_urls() -> tuple[str, ...]:
+    """Paths (relative to the app's base URL) of the installed Streamlit's bundles of
+    :data:`BUNDLES`; empty when the layout of the package is not the expected one."""
+    js = Path(st.__file__).parent / "static" / "static" / "js"
+    return tuple(f"static/js/{p.name}" for b in BUNDLES for p in sorted(js.glob(f"{b}.*.js")))
+
+
+def warm_bundles() -> None:
+    """Place at the end of the first page: once the browser is idle after drawing it, import
+    the chart and grid bundles (at most once per browser tab)."""
+    urls = bundle_urls()
+    if not urls:
+        return
+    script = (
+        "<script>(() => {"
+        "if (window.__aerostatWarm) return; window.__aerostatWarm = true;"
+        f"const urls = {json.dumps(list(urls))};"
+        # one after the other (the chart bundle first): two at once made both late
+        "const go = () => urls.reduce((p, u) => p.then(() => import("
+        "new URL(u, document.baseURI).href)).catch(() => {}), Promise.resolve());"
+        # a second after the first result (not during the first click on Update design),
+        # then when idle
+        "setTimeout(() => (window.requestIdleCallback || ((f) => setTimeout(f, 0)))"
+        "(go, {timeout: 300}), 800);"
+        "})();</script>"
+    )
+    st.html(script, unsafe_allow_javascript=True)

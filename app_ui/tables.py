@@ -1,0 +1,227 @@
+"""Display tables of the Design and Compare pages: pure functions from the plain rows of
+:func:`aerostat_core.report.design_report` to pandas frames and stylers (no Streamlit; tested
+directly). Units sit in every column name; decimals come from :mod:`app_ui.formats`.
+
+The performance sweep has 15 columns, too many for one table at 1024 px (the result column is
+under 400 px wide there): it is shown as three static tables by theme (:data:`PERF_TABLES`:
+where the aerostat flies, the tether, the forces and stability), each starting with the wind
+speed, whose headers wrap, so no table scrolls sideways.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping, Sequence
+from typing import Any
+
+import numpy as np
+import pandas as pd
+from pandas.io.formats.style import Styler
+
+from . import formats
+
+#: Performance-row keys -> display column names (units in brackets).
+PERF_COLUMNS: dict[str, str] = {
+    "wind_speed_m_s": "Wind [m/s]",
+    "alpha_eq_deg": "α_eq [deg]",
+    "dynamic_lift_N": "Dynamic lift [N]",
+    "drag_N": "Drag [N]",
+    "blow_by_m": "Blow-by [m]",
+    "flying_height_m": "Flying height [m]",
+    "altitude_loss_m": "Altitude loss [m]",
+    "tension_top_N": "Tension at top [N]",
+    "tension_winch_N": "Tension at winch [N]",
+    "tether_angle_top_deg": "Tether angle at top [deg]",
+    "tether_angle_winch_deg": "Tether angle at winch [deg]",
+    "safety_factor": "Safety factor [-]",
+    "cm_alpha_per_rad": "C_mα [1/rad]",
+    "cm_alpha_aero_cv_per_rad": "C_mα,CV [1/rad]",
+    "flags": "Limits exceeded",
+}
+#: Longer explanations of the short column names (the tables' column help).
+PERF_HELP: dict[str, str] = {
+    "Tether angle at top [deg]": "Tether angle at the confluence point, from the vertical.",
+    "Tether angle at winch [deg]": "Tether angle at the winch, from the vertical.",
+    "C_mα [1/rad]": "Pitching-moment slope about the confluence point (negative: stable).",
+    "C_mα,CV [1/rad]": "Weathervane stability: pitching-moment slope of hull + fins about the "
+    "centre of volume (negative: stable).",
+    "Altitude loss [m]": "Operating altitude minus flying height (negative: flies higher).",
+}
+#: Quantity of each performance column (its decimals and unit, :mod:`app_ui.formats`).
+PERF_KINDS: dict[str, str] = {
+    "Wind [m/s]": "wind",
+    "α_eq [deg]": "alpha_eq",
+    "Dynamic lift [N]": "dynamic_lift",
+    "Drag [N]": "drag",
+    "Blow-by [m]": "blow_by",
+    "Flying height [m]": "flying_height",
+    "Altitude loss [m]": "altitude_loss",
+    "Tension at top [N]": "tension",
+    "Tension at winch [N]": "tension",
+    "Tether angle at top [deg]": "tether_angle",
+    "Tether angle at winch [deg]": "tether_angle",
+    "Safety factor [-]": "safety_factor",
+    "C_mα [1/rad]": "cm_alpha",
+    "C_mα,CV [1/rad]": "cm_alpha",
+}
+#: The sweep's tables by theme: title -> columns (each with the wind speed; the limit flags in
+#: the first). Six columns at most: the result column is under 400 px wide at 1024 px.
+PERF_TABLES: dict[str, tuple[str, ...]] = {
+    "Where it flies": (
+        "Wind [m/s]",
+        "Blow-by [m]",
+        "Flying height [m]",
+        "Altitude loss [m]",
+        "Limits exceeded",
+    ),
+    "Tether": (
+        "Wind [m/s]",
+        "Tension at top [N]",
+        "Tension at winch [N]",
+        "Tether angle at top [deg]",
+        "Tether angle at winch [deg]",
+        "Safety factor [-]",
+    ),
+    "Forces and stability": (
+        "Wind [m/s]",
+        "α_eq [deg]",
+        "Dynamic lift [N]",
+        "Drag [N]",
+        "C_mα [1/rad]",
+        "C_mα,CV [1/rad]",
+    ),
+}
+LIMIT_ROW_STYLE = "background-color: #fde2e2"
+#: Table styles of a static table whose text cells wrap: Streamlit lets a cell grow to a wide
+#: maximum before it wraps, which made the geometry table scroll at 1024 px.
+WRAP = [{"selector": "td > *, th > *", "props": "max-width: 14em; white-space: normal;"}]
+DIFF_ROW_STYLE = "background-color: #fff3c4"
+
+
+def geometry_frame(rows: Sequence[Mapping[str, Any]]) -> pd.DataFrame:
+    """Geometry rows as a frame: Quantity, Value, Unit."""
+    return pd.DataFrame(
+        {
+            "Quantity": [r["quantity"] for r in rows],
+            "Value": [float(r["value"]) for r in rows],
+            "Unit": [formats.unit(r["unit"]) for r in rows],
+        }
+    )
+
+
+_SHOWN_UNIT = {formats.unit(u): u for u in ("m3", "m2")}
+
+
+def geometry_styler(df: pd.DataFrame) -> Styler:
+    """The geometry table with each value at the decimals of its kind (counts as integers,
+    "4" not "4.000"; the hull volume as the headline metric; lengths as the metrics)."""
+    rows: dict[str, list] = {}  # kind -> row labels: one format call per kind, not per row
+    for i, q, u in zip(df.index, df["Quantity"], df["Unit"]):
+        rows.setdefault(formats.kind_of_unit(_SHOWN_UNIT.get(str(u), str(u)), str(q)), []).append(i)
+    styler = df.style.set_table_styles(WRAP)
+    for kind, idx in rows.items():
+        styler = styler.format(formats.formatter(kind), subset=pd.IndexSlice[idx, ["Value"]])
+    return styler
+
+
+def constraint_styler(df: pd.DataFrame) -> Styler:
+    """The constraint table as a static table that fits at 1024 px: the unit joined to the
+    value, limit and margin, where it is checked joined to the constraint (two columns less),
+    text cells that wrap, no index."""
+    if "Unit" in df:
+        unit = df["Unit"].map(lambda u: "" if u in ("-", "", None) else f" {formats.unit(u)}")
+        for col in ("Value", "Limit", "Margin"):
+            if col in df:
+                df = df.assign(**{col: df[col].astype(str) + unit})
+        df = df.drop(columns=["Unit"])
+    if "Checked at" in df and "Constraint" in df:  # "Blow-by, at 15 m/s": one column less
+        at = df["Checked at"].astype(str).map(lambda t: f", at {t}" if t.strip() else "")
+        df = df.assign(Constraint=df["Constraint"].astype(str) + at).drop(columns=["Checked at"])
+    wrap = [{"selector": "td > *, th > *", "props": "max-width: 7em; white-space: normal;"}]
+    return df.style.set_table_styles(wrap).hide(axis="index")
+
+
+def mass_frame(rows: Sequence[Mapping[str, Any]]) -> pd.DataFrame:
+    """Mass rows as a frame: Item, Mass [kg], Share [%]."""
+    return pd.DataFrame(
+        {
+            "Item": [r["item"] for r in rows],
+            "Mass [kg]": [float(r["mass_kg"]) for r in rows],
+            "Share [%]": [float(r["share_pct"]) for r in rows],
+        }
+    )
+
+
+def mass_styler(df: pd.DataFrame) -> Styler:
+    """:func:`mass_frame` as a static table: masses and shares at their decimals, no index."""
+    fmt = {"Mass [kg]": formats.formatter("mass"), "Share [%]": formats.formatter("share")}
+    return df.style.format(fmt).hide(axis="index")
+
+
+def performance_frame(rows: Sequence[Mapping[str, Any]]) -> pd.DataFrame:
+    """Performance rows with display column names; ``limit_exceeded`` kept as the last column
+    (the styler hides it)."""
+    df = pd.DataFrame([{PERF_COLUMNS.get(k, k): v for k, v in r.items()} for r in rows])
+    for col in df.columns:
+        if df[col].dtype.kind == "f":
+            df[col] = df[col].round(9) + 0.0  # no "-0.0" for values that are zero
+    return df
+
+
+def performance_styler(df: pd.DataFrame, columns: Sequence[str] | None = None) -> Styler:
+    """Red background on rows that break an operating limit; each column at the decimals of
+    its quantity; only ``columns`` (default: all) are shown."""
+    limited = df["limit_exceeded"].to_numpy(bool) if "limit_exceeded" in df else np.zeros(len(df))
+    shown = df.drop(columns=["limit_exceeded"], errors="ignore")
+    if columns is not None:
+        shown = shown[[c for c in columns if c in shown.columns]]
+
+    def rowstyle(row: pd.Series) -> list[str]:
+        return [LIMIT_ROW_STYLE if limited[row.name] else ""] * len(row)
+
+    fmt = {c: formats.formatter(PERF_KINDS[c]) for c in shown.columns if c in PERF_KINDS}
+    return shown.style.apply(rowstyle, axis=1).format(fmt).hide(axis="index")
+
+
+def format_value(v: Any) -> str:
+    """A table cell as text: 4 significant digits (thousands separated above 1000), booleans as
+    yes/no, None as auto.
+
+    >>> [format_value(x) for x in (372.96, 12.345, 10.0, 0.6789, 0.0123, 12000.0, True, None, "+")]
+    ['373', '12.35', '10', '0.6789', '0.0123', '12,000', 'yes', 'auto', '+']
+    """
+    if isinstance(v, (bool, np.bool_)):
+        return "yes" if v else "no"
+    if v is None:
+        return "auto"
+    if isinstance(v, (int, float, np.floating, np.integer)):
+        x = float(v)
+        if abs(x) >= 1000:
+            return f"{x:,.0f}"
+        return f"{x:.4g}"
+    return str(v)
+
+
+def comparison_frame(
+    rows: Sequence[Mapping[str, Any]], names: Sequence[str], only_differences: bool = False
+) -> pd.DataFrame:
+    """Side-by-side table (one column per case, values as text) from
+    :func:`aerostat_core.report.comparison_rows`; ``Differs`` says where the cases disagree."""
+    keep = [r for r in rows if r["differs"] or not only_differences]
+    data: dict[str, list] = {
+        "Section": [r["section"] for r in keep],
+        "Quantity": [r["quantity"] for r in keep],
+    }
+    for n in names:
+        data[n] = [format_value(r.get(n)) for r in keep]
+    data["Differs"] = [bool(r["differs"]) for r in keep]
+    return pd.DataFrame(data)
+
+
+def comparison_styler(df: pd.DataFrame) -> Styler:
+    """Yellow background on the rows where the cases differ."""
+    differs = df["Differs"].to_numpy(bool)
+
+    def rowstyle(row: pd.Series) -> list[str]:
+        return [DIFF_ROW_STYLE if differs[row.name] else ""] * len(row)
+
+    return df.style.apply(rowstyle, axis=1)

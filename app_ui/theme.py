@@ -1,0 +1,51 @@
+"""The figures' look, defined once: colours, fonts, margins and legend places of every page.
+
+Plain dicts (no plotly or Streamlit import), so a figure module takes what it needs and a change
+of colour or font happens here only. No plotly template: ``st.plotly_chart`` applies the app's
+Streamlit theme on top of these.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+#: The design's own colour (main line, bars).
+ACCENT = "#1f5fa8"
+#: Limits and whatever breaks them (limit lines, red crosses).
+LIMIT_COLOUR = "#d62728"
+#: Second and third series of a figure (the palette's next colours).
+SECOND = "#e69f00"
+THIRD = "#009e73"
+NEUTRAL = "#7f7f7f"
+#: Qualitative palette for several cases / wind speeds (colour-blind friendly, Okabe-Ito based).
+PALETTE = (
+    ACCENT,
+    SECOND,
+    THIRD,
+    "#cc79a7",
+    "#56b4e9",
+    "#d55e00",
+    NEUTRAL,
+    "#b8a200",
+    "#000000",
+)
+FONT = dict(family="sans-serif", size=13)
+TITLE_SIZE = 15
+MARGIN = dict(l=60, r=20, t=50, b=50)
+#: Legend below the plot, clear of the x-axis title (the axis title sits at about -0.12).
+LEGEND_BELOW = dict(orientation="h", y=-0.22)
+#: Legend right of the plot (figures with several panels or long names).
+LEGEND_RIGHT = dict(orientation="v", x=1.02, xanchor="left", y=1.0, yanchor="top")
+
+
+def base_layout(title: str, **layout: Any) -> dict[str, Any]:
+    """The common layout of a figure: title, font, margins and a legend below the plot;
+    ``layout`` overrides or adds keys."""
+    lay: dict[str, Any] = dict(
+        title=dict(text=title, font=dict(size=TITLE_SIZE)),
+        font=FONT,
+        margin=MARGIN,
+        legend=LEGEND_BELOW,
+    )
+    lay.update(layout)
+    return lay

@@ -1,0 +1,126 @@
+"""Tables show all their columns (issue 9, layout): at 1024 x 768 and 1400 x 900 no table of the
+Design, Sensitivity or Optimise page scrolls sideways (scrollWidth of the grid's scroller equals
+its clientWidth); and the number boxes of the Sensitivity and Optimise pages read a decimal
+comma as a decimal point, as the Design form does ("12,5" was 125 in the browser's number box).
+"""
+
+from __future__ import annotations
+
+import pytest
+from playwright.sync_api import Browser, Page, expect
+
+from tests.e2e.helpers import assert_no_exception, goto_page, wait_for_rerun
+
+pytestmark = pytest.mark.e2e
+
+RUN_TIMEOUT_MS = 120_000
+VIEWPORTS = [(1024, 768), (1400, 900)]
+
+#: Every visible table whose content is wider than its box (a sideways scroll bar): the
+#: scroller of a dataframe grid, and a static table with every box inside it.
+_WIDE = """
+() => {
+  const shown = e => e.offsetParent !== null;
+  const wide = s => s.clientWidth > 0 && s.scrollWidth > s.clientWidth + 1;
+  const say = (kind, s) => `${kind}: ${s.scrollWidth} > ${s.clientWidth}`;
+  const grids = [...document.querySelectorAll('[data-testid="stDataFrame"]')].filter(shown)
+    .flatMap(d => [...d.querySelectorAll('.dvn-scroller')].filter(wide).map(s => say('grid', s)));
+  const statics = [...document.querySelectorAll('[data-testid="stTable"]')].filter(shown)
+    .flatMap(t => [t, ...t.querySelectorAll('div')].filter(wide).map(s => say('table', s)));
+  return grids.concat(statics);
+}
+"""
+#: Tables drawn so far (grids once their scroller exists).
+_COUNT = """() => [...document.querySelectorAll('[data-testid="stDataFrame"]')]
+    .filter(d => d.offsetParent !== null && d.querySelector('.dvn-scroller')).length
+  + [...document.querySelectorAll('[data-testid="stTable"] table')]
+    .filter(t => t.offsetParent !== null).length"""
+
+
+def _open(browser: Browser, base_url: str, width: int, height: int):
+    ctx = browser.new_context(viewport={"width": width, "height": height}, base_url=base_url)
+    page = ctx.new_page()
+    page.goto("/")
+    wait_for_rerun(page)
+    assert_no_exception(page, "Design page")
+    return ctx, page
+
+
+@pytest.mark.parametrize("width, height", VIEWPORTS)
+def test_design_tables_show_every_column(browser: Browser, base_url: str, width: int, height: int):
+    ctx, page = _open(browser, base_url, width, height)
+    try:
+        for tab, n_tables in (("Geometry", 1), ("Mass", 1), ("Performance", 3)):
+            page.get_by_role("tab", name=tab, exact=True).click()
+            wait_for_rerun(page)
+            page.wait_for_function(f"() => ({_COUNT})() >= {n_tables}", timeout=30_000)
+            assert page.evaluate(_WIDE) == [], (tab, width)
+        expect(page.get_by_text("Forces and stability", exact=True)).to_be_visible()
+    finally:
+        ctx.close()
+
+
+@pytest.mark.parametrize("width, height", [(1024, 768)])
+def test_sensitivity_and_optimise_tables_show_every_column(
+    browser: Browser, base_url: str, width: int, height: int
+):
+    ctx, page = _open(browser, base_url, width, height)
+    try:
+        goto_page(page, "Sensitivity", timeout=RUN_TIMEOUT_MS)
+        assert_no_exception(page, "Sensitivity page")
+        page.wait_for_function(f"() => ({_COUNT})() >= 1", timeout=RUN_TIMEOUT_MS)
+        assert page.evaluate(_WIDE) == []
+        goto_page(page, "Optimise", timeout=RUN_TIMEOUT_MS)
+        page.get_by_text("Quick", exact=True).click()
+        page.get_by_role("button", name="Run optimisation").click()
+        wait_for_rerun(page, timeout=RUN_TIMEOUT_MS)
+        assert_no_exception(page, "Optimise page")
+        page.wait_for_function(f"() => ({_COUNT})() >= 3", timeout=RUN_TIMEOUT_MS)
+        assert page.evaluate(_WIDE) == []
+    finally:
+        ctx.close()
+
+
+def _box(page: Page, label: str):
+    return page.get_by_role("textbox", name=label, exact=True)
+
+
+def test_sensitivity_and_optimise_bounds_read_a_decimal_comma(app_page: Page):
+    page = app_page
+    goto_page(page, "Sensitivity", timeout=RUN_TIMEOUT_MS)
+    _box(page, "Fineness ratio f [-] – from").fill("2,5")
+    _box(page, "Fin position Δl_f (root LE) [% of hull length] – to").fill("72,5")
+    page.get_by_role("button", name="Update").click()
+    wait_for_rerun(page, timeout=RUN_TIMEOUT_MS)
+    assert_no_exception(page, "Sensitivity page")
+    expect(page.get_by_test_id("stAlertContentError")).to_have_count(0)
+    xs = page.evaluate(
+        """() => { const d = document.querySelectorAll('.js-plotly-plot')[0].data;
+        const x = n => d.find(t => t.name === n).x;
+        return [Math.min(...x('total_mass vs fineness_ratio')),
+                Math.max(...x('total_mass vs position'))]; }"""
+    )
+    assert xs == pytest.approx([2.5, 72.5])  # never 25 (refused) or 725
+
+    goto_page(page, "Optimise", timeout=RUN_TIMEOUT_MS)
+    page.get_by_text("Quick", exact=True).click()
+    _box(page, "Fin position Δl_f (root LE) [% of hull length] – upper").fill("72,5")
+    _box(page, "Fin-area change ΔS_f [%] – lower").fill("-12,5")
+    page.get_by_role("button", name="Run optimisation").click()
+    wait_for_rerun(page, timeout=RUN_TIMEOUT_MS)
+    assert_no_exception(page, "Optimise page")
+    expect(
+        page.get_by_role("heading", name="Solver comparison (thesis Table 4.12)")
+    ).to_be_visible()
+    # a comma and a point together is refused, naming the box, in the unit of the box
+    _box(page, "Fin-area change ΔS_f [%] – lower").fill("-1.2,5")
+    page.get_by_role("button", name="Run optimisation").click()
+    wait_for_rerun(page, timeout=RUN_TIMEOUT_MS)
+    expect(page.get_by_test_id("stAlertContentError").first).to_contain_text(
+        "Fin-area change ΔS_f [%] – lower"
+    )
+    _box(page, "Fin-area change ΔS_f [%] – lower").fill("-10")
+    _box(page, "Fin position Δl_f (root LE) [% of hull length] – upper").fill("99")
+    page.get_by_role("button", name="Run optimisation").click()
+    wait_for_rerun(page, timeout=RUN_TIMEOUT_MS)
+    expect(page.get_by_test_id("stAlertContentError").first).to_contain_text("valid range [40, 95]")
