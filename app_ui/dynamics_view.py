@@ -28,7 +28,7 @@ import numpy as np
 import plotly.graph_objects as go
 import streamlit as st
 
-from aerostat_core.dynamics.linearise import linearise
+from aerostat_core.dynamics.linearize import linearize
 from aerostat_core.dynamics.results import SIGNALS, limit_flags, response_metrics
 from aerostat_core.dynamics.scenarios import (
     default_request,
@@ -48,14 +48,14 @@ from aerostat_core.dynamics.thesis import (
 )
 from aerostat_core.dynamics.turbulence import DRYDEN_W20
 from aerostat_core.io import inputs_from_dict, inputs_to_dict
-from aerostat_core.presets import thesis_optimised_label
+from aerostat_core.presets import thesis_optimized_label
 
 from . import entry, formats
 from .theme import ACCENT, FONT, MARGIN, SECOND, THIRD
 from .theme import LIMIT_COLOUR as LIMIT
 
 CURRENT = "Current design"
-THESIS = thesis_optimised_label()
+THESIS = thesis_optimized_label()
 SCENARIOS = {
     "steady": "Steady wind",
     "varying": "Varying wind (ramps)",
@@ -322,7 +322,7 @@ def collect(res, req: Mapping[str, Any], d=None) -> dict:
                                "min_height": lim.min_height}
     if req.get("modes") and res.system.is_hull is not None:
         try:
-            lin = linearise(res.system, wind=res.wind, state=res.y[0])
+            lin = linearize(res.system, wind=res.wind, state=res.y[0])
             out["modes"] = [{k: (float(v) if isinstance(v, float) else v) for k, v in r.items()}
                             for r in lin.rows()]
             out["stable"] = bool(lin.stable)

@@ -25,7 +25,7 @@ from aerostat_core.optimize import (
     SOLVERS,
     VARIABLE_INFO,
     VARIABLES,
-    OptimisationProblem,
+    OptimizationProblem,
     default_limits,
 )
 
@@ -134,7 +134,7 @@ def is_thesis_preset(req: Requirement, cfg: Configuration) -> bool:
     return inputs_to_dict(req, cfg) == inputs_to_dict(*thesis_baseline())
 
 
-def _load(inputs_json: str) -> tuple[Requirement, Configuration]:
+def inputs_from_json(inputs_json: str) -> tuple[Requirement, Configuration]:
     """(Requirement, Configuration) from canonical inputs JSON (raises ValueError)."""
     req, cfg = inputs_from_dict(json.loads(inputs_json))
     return req.resolved(), cfg  # the limits as applied (rule-set values filled in)
@@ -163,18 +163,18 @@ def build_request(
 
     Raises ``ValueError`` naming the field, value and valid range (the page shows it).
     """
-    req, cfg = _load(inputs_json)
+    req, cfg = inputs_from_json(inputs_json)
     try:
         req = replace(req, blow_by_limit=float(limit))
     except ValueError as exc:
         raise ValueError(f"Blow-by limit: {exc}") from None
-    problem = OptimisationProblem(req, cfg, bounds, objective)  # raises on bad bounds/objective
+    problem = OptimizationProblem(req, cfg, bounds, objective)  # raises on bad bounds/objective
     if not solvers:
         raise ValueError("Solvers: choose at least one solver")
     if level not in RUN_LEVELS.values():
         raise ValueError(f"Run level {level!r}: choose quick or normal")
     for solver in solvers:  # the compute budget, before anything runs (BudgetError says why)
-        budget.check_optimisation(problem, solver, SETTINGS[level][solver])
+        budget.check_optimization(problem, solver, SETTINGS[level][solver])
     limits: list[float] = []
     if pareto:
         if not 3 <= int(pareto_points) <= 40:

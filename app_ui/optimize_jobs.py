@@ -20,13 +20,14 @@ import streamlit as st
 
 from aerostat_core.optimize import (
     SOLVERS,
-    OptimisationProblem,
-    OptimisationResult,
+    OptimizationProblem,
+    OptimizationResult,
     ParetoFront,
-    baseline_vs_optimum,
+    curves_of,
+    design_change_rows,
+    optimum_configuration,
     pareto_front,
     performance_comparison_rows,
-    performance_curves,
     solve,
     thesis_comparison_rows,
 )
@@ -37,7 +38,8 @@ from aerostat_core.sensitivity import (
     two_variable_map,
 )
 
-from .optimize_form import _load
+from . import cache
+from .optimize_form import inputs_from_json
 
 #: Session keys of the optimisation job and the case-save feedback.
 JOB_KEY = "opt_job"
@@ -53,7 +55,7 @@ def cached_sensitivity(
     inputs_json: str, ranges_json: str, n_points: int, resize: bool
 ) -> SensitivityResult:
     """:func:`aerostat_core.sensitivity.one_at_a_time` of the inputs."""
-    return one_at_a_time(*_load(inputs_json), json.loads(ranges_json), n_points, resize)
+    return one_at_a_time(*inputs_from_json(inputs_json), json.loads(ranges_json), n_points, resize)
 
 
 @st.cache_data(max_entries=64, show_spinner=False)
@@ -61,15 +63,15 @@ def cached_map(
     inputs_json: str, x_var: str, y_var: str, ranges_json: str, n: int, resize: bool
 ) -> SensitivityMap:
     """:func:`aerostat_core.sensitivity.two_variable_map` of the inputs."""
-    return two_variable_map(*_load(inputs_json), x_var, y_var, json.loads(ranges_json), n, resize)
+    return two_variable_map(*inputs_from_json(inputs_json), x_var, y_var, json.loads(ranges_json), n, resize)
 
 
 @st.cache_data(max_entries=128, show_spinner=False)
 def cached_solve(
     inputs_json: str, bounds_json: str, objective: str, solver: str, level: str, seed: int
-) -> OptimisationResult:
+) -> OptimizationResult:
     """One seeded solver run (:func:`aerostat_core.optimize.solve`)."""
-    p = OptimisationProblem(*_load(inputs_json), json.loads(bounds_json), objective)
+    p = OptimizationProblem(*inputs_from_json(inputs_json), json.loads(bounds_json), objective)
     return solve(p, solver, level, seed)
 
 
@@ -94,7 +96,7 @@ def solve_shared(
     level: str,
     seed: int,
     progress: Any = None,
-) -> OptimisationResult:
+) -> OptimizationResult:
     """:func:`cached_solve` that reports ``progress(fraction, text)`` after every batch (the
     solver's own callback, which names the solver) when it has to compute; a request any
     session has run before returns at once."""
@@ -104,7 +106,7 @@ def solve_shared(
         if key in cache:
             cache.move_to_end(key)
             return cache[key]
-    p = OptimisationProblem(*_load(inputs_json), json.loads(bounds_json), objective)
+    p = OptimizationProblem(*inputs_from_json(inputs_json), json.loads(bounds_json), objective)
     result = solve(p, solver, level, seed, progress=progress)
     with _shared_lock:
         cache[key] = result
@@ -118,7 +120,7 @@ def cached_pareto(
     inputs_json: str, bounds_json: str, objective: str, limits: tuple, starts_json: str
 ) -> ParetoFront:
     """Epsilon-constraint front (:func:`aerostat_core.optimize.pareto_front`)."""
-    req, cfg = _load(inputs_json)
+    req, cfg = inputs_from_json(inputs_json)
     return pareto_front(
         req,
         cfg,
@@ -133,12 +135,14 @@ def cached_pareto(
 def cached_comparison(inputs_json: str, baseline_json: str, x_json: str) -> dict[str, Any]:
     """Baseline (the design inputs as given) versus optimum (sized): change rows, thesis rows
     and performance curves of both."""
-    req, _ = _load(inputs_json)
-    _, cfg_base = _load(baseline_json)
+    req, _ = inputs_from_json(inputs_json)
+    _, cfg_base = inputs_from_json(baseline_json)
     x = json.loads(x_json)
-    rows = baseline_vs_optimum(req, cfg_base, x)
-    base = performance_curves(req, cfg_base)
-    opt = performance_curves(req, cfg_base.with_design_variables(volume=None, **x))
+    # each design once, from the shared cache, for both the change rows and the curves
+    d_base = cache.design_of(req, cfg_base)
+    d_opt = cache.design_of(req, optimum_configuration(cfg_base, x))
+    rows = design_change_rows(d_base, d_opt)
+    base, opt = curves_of(d_base), curves_of(d_opt)
     return {
         "changes": rows,
         "thesis": thesis_comparison_rows(rows),
@@ -181,12 +185,12 @@ def current_job() -> dict[str, Any] | None:
     return st.session_state.get(JOB_KEY)
 
 
-def solver_results(job: Mapping[str, Any]) -> list[OptimisationResult]:
+def solver_results(job: Mapping[str, Any]) -> list[OptimizationResult]:
     """Finished solver results of a job, in solver order."""
     return [job["done"][s] for s in job["request"]["solvers"] if s in job["done"]]
 
 
-def best_result(results: Sequence[OptimisationResult]) -> OptimisationResult | None:
+def best_result(results: Sequence[OptimizationResult]) -> OptimizationResult | None:
     """The feasible result with the least objective (None when none is feasible)."""
     feas = [r for r in results if r.feasible]
     return min(feas, key=lambda r: r.objective) if feas else None

@@ -11,7 +11,7 @@ import pandas as pd
 import streamlit as st
 from pandas.io.formats.style import Styler
 
-from aerostat_core.optimize import OptimisationResult, ParetoFront, comparison_rows
+from aerostat_core.optimize import OptimizationResult, ParetoFront, comparison_rows
 from aerostat_core.sensitivity import SensitivityResult
 
 from . import formats
@@ -20,7 +20,7 @@ from .optimize_form import DISPLAY, shown, unit, var_label
 from .tables import WRAP
 
 
-def comparison_frame(results: Sequence[OptimisationResult]) -> pd.DataFrame:
+def comparison_frame(results: Sequence[OptimizationResult]) -> pd.DataFrame:
     """Table 4.12-like comparison: variables, mass, volume, blow-by, evaluations, time."""
     rows = comparison_rows(results)
     return pd.DataFrame(

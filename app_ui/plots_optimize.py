@@ -17,7 +17,7 @@ from aerostat_core.optimize import (
     PERFORMANCE_CURVES,
     VARIABLE_INFO,
     VARIABLES,
-    OptimisationResult,
+    OptimizationResult,
     ParetoFront,
 )
 from aerostat_core.sensitivity import OUTPUTS, SensitivityMap, SensitivityResult
@@ -195,7 +195,7 @@ def map_figure(m: SensitivityMap) -> go.Figure:
     )
 
 
-def convergence_figure(results: Sequence[OptimisationResult]) -> go.Figure:
+def convergence_figure(results: Sequence[OptimizationResult]) -> go.Figure:
     """Best feasible objective versus evaluations, one line per solver."""
     fig = go.Figure()
     name = label = None
@@ -223,7 +223,7 @@ def convergence_figure(results: Sequence[OptimisationResult]) -> go.Figure:
 
 def pareto_figure(
     front: ParetoFront,
-    results: Sequence[OptimisationResult],
+    results: Sequence[OptimizationResult],
     limit: float,
     baseline: Mapping[str, float] | None = None,
 ) -> go.Figure:

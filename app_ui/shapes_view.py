@@ -29,10 +29,10 @@ from aerostat_core.shape_comparison import (
     thesis_reference_rows,
     thesis_shape_comparison,
 )
-from aerostat_core.shape_optimize import fineness_sweeps, optimise_shapes
+from aerostat_core.shape_optimize import fineness_sweeps, optimize_shapes
 from aerostat_core.shapes import SHAPE_INFO, profile_radius_ratio
 
-from . import entry, formats
+from . import cache, entry, formats
 from .theme import PALETTE, base_layout
 from .widgets import plain
 
@@ -74,10 +74,10 @@ def cached_library(volume: float = 100.0) -> list[dict]:
 
 @st.cache_data(max_entries=32, show_spinner=False)
 def cached_shape_study(inputs_json: str, objective: str) -> list[dict]:
-    """Rows of :func:`aerostat_core.shape_optimize.optimise_shapes` (SLSQP, quick) for the
+    """Rows of :func:`aerostat_core.shape_optimize.optimize_shapes` (SLSQP, quick) for the
     inputs."""
     req, cfg = _inputs(inputs_json)
-    return optimise_shapes(req, cfg, objective=objective).rows()
+    return optimize_shapes(req, cfg, objective=objective).rows()
 
 
 @st.cache_data(max_entries=32, show_spinner=False)
@@ -98,9 +98,7 @@ def cached_sweeps(inputs_json: str, n_points: int = 15) -> dict[str, dict[str, l
 @st.cache_data(max_entries=16, show_spinner=False)
 def cached_exports(inputs_json: str, n_gores: int, seam_mm: float) -> dict[str, bytes]:
     """STL, DXF, SVG and CSV bytes of the design of the inputs."""
-    from aerostat_core import design
-
-    d = design(*_inputs(inputs_json))
+    d = cache.cached_design(inputs_json)  # the design the page already made
     p = gore_pattern(d, int(n_gores), float(seam_mm) / 1000.0)
     return {
         "stl": design_stl(d),

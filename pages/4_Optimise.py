@@ -9,7 +9,7 @@ import streamlit as st
 from aerostat_core.optimize import OBJECTIVES, SOLVERS
 from aerostat_core.validation import short
 from app_ui import entry, widgets
-from app_ui import optimise_view as view
+from app_ui import optimize_view as view
 
 st.title("Optimise")
 st.caption(

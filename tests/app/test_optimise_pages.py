@@ -60,7 +60,7 @@ def test_sensitivity_sweeps_plot_the_engine_values(sens):
     assert sens.title[0].value == "Sensitivity"
     assert chart_keys(sens) == ["sens_ofat", "sens_map"]
     fig = chart(sens, "sens_ofat")
-    from app_ui.optimise_view import shown
+    from app_ui.optimize_view import shown
 
     res = one_at_a_time(req, cfg, n_points=7, resize=True)
     for name in VARIABLES:
@@ -76,7 +76,7 @@ def test_sensitivity_sweeps_plot_the_engine_values(sens):
         assert on.sum() >= 4 and np.allclose(y[on], req.blow_by_limit, rtol=1e-6)
     # the range summary, transposed (one column per variable, so it fits at 1024 px)
     df = table(sens, "Over each range").set_index("Over each range")
-    from app_ui.optimise_view import var_label
+    from app_ui.optimize_view import var_label
 
     assert list(df.columns) == [var_label(k) for k in VARIABLES]
     assert df.columns[2] == "Fin position Δl_f (root LE) [% of hull length]"
@@ -258,7 +258,7 @@ def test_optimise_infeasible_limit_says_which_constraint_binds(opt):
 
 
 def test_cancelled_run_keeps_finished_tasks(opt):
-    from app_ui import optimise_view as view
+    from app_ui import optimize_view as view
 
     inputs = json.dumps(inputs_to_dict(*thesis_baseline()), sort_keys=True, separators=(",", ":"))
     request = view.build_request(
@@ -292,7 +292,7 @@ def test_cancelled_run_keeps_finished_tasks(opt):
 
 
 def _quick_request(solvers=("pso",)):
-    from app_ui import optimise_view as view
+    from app_ui import optimize_view as view
 
     inputs = json.dumps(inputs_to_dict(*thesis_baseline()), sort_keys=True, separators=(",", ":"))
     return view.build_request(
@@ -311,7 +311,7 @@ def _quick_request(solvers=("pso",)):
 
 
 def test_progress_is_reported_per_batch_naming_the_solver_and_shared_runs_skip_it():
-    from app_ui import optimise_view as view
+    from app_ui import optimize_view as view
 
     r = _quick_request()
     calls: list[tuple[float, str]] = []
@@ -328,7 +328,7 @@ def test_progress_is_reported_per_batch_naming_the_solver_and_shared_runs_skip_i
 
 
 def test_cancelling_a_new_run_keeps_the_previous_results(opt):
-    from app_ui import optimise_view as view
+    from app_ui import optimize_view as view
 
     old = _quick_request(["slsqp"])
     view.start_job(old, opt.session_state)
@@ -350,7 +350,7 @@ def test_an_optimisation_over_the_compute_budget_is_refused_before_it_runs():
     from dataclasses import replace
 
     from aerostat_core.budget import BudgetError
-    from app_ui import optimise_view as view
+    from app_ui import optimize_view as view
 
     req, cfg = thesis_baseline()
     heavy = json.dumps(

@@ -186,13 +186,13 @@ def test_every_form_label_unit_scale_and_help_comes_from_the_registry():
 
 def test_no_label_string_of_the_registry_is_typed_again_in_the_ui():
     """The facts live in aerostat_core; app_ui has no copy of a registry label. Not checked:
-    optimise_view (its variable table moves to fields.variable_info when the optimiser package
+    optimize_view (its variable table moves to fields.variable_info when the optimiser package
     lands) and dynamics_view (its labels name the dynamics model's own inputs)."""
     from pathlib import Path
 
     from aerostat_core.fields import all_specs
 
-    skip = {"optimise_view.py", "dynamics_view.py"}
+    skip = {"optimize_view.py", "dynamics_view.py"}
     ui = {p.name: p.read_text() for p in Path("app_ui").glob("*.py") if p.name not in skip}
     labels = {e.label for e in all_specs() if len(e.label) > 12}
     copies = [(lab, n) for lab in labels for n, src in ui.items() if f'"{lab}' in src]

@@ -1,6 +1,6 @@
 """Real-browser fixtures: a live ``streamlit run app.py`` server and Debian chromium via Playwright.
 
-Recipe: shared/design/engineering.md §5. pytest-playwright (0.10) provides ``page``, ``context``
+Recipe: docs/architecture.md §6. pytest-playwright (0.10) provides ``page``, ``context``
 and ``browser``; this file overrides its ``browser_type_launch_args``, ``browser_context_args``
 and ``base_url`` fixtures, so a test only needs::
 

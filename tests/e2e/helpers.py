@@ -1,7 +1,7 @@
 """Helpers for the real-browser tests (Playwright driving Debian chromium).
 
 Import them by full name: ``from tests.e2e.helpers import goto_page, screenshot, wait_for_rerun``.
-Rules of thumb (engineering.md §5): wait for the rerun, then use auto-retrying ``expect(...)``;
+Rules of thumb (docs/architecture.md §6): wait for the rerun, then use auto-retrying ``expect(...)``;
 never sleep; switch pages by clicking the sidebar (``page.goto`` starts a new session).
 """
 

@@ -21,7 +21,7 @@ from aerostat_core.optimize import (
     CONSTRAINT_TEXT,
     DEFAULT_BOUNDS,
     OBJECTIVES,
-    OptimisationProblem,
+    OptimizationProblem,
     ParetoFront,
     agreement,
     comparison_rows,
@@ -34,9 +34,9 @@ from .optimize_form import (
     DISPLAY,
     RUN_LEVELS,
     SENS_RESOLUTION,
-    _load,
     bounds_key,
     build_request,
+    inputs_from_json,
     is_thesis_preset,
     load_inputs,
     parse_ranges,
@@ -101,7 +101,7 @@ def _save_case_cb(inputs_json: str, x: dict) -> None:
     """Save-button callback: the optimum's inputs (volume left to the sizing) as a case."""
     name = st.session_state.get("opt_case_name", "")
     try:
-        req, cfg = _load(inputs_json)
+        req, cfg = inputs_from_json(inputs_json)
         used = save_case(name, req, cfg.with_design_variables(volume=None, **x))
     except ValueError as exc:
         st.session_state[SAVE_MSG_KEY] = ("error", str(exc))
@@ -117,7 +117,7 @@ def render_results(job: Mapping[str, Any], baseline_inputs_json: str) -> None:
     """Everything a finished (or cancelled) run shows: comparison, convergence, baseline vs
     optimum, performance curves, Pareto front, save as case, CSV downloads."""
     req_d = job["request"]
-    req, cfg = _load(req_d["inputs"])
+    req, cfg = inputs_from_json(req_d["inputs"])
     results = solver_results(job)
     n_done, n_all = len(job["done"]), len(job["tasks"])
     previous = st.session_state.get(PREVIOUS_JOB_KEY)
@@ -189,7 +189,7 @@ def render_results(job: Mapping[str, Any], baseline_inputs_json: str) -> None:
         "Baseline: the design inputs as given (their volume if set, else sized). "
         "Optimum: the best solver's variables with the hull sized to the requirement."
     )
-    if is_thesis_preset(*_load(baseline_inputs_json)):
+    if is_thesis_preset(*inputs_from_json(baseline_inputs_json)):
         st.markdown(
             "**Against the thesis** (abstract and Appendix H: 170 → 120 m³, "
             "90.65 → 71.6 kg, USD 1925 of helium saved)"
@@ -264,7 +264,7 @@ def render_results(job: Mapping[str, Any], baseline_inputs_json: str) -> None:
 def problem_rows(req: Requirement, cfg: Configuration) -> list[dict[str, str]]:
     """The problem definition with default bounds (for the page's explanation); the design
     variables in their display units (the fin position in % of the hull length)."""
-    rows = OptimisationProblem(req, cfg).describe()
+    rows = OptimizationProblem(req, cfg).describe()
     for r in rows:
         name = r["item"].removeprefix("variable ")
         if name in DEFAULT_BOUNDS and r["item"] != name:
