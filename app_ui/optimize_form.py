@@ -17,7 +17,7 @@ from typing import Any
 import numpy as np
 import streamlit as st
 
-from aerostat_core import Configuration, Requirement, budget, thesis_baseline
+from aerostat_core import Configuration, Requirement, budget, fields, thesis_baseline
 from aerostat_core.io import inputs_from_dict, inputs_to_dict
 from aerostat_core.optimize import (
     DEFAULT_BOUNDS,
@@ -41,7 +41,10 @@ SENS_RESOLUTION = {"Quick": (7, 10), "Normal": (15, 20)}
 #: Design variables shown in other units than the engine's: the fin position is a percentage of
 #: the hull length on every page (the Design form's unit), the engine keeps the fraction.
 DISPLAY: dict[str, tuple[float, str, str]] = {
-    "position": (100.0, "Fin position Δl_f (root LE)", "% of hull length"),
+    name: (scale, label, u)
+    for name in VARIABLES
+    for label, u, scale in [fields.variable_info(name)]
+    if scale != 1.0
 }
 
 
@@ -54,7 +57,7 @@ def shown(name: str, value: Any) -> Any:
 
 
 def var_label(name: str) -> str:
-    """'Fineness ratio f [-]' style label of a design variable, in its display unit."""
+    """'Fineness ratio l/d [-]' style label of a design variable, in its display unit."""
     if name in DISPLAY:
         _, label, u = DISPLAY[name]
         return f"{label} [{u}]"

@@ -44,7 +44,7 @@ PERF_HELP: dict[str, str] = {
     "C_mα [1/rad]": "Pitching-moment slope about the confluence point (negative: stable).",
     "C_mα,CV [1/rad]": "Weathervane stability: pitching-moment slope of hull + fins about the "
     "centre of volume (negative: stable).",
-    "Altitude loss [m]": "Operating altitude minus flying height (negative: flies higher).",
+    "Altitude loss [m]": "The altitude asked for minus the flying height (negative: flies higher).",
 }
 #: Quantity of each performance column (its decimals and unit, :mod:`app_ui.formats`).
 PERF_KINDS: dict[str, str] = {

@@ -79,7 +79,7 @@ def test_sensitivity_sweeps_plot_the_engine_values(sens):
     from app_ui.optimize_view import var_label
 
     assert list(df.columns) == [var_label(k) for k in VARIABLES]
-    assert df.columns[2] == "Fin position Δl_f (root LE) [% of hull length]"
+    assert df.columns[2] == "Fin position Δl_f [% of hull length]"
     low = df.loc["Low end of the range"]
     assert list(low) == pytest.approx([shown(k, DEFAULT_BOUNDS[k][0]) for k in VARIABLES])
     assert low.iloc[2] == pytest.approx(60.0)
@@ -122,15 +122,15 @@ def test_sensitivity_held_sweep_and_other_map(sens):
     [
         (
             {"sens_lo_fineness_ratio": 4.0, "sens_hi_fineness_ratio": 3.0},
-            ["lower bound 4 > upper bound 3", "Fineness ratio f"],
+            ["lower bound 4 > upper bound 3", "Fineness ratio l/d"],
         ),
         # in the unit of the boxes: the fin position in % of the hull length, never a fraction
         (
             {"sens_hi_position": 99.0},
             ["Fin position", "bounds (60, 99)", "valid range [40, 95]"],
         ),
-        ({"sens_lo_area_change": "-10,5.0"}, ["Fin-area change", "ambiguous"]),
-        ({"sens_lo_area_change": ""}, ["Fin-area change", "required"]),
+        ({"sens_lo_area_change": "-10,5.0"}, ["Fin area change", "ambiguous"]),
+        ({"sens_lo_area_change": ""}, ["Fin area change", "required"]),
     ],
 )
 def test_sensitivity_bad_range_names_the_field(sens, changes, words):
@@ -225,9 +225,9 @@ def test_save_optimum_as_case(ran):
     [
         (
             {"opt_lo_fineness_ratio": 4.5, "opt_hi_fineness_ratio": 2.5},
-            ["lower bound 4.5", "upper bound 2.5", "Fineness ratio f"],
+            ["lower bound 4.5", "upper bound 2.5", "Fineness ratio l/d"],
         ),
-        ({"opt_lo_area_change": 20.0, "opt_hi_area_change": 20.0}, ["empty", "Fin-area change"]),
+        ({"opt_lo_area_change": 20.0, "opt_hi_area_change": 20.0}, ["empty", "Fin area change"]),
         ({"opt_hi_position": "96"}, ["Fin position", "% of hull length", "[40, 95]"]),
         ({"opt_pareto_n": "11,5"}, ["Points", "not a whole number"]),
         ({"opt_seed": "abc"}, ["Random seed", "not a number"]),

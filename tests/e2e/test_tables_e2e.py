@@ -88,8 +88,8 @@ def _box(page: Page, label: str):
 def test_sensitivity_and_optimise_bounds_read_a_decimal_comma(app_page: Page):
     page = app_page
     goto_page(page, "Sensitivity", timeout=RUN_TIMEOUT_MS)
-    _box(page, "Fineness ratio f [-] – from").fill("2,5")
-    _box(page, "Fin position Δl_f (root LE) [% of hull length] – to").fill("72,5")
+    _box(page, "Fineness ratio l/d [-] – from").fill("2,5")
+    _box(page, "Fin position Δl_f [% of hull length] – to").fill("72,5")
     page.get_by_role("button", name="Update").click()
     wait_for_rerun(page, timeout=RUN_TIMEOUT_MS)
     assert_no_exception(page, "Sensitivity page")
@@ -104,8 +104,8 @@ def test_sensitivity_and_optimise_bounds_read_a_decimal_comma(app_page: Page):
 
     goto_page(page, "Optimise", timeout=RUN_TIMEOUT_MS)
     page.get_by_text("Quick", exact=True).click()
-    _box(page, "Fin position Δl_f (root LE) [% of hull length] – upper").fill("72,5")
-    _box(page, "Fin-area change ΔS_f [%] – lower").fill("-12,5")
+    _box(page, "Fin position Δl_f [% of hull length] – upper").fill("72,5")
+    _box(page, "Fin area change ΔS_f [%] – lower").fill("-12,5")
     page.get_by_role("button", name="Run optimisation").click()
     wait_for_rerun(page, timeout=RUN_TIMEOUT_MS)
     assert_no_exception(page, "Optimise page")
@@ -113,14 +113,14 @@ def test_sensitivity_and_optimise_bounds_read_a_decimal_comma(app_page: Page):
         page.get_by_role("heading", name="Solver comparison (thesis Table 4.12)")
     ).to_be_visible()
     # a comma and a point together is refused, naming the box, in the unit of the box
-    _box(page, "Fin-area change ΔS_f [%] – lower").fill("-1.2,5")
+    _box(page, "Fin area change ΔS_f [%] – lower").fill("-1.2,5")
     page.get_by_role("button", name="Run optimisation").click()
     wait_for_rerun(page, timeout=RUN_TIMEOUT_MS)
     expect(page.get_by_test_id("stAlertContentError").first).to_contain_text(
-        "Fin-area change ΔS_f [%] – lower"
+        "Fin area change ΔS_f [%] – lower"
     )
-    _box(page, "Fin-area change ΔS_f [%] – lower").fill("-10")
-    _box(page, "Fin position Δl_f (root LE) [% of hull length] – upper").fill("99")
+    _box(page, "Fin area change ΔS_f [%] – lower").fill("-10")
+    _box(page, "Fin position Δl_f [% of hull length] – upper").fill("99")
     page.get_by_role("button", name="Run optimisation").click()
     wait_for_rerun(page, timeout=RUN_TIMEOUT_MS)
     expect(page.get_by_test_id("stAlertContentError").first).to_contain_text("valid range [40, 95]")
