@@ -330,6 +330,18 @@ def styled(df: pd.DataFrame, columns: Sequence[str] | None = None) -> Styler:
     return shown_df.style.format(fmt, na_rep="–").set_table_styles(WRAP).hide(axis="index")
 
 
+def sweep_tables(df: pd.DataFrame) -> list[Styler]:
+    """:func:`sweep_frame` as one static table per swept variable (its values as the first
+    column, at the variable's decimals): cells wrap, so every column is in sight at 1024 px."""
+    out = []
+    for label, name in {var_label(n): n for n in _VAR_KIND}.items():
+        part = df[df["Variable"] == label].drop(columns="Variable").reset_index(drop=True)
+        if len(part):
+            part = part.rename(columns={"Value": label})
+            out.append(styled(part).format(formats.formatter(_VAR_KIND[name]), subset=[label]))
+    return out
+
+
 def sweep_styler(df: pd.DataFrame) -> Styler:
     """:func:`sweep_frame` as a static table: each variable's values at its own decimals,
     text cells wrapped narrow (9 columns in the 530 px of a page at 1024 px)."""

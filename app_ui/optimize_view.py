@@ -80,6 +80,7 @@ from .optimize_tables import (
     summary_table,
     sweep_frame,
     sweep_styler,
+    sweep_tables,
     thesis_frame,
 )
 from .plots_optimize import (
@@ -321,6 +322,7 @@ __all__ = [
     "summary_frame",
     "summary_table",
     "sweep_styler",
+    "sweep_tables",
     "sweep_frame",
     "thesis_frame",
     "unit",

@@ -146,6 +146,16 @@ def library_frame(rows: list[dict]) -> pd.DataFrame:
     return pd.DataFrame(rows)[list(names)].rename(columns=names)
 
 
+def static_frame(df: pd.DataFrame, transpose: bool = False) -> pd.DataFrame:
+    """``df`` as text for a static table whose cells wrap (numbers at 4 significant digits,
+    as the other comparison tables), optionally with rows and columns swapped so that a table
+    of many quantities for a few shapes fits a 1024 px window."""
+    from .tables import format_value
+
+    out = df.T if transpose else df
+    return out.map(lambda v: v if isinstance(v, str) else format_value(v))
+
+
 def study_frame(rows: list[dict], objective: str) -> pd.DataFrame:
     """Per-shape optima table."""
     names = {

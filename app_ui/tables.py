@@ -17,6 +17,8 @@ import numpy as np
 import pandas as pd
 from pandas.io.formats.style import Styler
 
+from aerostat_core.report import SUMMARY_FIELDS
+
 from . import formats
 
 #: Performance-row keys -> display column names (units in brackets).
@@ -201,6 +203,29 @@ def format_value(v: Any) -> str:
     return str(v)
 
 
+#: Design-summary key -> its quantity kind in :mod:`app_ui.formats`.
+_SUMMARY_KINDS = {
+    "volume_m3": "volume",
+    "length_m": "length",
+    "diameter_m": "diameter",
+    "total_mass_kg": "total_mass",
+    "gross_buoyancy_N": "force",
+    "free_lift_kg": "free_lift",
+    "percent_static_lift": "percent",
+    "blow_by_at_design_wind_m": "blow_by",
+    "alpha_at_design_wind_deg": "alpha_eq",
+    "tension_top_at_design_wind_N": "tension",
+    "safety_factor_at_design_wind": "safety_factor",
+    "gas_cost_USD": "gas_cost",
+}
+#: The comparison's result rows (their labels, from report.SUMMARY_FIELDS) -> quantity kind.
+_RESULT_KINDS = {
+    f"{label} [{u}]" if u else label: _SUMMARY_KINDS[key]
+    for key, label, u in SUMMARY_FIELDS
+    if key in _SUMMARY_KINDS
+}
+
+
 def comparison_frame(
     rows: Sequence[Mapping[str, Any]], names: Sequence[str], only_differences: bool = False
 ) -> pd.DataFrame:
@@ -211,8 +236,17 @@ def comparison_frame(
         "Section": [r["section"] for r in keep],
         "Quantity": [r["quantity"] for r in keep],
     }
+
+    def cell(r: Mapping[str, Any], n: str) -> str:
+        # results at the formatting table's decimals (as on the Design page); inputs as typed
+        kind = _RESULT_KINDS.get(r["quantity"]) if r["section"] == "result" else None
+        v = r.get(n)
+        if kind and isinstance(v, (int, float, np.floating)) and not isinstance(v, bool):
+            return formats.text(v, kind)
+        return format_value(v)
+
     for n in names:
-        data[n] = [format_value(r.get(n)) for r in keep]
+        data[n] = [cell(r, n) for r in keep]
     data["Differs"] = [bool(r["differs"]) for r in keep]
     return pd.DataFrame(data)
 

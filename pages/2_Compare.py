@@ -228,14 +228,9 @@ with tab_table:
             df = plots.comparison_frame(rows, ok, only_differences=only_diff)
             n_diff = int(sum(r["differs"] for r in rows))
             st.caption(f"{n_diff} of {len(rows)} rows differ between the cases (highlighted).")
-            st.dataframe(
-                plots.comparison_styler(df),
-                hide_index=True,
-                width="stretch",
-                height=560,
-                key="comparison_table",
-                column_config={"Differs": st.column_config.CheckboxColumn("Differs")},
-            )
+            # a static table whose cells wrap: every row and column in sight at 1024 px (the
+            # data grid scrolled sideways and hid rows below its fixed height)
+            st.table(plots.comparison_styler(df), hide_index=True)
             st.download_button(
                 "Comparison table (CSV)",
                 data=cache.csv_bytes(rows),

@@ -113,12 +113,8 @@ else:
     st.markdown("**Mass and volume change over each range** (relative to the baseline)")
     st.table(view.summary_table(res))  # transposed: 4 columns fit at 1024 px, 10 did not
     with st.expander("All sweep points"):
-        st.dataframe(
-            view.sweep_frame(res),
-            hide_index=True,
-            key="sens_points",
-            column_config=view.SWEEP_FORMAT,
-        )
+        for table in view.sweep_tables(view.sweep_frame(res)):  # static, one per variable
+            st.table(table)
     c1, c2 = st.columns(2)
     c1.download_button(
         "Sweeps (CSV)",

@@ -20,9 +20,15 @@ st.caption(
 st.subheader("Shape library", anchor=False)
 st.plotly_chart(view.profiles_figure(), key="shape_profiles")
 st.markdown("**Every shape at 100 m³ and its standard l/d**")
-st.dataframe(view.library_frame(view.cached_library(100.0)), hide_index=True, key="shape_library")
+# one column per shape, one row per property, streamlined and bluff hulls in two static tables,
+# so every cell is in sight at 1024 px
+_lib = view.static_frame(view.library_frame(view.cached_library(100.0)).set_index("Shape"), True)
+_props = _lib.drop(index="Source")  # the sources, long, are listed below the tables
+st.table(_props.iloc[:, :5])
+st.table(_props.iloc[:, 5:])
+st.caption("Sources. " + " ".join(f"{shape}: {src}." for shape, src in _lib.loc["Source"].items()))
 st.caption(
-    "Gertler profiles from the parameters tabulated by Alam & Pant (2017); k1, k2, k' are "
+    "Gertler profiles from a published parameter table (attributed to Alam & Pant 2017; see docs/methods.md §1.13 for what was checked); k1, k2, k' are "
     "Lamb's closed forms for the spheroids and the equivalent spheroid for NPL, and a "
     "potential-flow computation (line singularities, checked against Lamb) for the Gertler "
     "shapes. Bluff hulls (sphere, oblate, Helikite) carry no fins; their drag is the sphere's "
@@ -40,34 +46,25 @@ st.markdown(
     f"{p.tether_linear_density * 1000:g} g/m; kite {p.kite_mass:g} kg with "
     f"{p.kite_lift_kg:g} kg of lift at {p.kite_lift_wind:g} m/s (scaled with U²)."
 )
-c1, c2 = st.columns([1.1, 1])
-with c1:
-    st.dataframe(
-        view.versus_frame(data["thesis"]["rows"], data["reference"]),
-        key="shape_table_thesis",
-        column_config=None,
-    )
-    st.caption(
-        "The thesis' streamlined total (50.92 kg) and free lift (47 kg) do not add up "
-        "(16.9 + 15.57 + 7.8 + 4.7 + 6 = 50.97; 100 - 50.97 = 49.03); this model adds them up. "
-        "Its Helikite is a spheroid of Table 2.2's l/d (6.2/5) scaled to 100 m³."
-    )
-with c2:
-    st.plotly_chart(
-        view.blow_by_figure(data["thesis"], "Figure 2.5: blow-by, thesis assumptions"),
-        key="shape_fig_thesis",
-    )
+# full width and static: the thesis' and this model's columns side by side in sight at 1024 px
+st.table(view.static_frame(view.versus_frame(data["thesis"]["rows"], data["reference"])))
+st.caption(
+    "The thesis' streamlined total (50.92 kg) and free lift (47 kg) do not add up "
+    "(16.9 + 15.57 + 7.8 + 4.7 + 6 = 50.97; 100 - 50.97 = 49.03); this model adds them up. "
+    "Its Helikite is a spheroid of Table 2.2's l/d (6.2/5) scaled to 100 m³."
+)
+st.plotly_chart(
+    view.blow_by_figure(data["thesis"], "Figure 2.5: blow-by, thesis assumptions"),
+    key="shape_fig_thesis",
+)
 
 st.subheader("The same comparison with the full model", anchor=False)
 st.markdown(
     "ISA buoyancy, drag correlations, trim with hull and fin lift, tether sag and weight "
     "(Design-page engine with the thesis constants)."
 )
-c1, c2 = st.columns([1.1, 1])
-with c1:
-    st.dataframe(view.table_frame(data["full"]["rows"]), key="shape_table_full")
-with c2:
-    st.plotly_chart(view.blow_by_figure(data["full"], "Blow-by, full model"), key="shape_fig_full")
+st.table(view.static_frame(view.table_frame(data["full"]["rows"])))
+st.plotly_chart(view.blow_by_figure(data["full"], "Blow-by, full model"), key="shape_fig_full")
 st.markdown("**Why the numbers differ**")
 for note in data["notes"]:
     st.markdown(f"- {note}")

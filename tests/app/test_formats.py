@@ -98,3 +98,22 @@ def test_same_quantity_same_decimals_on_design_optimise_and_in_the_tables(thesis
 @pytest.mark.parametrize("q", sorted(formats.QUANTITIES))
 def test_every_quantity_has_a_kind(q):
     assert formats.kind_of(q) in formats.KINDS
+
+
+def test_compare_results_use_the_formatting_tables_decimals():
+    """The same quantity shows the same decimals on Compare as on the Design page."""
+    from aerostat_core import Requirement, design
+    from aerostat_core.presets import practice_configuration
+    from aerostat_core.report import comparison_rows
+    from app_ui import formats
+    from app_ui.tables import comparison_frame
+
+    d = design(Requirement(), practice_configuration())
+    df = comparison_frame(comparison_rows({"a": d, "b": d}), ["a", "b"])
+    row = dict(zip(df["Quantity"], df["a"]))
+    s = d.summary()
+    assert row["Total mass [kg]"] == formats.text(s["total_mass_kg"], "total_mass")
+    assert row["Blow-by at the design wind [m]"] == formats.text(
+        s["blow_by_at_design_wind_m"], "blow_by"
+    )
+    assert row["Hull volume [m³]"] == formats.text(s["volume_m3"], "volume")

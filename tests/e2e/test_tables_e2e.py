@@ -1,5 +1,5 @@
 """Tables show all their columns (issue 9, layout): at 1024 x 768 and 1400 x 900 no table of the
-Design, Sensitivity or Optimise page scrolls sideways (scrollWidth of the grid's scroller equals
+Design, Sensitivity, Optimise, Compare or Shapes page scrolls sideways (scrollWidth of the grid's scroller equals
 its clientWidth); and the number boxes of the Sensitivity and Optimise pages read a decimal
 comma as a decimal point, as the Design form does ("12,5" was 125 in the browser's number box).
 """
@@ -22,7 +22,7 @@ _WIDE = """
 () => {
   const shown = e => e.offsetParent !== null;
   const wide = s => s.clientWidth > 0 && s.scrollWidth > s.clientWidth + 1;
-  const say = (kind, s) => `${kind}: ${s.scrollWidth} > ${s.clientWidth}`;
+  const say = (kind, s) => `${kind}: ${s.scrollWidth} > ${s.clientWidth} ${(s.innerText || '').slice(0, 60)}`;
   const grids = [...document.querySelectorAll('[data-testid="stDataFrame"]')].filter(shown)
     .flatMap(d => [...d.querySelectorAll('.dvn-scroller')].filter(wide).map(s => say('grid', s)));
   const statics = [...document.querySelectorAll('[data-testid="stTable"]')].filter(shown)
@@ -70,6 +70,9 @@ def test_sensitivity_and_optimise_tables_show_every_column(
         assert_no_exception(page, "Sensitivity page")
         page.wait_for_function(f"() => ({_COUNT})() >= 1", timeout=RUN_TIMEOUT_MS)
         assert page.evaluate(_WIDE) == []
+        page.get_by_text("All sweep points", exact=True).click()  # one static table per variable
+        page.wait_for_function(f"() => ({_COUNT})() >= 4", timeout=RUN_TIMEOUT_MS)
+        assert page.evaluate(_WIDE) == [], "All sweep points"
         goto_page(page, "Optimise", timeout=RUN_TIMEOUT_MS)
         page.get_by_text("Quick", exact=True).click()
         page.get_by_role("button", name="Run optimisation").click()
@@ -124,3 +127,26 @@ def test_sensitivity_and_optimise_bounds_read_a_decimal_comma(app_page: Page):
     page.get_by_role("button", name="Run optimisation").click()
     wait_for_rerun(page, timeout=RUN_TIMEOUT_MS)
     expect(page.get_by_test_id("stAlertContentError").first).to_contain_text("valid range [40, 95]")
+
+
+def test_compare_and_shapes_tables_show_every_column_at_1024(browser: Browser, base_url: str):
+    """Compare's side-by-side table (three long-named cases) and the Shapes page's library and
+    Table 2.2 tables fit a 1024 px window: static tables whose cells wrap."""
+    ctx, page = _open(browser, base_url, 1024, 768)
+    try:
+        for name in ("Baseline at the coast, 10 kg", "Mountain site, heavier", "Third case"):
+            page.get_by_role("textbox", name="Save the current design as a case").fill(name)
+            page.get_by_role("button", name="Save case").click()
+            wait_for_rerun(page)
+            expect(page.get_by_text(f"Saved case “{name}”")).to_be_visible()
+        goto_page(page, "Compare", timeout=RUN_TIMEOUT_MS)
+        assert_no_exception(page, "Compare page")
+        expect(page.get_by_text("rows differ between the cases")).to_be_visible()
+        page.wait_for_function(f"() => ({_COUNT})() >= 1", timeout=RUN_TIMEOUT_MS)
+        assert page.evaluate(_WIDE) == [], "Compare"
+        goto_page(page, "Shapes", timeout=RUN_TIMEOUT_MS)
+        assert_no_exception(page, "Shapes page")
+        page.wait_for_function(f"() => ({_COUNT})() >= 3", timeout=RUN_TIMEOUT_MS)
+        assert page.evaluate(_WIDE) == [], "Shapes"
+    finally:
+        ctx.close()
