@@ -191,14 +191,8 @@ def render(d) -> None:
             "Unit": [r["unit"] for r in rows],
         }
     )
-    st.dataframe(
-        frame,
-        hide_index=True,
-        width="stretch",
-        height=560,
-        column_config={"Value": st.column_config.NumberColumn(format="%.4g")},
-        key="mission_table",
-    )
+    # static, cells that wrap: every row and column in sight at 1024 px (the grid scrolled)
+    st.table(frame.style.format({"Value": "{:.4g}"}, na_rep="–"), hide_index=True)
     st.download_button(
         "Mission table (CSV)",
         data=cache.csv_bytes(rows),
@@ -210,7 +204,8 @@ def render(d) -> None:
     )
     st.caption(
         "Envelope: internal pressure ≥ 1.2 q + hydrostatic head, hoop p r and longitudinal "
-        "p r/2 + M/(π r²) loads, safety factor 4 on the fabric strength (Carichner & Nicolai). "
+        "p r/2 + M/(π r²) loads, safety factor 4 on the fabric strength (inputs; their sources "
+        "and what could not be verified: docs/methods.md §1.14). "
         "Endurance: helium permeates at the fabric's rate and is replaced by air, so purity and "
         "free lift decay. Ballonet against the thesis' 500 m rule. Winch drum from the tether's "
         "minimum bend radius."

@@ -155,7 +155,7 @@ def test_screenshots_of_each_page(thesis_page: Page, console_errors: list[str]):
     assert_no_exception(page, "Compare page")
     page.get_by_role("button", name="Load the thesis' GUI test cases").click()
     wait_for_rerun(page)
-    expect(page.get_by_test_id("stDataFrame").filter(visible=True).first).to_be_visible()
+    expect(page.get_by_test_id("stTable").filter(visible=True).first).to_be_visible()
     screenshot(page, "compare")
     page.get_by_role("tab", name="Performance").click()
     wait_for_rerun(page)
