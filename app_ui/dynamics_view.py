@@ -29,6 +29,7 @@ import plotly.graph_objects as go
 import streamlit as st
 
 from aerostat_core.dynamics.linearize import linearize
+from aerostat_core.dynamics.options import SolverOptions
 from aerostat_core.dynamics.results import SIGNALS, limit_flags, response_metrics
 from aerostat_core.dynamics.scenarios import (
     default_request,
@@ -38,6 +39,7 @@ from aerostat_core.dynamics.scenarios import (
     run_request,
 )
 from aerostat_core.dynamics.simulate import kernels_warm, warm_kernels
+from aerostat_core.dynamics.tether import TetherModel
 from aerostat_core.dynamics.thesis import (
     MATCH_FACTOR,
     THESIS_CLAIMS,
@@ -47,6 +49,8 @@ from aerostat_core.dynamics.thesis import (
     thesis_settings_text,
 )
 from aerostat_core.dynamics.turbulence import DRYDEN_W20
+from aerostat_core.dynamics.wind import DrydenTurbulence, Gust, MeanProfile
+from aerostat_core.fields import field_spec
 from aerostat_core.io import inputs_from_dict, inputs_to_dict
 from aerostat_core.presets import thesis_optimized_label
 
@@ -68,28 +72,52 @@ INTENSITIES = {"profile": "From the wind profile (W20 = wind at 20 ft)",
 PROFILES = {"uniform": "Uniform", "power": "Power law", "log": "Log law"}
 BODIES = {"hull": "3-DOF hull (surge, heave, pitch)", "point": "Point aerostat (no pitch)"}
 #: Valid ranges of the form's numbers: key -> (label, lo, hi, unit).
-RANGES = {
+#: Boxes of the Dynamics form that are run settings, not fields of an input dataclass:
+#: key -> (label, lowest, highest, unit).
+_RUN_BOXES = {
     "speed": ("Mean wind at the aerostat", 0.0, 30.0, "m/s"),
     "duration": ("Simulated time", 10.0, 3600.0, "s"),
-    "exponent": ("Power-law exponent", 0.0, 0.6, "-"),
-    "roughness": ("Roughness length", 1e-5, 2.0, "m"),
     "t_change": ("Change starts at", 0.0, 3600.0, "s"),
     "u_new": ("New wind speed", 0.0, 30.0, "m/s"),
     "ramp": ("Ramp time", 0.1, 600.0, "s"),
     "t_change2": ("Second change starts at", 0.0, 3600.0, "s"),
     "u_new2": ("Second new wind speed", 0.0, 30.0, "m/s"),
-    "gust_u": ("Gust amplitude, horizontal", -15.0, 15.0, "m/s"),
-    "gust_w": ("Gust amplitude, vertical", -10.0, 10.0, "m/s"),
-    "gust_length": ("Gust length d_m", 5.0, 1000.0, "m"),
-    "gust_start": ("Gust starts at", 0.0, 3600.0, "s"),
-    "w20": ("W20 (wind at 20 ft)", 0.0, 40.0, "m/s"),
-    "seed": ("Random seed", 0, 2**31 - 1, "-"),
-    "max_frequency": ("Highest turbulence frequency", 0.05, 5.0, "Hz"),
-    "fade_in": ("Turbulence fade-in", 0.0, 120.0, "s"),
-    "segments": ("Tether segments", 4, 80, "-"),
-    "damping": ("Tether damping ratio", 0.0, 5.0, "-"),
-    "wall": ("Wall-clock budget", 5.0, 600.0, "s"),
 }
+#: Boxes that are fields of a dynamics input dataclass: key -> (dataclass, field, the app's
+#: bounds). Label and unit come from the field registry (aerostat_core.fields); the app's bounds
+#: keep a browser request's compute small and lie inside the registry's range.
+_SPEC_BOXES = {
+    "exponent": (MeanProfile, "exponent", 0.0, 0.6),
+    "roughness": (MeanProfile, "roughness_length", 1e-5, 2.0),
+    "gust_u": (Gust, "amplitude_u", -15.0, 15.0),
+    "gust_w": (Gust, "amplitude_w", -10.0, 10.0),
+    "gust_length": (Gust, "length", 5.0, 1000.0),
+    "gust_start": (Gust, "start_time", 0.0, 3600.0),
+    "w20": (DrydenTurbulence, "w20", 0.0, 40.0),
+    "seed": (DrydenTurbulence, "seed", 0, 2**31 - 1),
+    "max_frequency": (DrydenTurbulence, "max_frequency", 0.05, 5.0),
+    "fade_in": (DrydenTurbulence, "fade_in", 0.0, 120.0),
+    "segments": (TetherModel, "segments", 4, 80),
+    "damping": (TetherModel, "damping_ratio", 0.0, 5.0),
+    "wall": (SolverOptions, "wall_time_limit", 5.0, 600.0),
+}
+
+
+def _spec_range(owner: type, name: str, lo: float, hi: float) -> tuple[str, float, float, str]:
+    s = field_spec(owner, name)
+    if (s.lo is not None and lo < s.lo) or (s.hi is not None and hi > s.hi):
+        raise ValueError(f"the app's bounds of {owner.__name__}.{name} leave the registry's range")
+    return s.label, lo, hi, s.unit or "-"
+
+
+#: Every number box of the Dynamics form: key -> (label, lowest, highest, unit).
+RANGES = {**_RUN_BOXES, **{k: _spec_range(*v) for k, v in _SPEC_BOXES.items()}}
+
+
+def box_label(key: str) -> str:
+    """The label of a Dynamics form box, with its unit (e.g. "Random seed [-]")."""
+    label, _lo, _hi, unit = RANGES[key]
+    return f"{label} [{unit}]"
 
 
 # --- request ------------------------------------------------------------------------------------

@@ -315,7 +315,7 @@ with col_out:
         "Safety factor [-]",
         _fmt(sf, "safety_factor"),
         delta=text.signed(sf - lim["min_safety_factor"], formats.decimals("safety_factor")),
-        help="Tether breaking strength / largest tension along the tether; required "
+        help="Breaking strength of the tether / largest tension along the tether; required "
         f"{lim['min_safety_factor']:g} (the delta is the margin).",
     )
     c[4].metric(

@@ -39,29 +39,29 @@ with st.form("dyn_form"):
     source = c[0].selectbox("Design", sources, key="dyn_source", persist_state="session",
                             help="The current design of the Design page, the thesis' optimised "
                                  "aerostat, or a saved case.")
-    speed = num(c[1], "Mean wind at the aerostat [m/s]", "dyn_speed", 10.0,
+    speed = num(c[1], view.box_label("speed"), "dyn_speed", 10.0,
                               help="Wind at the confluence point's static height at t = 0.")
-    duration = num(c[2], "Simulated time [s]", "dyn_duration", 150.0)
+    duration = num(c[2], view.box_label("duration"), "dyn_duration", 150.0)
     form = {"source": source, "scenario": scenario, "speed": speed, "duration": duration}
     if scenario == "varying":
         v = st.columns(4)
-        form["t_change"] = num(v[0], "Change starts at [s]", "dyn_tc", 20.0)
-        form["u_new"] = num(v[1], "New wind speed [m/s]", "dyn_unew", 15.0)
-        form["ramp"] = num(v[2], "Ramp time [s]", "dyn_ramp", 5.0,
+        form["t_change"] = num(v[0], view.box_label("t_change"), "dyn_tc", 20.0)
+        form["u_new"] = num(v[1], view.box_label("u_new"), "dyn_unew", 15.0)
+        form["ramp"] = num(v[2], view.box_label("ramp"), "dyn_ramp", 5.0,
                                          help="With the unsteady-wind inertia on, a short ramp "
                                               "gives a much harsher transient.")
         form["second_change"] = v[3].checkbox("Second change", key="dyn_second",
                                               persist_state="session")
         v2 = st.columns(4)
-        form["t_change2"] = num(v2[0], "Second change starts at [s]", "dyn_tc2", 80.0)
-        form["u_new2"] = num(v2[1], "Second new wind speed [m/s]", "dyn_unew2", 7.0)
+        form["t_change2"] = num(v2[0], view.box_label("t_change2"), "dyn_tc2", 80.0)
+        form["u_new2"] = num(v2[1], view.box_label("u_new2"), "dyn_unew2", 7.0)
     elif scenario == "gust":
         g = st.columns(5)
-        form["gust_u"] = num(g[0], "Gust amplitude, horizontal [m/s]", "dyn_gu", 5.0)
-        form["gust_w"] = num(g[1], "Gust amplitude, vertical [m/s]", "dyn_gw", 0.0)
-        form["gust_length"] = num(g[2], "Gust length d_m [m]", "dyn_gl", 60.0,
+        form["gust_u"] = num(g[0], view.box_label("gust_u"), "dyn_gu", 5.0)
+        form["gust_w"] = num(g[1], view.box_label("gust_w"), "dyn_gw", 0.0)
+        form["gust_length"] = num(g[2], view.box_label("gust_length"), "dyn_gl", 60.0,
                                                 help="Rise time = d_m / mean wind.")
-        form["gust_start"] = num(g[3], "Gust starts at [s]", "dyn_gs", 20.0)
+        form["gust_start"] = num(g[3], view.box_label("gust_start"), "dyn_gs", 20.0)
         form["gust_hold"] = g[4].checkbox("Ramp and hold", key="dyn_ghold",
                                           persist_state="session",
                                           help="Off: the full 1 − cos gust returns to zero.")
@@ -75,12 +75,12 @@ with st.form("dyn_form"):
         form["intensity"] = tb[0].selectbox("Intensity", list(view.INTENSITIES), index=0,
                                             format_func=view.INTENSITIES.get, key="dyn_int",
                                             persist_state="session")
-        form["w20"] = num(tb[1], "Custom W20 [m/s]", "dyn_w20", 15.4,
+        form["w20"] = num(tb[1], view.box_label("w20"), "dyn_w20", 15.4,
                                          help="Used with 'Custom W20' only. σ_w = 0.1 W20.")
-        form["seed"] = num(tb[2], "Random seed [-]", "dyn_seed", 1, integer=True)
-        form["fade_in"] = num(tb[3], "Fade-in [s]", "dyn_fade", 20.0,
+        form["seed"] = num(tb[2], view.box_label("seed"), "dyn_seed", 1, integer=True)
+        form["fade_in"] = num(tb[3], view.box_label("fade_in"), "dyn_fade", 20.0,
                                              help="Statistics skip the fade-in.")
-        form["max_frequency"] = num(tb[4], "Highest frequency [Hz]", "dyn_fmax", 1.0)
+        form["max_frequency"] = num(tb[4], view.box_label("max_frequency"), "dyn_fmax", 1.0)
         tc = st.columns(2)
         form["vertical"] = tc[0].checkbox("Vertical turbulence w′", value=True, key="dyn_vert",
                                           persist_state="session")
@@ -94,14 +94,14 @@ with st.form("dyn_form"):
         form["profile"] = p[0].selectbox("Wind profile", list(view.PROFILES),
                                          format_func=view.PROFILES.get, key="dyn_profile",
                                          persist_state="session")
-        form["exponent"] = num(p[1], "Power-law exponent [-]", "dyn_exp", 1 / 7)
-        form["roughness"] = num(p[2], "Log-law roughness length [m]", "dyn_z0", 0.03)
+        form["exponent"] = num(p[1], view.box_label("exponent"), "dyn_exp", 1 / 7)
+        form["roughness"] = num(p[2], view.box_label("roughness"), "dyn_z0", 0.03)
         m = st.columns(4)
         form["body"] = m[0].radio("Body model", list(view.BODIES), format_func=view.BODIES.get,
                                   key="dyn_body", persist_state="session")
-        form["segments"] = num(m[1], "Tether segments [-]", "dyn_nseg", 20, integer=True)
-        form["damping"] = num(m[2], "Tether damping ratio ζ [-]", "dyn_zeta", 1.0)
-        form["wall"] = num(m[3], "Wall-clock budget [s]", "dyn_wall", 60.0)
+        form["segments"] = num(m[1], view.box_label("segments"), "dyn_nseg", 20, integer=True)
+        form["damping"] = num(m[2], view.box_label("damping"), "dyn_zeta", 1.0)
+        form["wall"] = num(m[3], view.box_label("wall"), "dyn_wall", 60.0)
         form["unsteady"] = st.checkbox(
             "Unsteady-wind inertia (added mass × fluid acceleration + Froude–Krylov)", value=True,
             key="dyn_unsteady", persist_state="session",
