@@ -259,3 +259,25 @@ def comparison_styler(df: pd.DataFrame) -> Styler:
         return [DIFF_ROW_STYLE if differs[row.name] else ""] * len(row)
 
     return df.style.apply(rowstyle, axis=1)
+
+
+def labelled_table(
+    rows: Sequence[Mapping[str, Any]], columns: Mapping[str, tuple[str, str | None]]
+) -> pd.DataFrame:
+    """Rows as the text of a static table (cells wrap, so every column is in sight at 1024 px):
+    the ``columns`` {key: (header, format)} in order, numbers by ``format`` ("{:.3f}"), booleans
+    as yes/no, a missing or non-finite number as "–"; keys absent from the rows are left out."""
+
+    def cell(v: Any, fmt: str | None) -> Any:
+        if isinstance(v, (bool, np.bool_)):
+            return "yes" if v else "no"
+        if v is None or (isinstance(v, (float, np.floating)) and not np.isfinite(v)):
+            return "–"
+        if fmt and isinstance(v, (int, float, np.integer, np.floating)):
+            return fmt.format(v)
+        return v
+
+    keys = [k for k in columns if any(k in r for r in rows)]
+    return pd.DataFrame(
+        {columns[k][0]: [cell(r.get(k), columns[k][1]) for r in rows] for k in keys}
+    )

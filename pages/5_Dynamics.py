@@ -2,11 +2,10 @@
 
 from __future__ import annotations
 
-import pandas as pd
 import streamlit as st
 
 from app_ui import dynamics_view as view
-from app_ui import entry, widgets
+from app_ui import entry, tables, widgets
 
 st.title("Dynamics")
 st.caption(
@@ -138,16 +137,12 @@ def thesis_section() -> None:
         with st.spinner("Simulating the three thesis scenarios…"):
             cmp = view.thesis_comparison(1)
         st.markdown("\n".join(f"- **{view.SCENARIOS[k]}**: {v}" for k, v in cmp["settings"].items()))
-        st.dataframe(pd.DataFrame(cmp["rows"]), hide_index=True, key="dyn_thesis_table",
-                     column_config={
-                         "scenario": "Scenario", "metric": "Metric", "unit": "Unit",
-                         "thesis": st.column_config.NumberColumn("Thesis", format="%.2f"),
-                         "ours": st.column_config.NumberColumn("Ours (peak)", format="%.2f"),
-                         "ratio": st.column_config.NumberColumn("Ours / thesis", format="%.2f"),
-                         "our_rms": st.column_config.NumberColumn("Ours (RMS)", format="%.2f"),
-                         "match": st.column_config.CheckboxColumn("Within ×1.5"),
-                         "claim_holds": st.column_config.CheckboxColumn("Claim holds"),
-                         "window": "Window"})
+        st.table(tables.labelled_table(cmp["rows"], {
+            "scenario": ("Scenario", None), "metric": ("Metric", None), "unit": ("Unit", None),
+            "thesis": ("Thesis", "{:.2f}"), "ours": ("Ours (peak)", "{:.2f}"),
+            "ratio": ("Ours / thesis", "{:.2f}"), "our_rms": ("Ours (RMS)", "{:.2f}"),
+            "match": ("Within ×1.5", None), "claim_holds": ("Claim holds", None),
+            "window": ("Window", None)}), hide_index=True)
         misses = [r for r in cmp["rows"] if not r["match"]]
         if misses:
             st.info("Not matched within ×1.5: " + "; ".join(
@@ -258,53 +253,42 @@ st.caption(
     "(the “±” of a turbulence response); **peak excursion** = the largest |x − mean| (a single "
     "extreme, typically 2.5–4 × the RMS in turbulence); min and max are the extremes of the record."
 )
-st.dataframe(pd.DataFrame(out["stats"]), hide_index=True, key="dyn_stats", column_config={
-    "signal": "Signal", "unit": "Unit",
-    "mean": st.column_config.NumberColumn("Mean", format="%.3f"),
-    "rms_fluctuation": st.column_config.NumberColumn("RMS fluctuation", format="%.3f"),
-    "peak_excursion": st.column_config.NumberColumn("Peak excursion", format="%.3f"),
-    "min": st.column_config.NumberColumn("Min", format="%.3f"),
-    "max": st.column_config.NumberColumn("Max", format="%.3f")})
+st.table(tables.labelled_table(out["stats"], {
+    "signal": ("Signal", None), "unit": ("Unit", None), "mean": ("Mean", "{:.3f}"),
+    "rms_fluctuation": ("RMS fluctuation", "{:.3f}"),
+    "peak_excursion": ("Peak excursion", "{:.3f}"), "min": ("Min", "{:.3f}"),
+    "max": ("Max", "{:.3f}")}), hide_index=True)
 if out["metrics"]:
     st.caption(
         f"After the event at t = {out['event_time']:.0f} s: settling time = time to stay within "
         "5 % (2 %) of the change (a step) or of the largest excursion (a gust that returns); "
         "overshoot in % of the change (steps only).")
-    st.dataframe(pd.DataFrame(out["metrics"]), hide_index=True, key="dyn_metrics", column_config={
-        "signal": "Signal", "unit": "Unit",
-        "settling_5pct_s": st.column_config.NumberColumn("Settling 5 % [s]", format="%.1f"),
-        "settling_2pct_s": st.column_config.NumberColumn("Settling 2 % [s]", format="%.1f"),
-        "band_5pct": st.column_config.NumberColumn("5 % band", format="%.3f"),
-        "overshoot_pct": st.column_config.NumberColumn("Overshoot [%]", format="%.1f"),
-        "peak_excursion": st.column_config.NumberColumn("Peak excursion", format="%.3f"),
-        "final": st.column_config.NumberColumn("Final value", format="%.3f")})
+    st.table(tables.labelled_table(out["metrics"], {
+        "signal": ("Signal", None), "unit": ("Unit", None),
+        "settling_5pct_s": ("Settling 5 % [s]", "{:.1f}"),
+        "settling_2pct_s": ("Settling 2 % [s]", "{:.1f}"), "band_5pct": ("5 % band", "{:.3f}"),
+        "overshoot_pct": ("Overshoot [%]", "{:.1f}"),
+        "peak_excursion": ("Peak excursion", "{:.3f}"), "final": ("Final value", "{:.3f}")}),
+        hide_index=True)
 if out.get("limits"):
     st.caption("Limits: fin stall angle, the tether's safe working load (breaking strength / "
                "required safety factor), a slack segment, and the lowest accepted height (the "
                "static height at the design wind, where the blow-by reaches the requirement).")
-    st.dataframe(pd.DataFrame(view.limits_frame_rows(out)), hide_index=True, key="dyn_limits",
-                 column_config={
-                     "limit": "Limit", "unit": "Unit",
-                     "limit_value": st.column_config.NumberColumn("Limit value", format="%.1f"),
-                     "worst": st.column_config.NumberColumn("Worst in the run", format="%.1f"),
-                     "exceeded": "Exceeded",
-                     "first_s": st.column_config.NumberColumn("First at [s]", format="%.1f")})
+    st.table(tables.labelled_table(view.limits_frame_rows(out), {
+        "limit": ("Limit", None), "unit": ("Unit", None),
+        "limit_value": ("Limit value", "{:.1f}"), "worst": ("Worst in the run", "{:.1f}"),
+        "exceeded": ("Exceeded", None), "first_s": ("First at [s]", "{:.1f}")}), hide_index=True)
 if out.get("modes"):
     st.subheader("Linearised modes about the initial equilibrium")
     st.caption("Eigenvalues of the finite-difference Jacobian of the full model; modes with at "
                "least 30 % of their kinetic energy in the body. "
                + ("All eigenvalues are in the left half-plane (stable)." if out.get("stable")
                   else "**Some eigenvalue has a positive real part: unstable.**"))
-    st.dataframe(pd.DataFrame(out["modes"]), hide_index=True, key="dyn_modes_table",
-                 column_config={
-                     "mode": "Mode",
-                     "period_s": st.column_config.NumberColumn("Period [s]", format="%.2f"),
-                     "damping_ratio": st.column_config.NumberColumn("Damping ratio [-]",
-                                                                    format="%.3f"),
-                     "log_decrement": st.column_config.NumberColumn("Log decrement [-]",
-                                                                    format="%.3f"),
-                     "body_energy_share": st.column_config.NumberColumn("Body energy share [-]",
-                                                                        format="%.2f")})
+    st.table(tables.labelled_table(out["modes"], {
+        "mode": ("Mode", None), "period_s": ("Period [s]", "{:.2f}"),
+        "damping_ratio": ("Damping ratio [-]", "{:.3f}"),
+        "log_decrement": ("Log decrement [-]", "{:.3f}"),
+        "body_energy_share": ("Body energy share [-]", "{:.2f}")}), hide_index=True)
 elif out.get("modes_error"):
     st.warning(f"Linearisation failed: {out['modes_error']}")
 

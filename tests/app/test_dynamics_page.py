@@ -8,6 +8,7 @@ import math
 import re
 
 import numpy as np
+import pandas as pd
 import pytest
 from streamlit.testing.v1 import AppTest
 
@@ -44,8 +45,9 @@ def _set(at: AppTest, key: str, value) -> None:
 
 
 def _df(at: AppTest, column: str):
-    """The dataframe that has this column (AppTest does not expose dataframe keys)."""
-    for df in at.dataframe:
+    """The table that has this column header (AppTest does not expose table keys); the
+    result tables are static text, so numbers are read back with float()."""
+    for df in [*at.dataframe, *at.table]:
         if column in df.value.columns:
             return df.value
     raise KeyError(f"no table with column {column!r}")
@@ -102,9 +104,9 @@ def test_default_gust_run_plots_real_data(dyn):
     tw = values(trace(ten, view.SIGNALS["tension_winch"][0]), "y")
     assert tw[0] == pytest.approx(row["tension_winch_N"], rel=1e-3)
     # settling metrics after the gust
-    metrics = _df(at, "settling_5pct_s")
-    xc = metrics[metrics["signal"] == view.SIGNALS["x_C"][0]].iloc[0]
-    assert 0 < xc["settling_5pct_s"] < 130
+    metrics = _df(at, "Settling 5 % [s]")
+    xc = metrics[metrics["Signal"] == view.SIGNALS["x_C"][0]].iloc[0]
+    assert 0 < float(xc["Settling 5 % [s]"]) < 130
     assert {"dyn_snapshot", "dyn_hull"} <= {getattr(c, "key", None) for c in at.get("plotly_chart")}
     assert any(
         m.label == "Peak blow-by x_C [m]" and float(m.value) == pytest.approx(x.max(), abs=0.05)
@@ -118,20 +120,21 @@ def test_turbulence_statistics_table(dyn):
     _set(dyn, "dyn_duration", 80.0)
     _set(dyn, "dyn_int", "light")
     at = _run(dyn)
-    stats = _df(at, "rms_fluctuation")
+    stats = _df(at, "RMS fluctuation")
     assert list(stats.columns) == [
-        "signal",
-        "unit",
-        "mean",
-        "rms_fluctuation",
-        "peak_excursion",
-        "min",
-        "max",
+        "Signal",
+        "Unit",
+        "Mean",
+        "RMS fluctuation",
+        "Peak excursion",
+        "Min",
+        "Max",
     ]
-    w = stats[stats["signal"] == view.SIGNALS["wind_x"][0]].iloc[0]
-    assert w["mean"] == pytest.approx(10.0, abs=1.0)
-    assert 0.1 < w["rms_fluctuation"] < 1.5  # light: sigma_u ~ 0.78 m/s over a short record
-    assert w["peak_excursion"] >= w["rms_fluctuation"]
+    w = stats[stats["Signal"] == view.SIGNALS["wind_x"][0]].iloc[0]
+    assert float(w["Mean"]) == pytest.approx(10.0, abs=1.0)
+    rms, peak = float(w["RMS fluctuation"]), float(w["Peak excursion"])
+    assert 0.1 < rms < 1.5  # light: sigma_u ~ 0.78 m/s over a short record
+    assert peak >= rms
     assert any("RMS fluctuation" in c.value and "t ≥ 20 s" in c.value for c in at.caption)
     # light: W20 = 15 kt -> sigma_w = 0.77 m/s; at ~300 m sigma_u ~ sigma_w, L_u ~ 305 m
     cap = next(c.value for c in at.caption if c.value.startswith("Turbulence model"))
@@ -189,9 +192,10 @@ def test_reversed_wind_runs_on_and_flags_stall(dyn):
     assert any(s.value.startswith("Finished: 60 s simulated") for s in at.success)
     warn = " ".join(w.value for w in at.warning)
     assert "Limits exceeded" in warn and "beyond stall" in warn
-    lim = _df(at, "limit_value")
-    stall = lim[lim["limit"].str.contains("stall")].iloc[0]
-    assert stall["exceeded"] == "yes" and stall["worst"] > stall["limit_value"]
+    lim = _df(at, "Limit value")
+    stall = lim[lim["Limit"].str.contains("stall")].iloc[0]
+    assert stall["Exceeded"] == "yes"
+    assert float(stall["Worst in the run"]) > float(stall["Limit value"])
     pitch = chart(at, "dyn_pitch")
     assert "fin stall" in pitch["layout"]["title"]["text"]
 
@@ -230,9 +234,12 @@ def test_thesis_comparison_is_computed_live(dyn):
     dyn.button(key="dyn_thesis_run").click()
     dyn.run()
     assert not dyn.exception, [e.value for e in dyn.exception]
-    table = _df(dyn, "claim_holds")
-    assert set(table["scenario"]) == {"varying", "gust", "turbulence"}
-    assert list(table["thesis"]) == [40.0, 3.0, 40.0, 3.0, 1.2, 0.2, 3.5]
+    shown = _df(dyn, "Claim holds")  # the static table, as text
+    table = pd.DataFrame(view.thesis_comparison(1)["rows"])  # the numbers behind it (cached)
+    assert set(shown["Scenario"]) == set(table["scenario"]) == {"varying", "gust", "turbulence"}
+    assert [float(v) for v in shown["Thesis"]] == [40.0, 3.0, 40.0, 3.0, 1.2, 0.2, 3.5]
+    assert list(shown["Ours (peak)"]) == [f"{v:.2f}" for v in table["ours"]]
+    assert list(shown["Within ×1.5"]) == ["yes" if m else "no" for m in table["match"]]
     assert (table["ours"] > 0).all()
     ratio = table["ours"] / table["thesis"]
     assert ratio.to_numpy() == pytest.approx(table["ratio"].to_numpy())
@@ -248,9 +255,9 @@ def test_modes_table(dyn):
     _set(dyn, "dyn_modes", True)
     _set(dyn, "dyn_duration", 20.0)
     at = _run(dyn)
-    modes = _df(at, "period_s")
-    surge = modes[modes["mode"] == "surge"].iloc[0]
-    assert 10.0 < surge["period_s"] < 80.0 and surge["damping_ratio"] > 0
+    modes = _df(at, "Period [s]")
+    surge = modes[modes["Mode"] == "surge"].iloc[0]
+    assert 10.0 < float(surge["Period [s]"]) < 80.0 and float(surge["Damping ratio [-]"]) > 0
 
 
 def test_csv_of_the_time_histories():

@@ -1,5 +1,5 @@
 """Tables show all their columns (issue 9, layout): at 1024 x 768 and 1400 x 900 no table of the
-Design, Sensitivity, Optimise, Compare or Shapes page scrolls sideways (scrollWidth of the grid's scroller equals
+Design, Sensitivity, Optimise, Compare, Shapes or Dynamics page scrolls sideways (scrollWidth of the grid's scroller equals
 its clientWidth); and the number boxes of the Sensitivity and Optimise pages read a decimal
 comma as a decimal point, as the Design form does ("12,5" was 125 in the browser's number box).
 """
@@ -149,5 +149,23 @@ def test_compare_and_shapes_tables_show_every_column_at_1024(browser: Browser, b
         assert_no_exception(page, "Shapes page")
         page.wait_for_function(f"() => ({_COUNT})() >= 3", timeout=RUN_TIMEOUT_MS)
         assert page.evaluate(_WIDE) == [], "Shapes"
+    finally:
+        ctx.close()
+
+
+def test_dynamics_tables_show_every_column_at_1024(browser: Browser, base_url: str):
+    """The Dynamics page's summary and limits tables after a short run fit a 1024 px window."""
+    ctx, page = _open(browser, base_url, 1024, 768)
+    try:
+        goto_page(page, "Dynamics", timeout=RUN_TIMEOUT_MS)
+        box = _box(page, "Simulated time [s]")
+        box.fill("30")
+        box.press("Tab")
+        page.get_by_role("button", name="Run simulation").click()
+        wait_for_rerun(page, timeout=RUN_TIMEOUT_MS)
+        assert_no_exception(page, "Dynamics page after a run")
+        expect(page.get_by_text("Finished: 30 s simulated")).to_be_visible(timeout=RUN_TIMEOUT_MS)
+        page.wait_for_function(f"() => ({_COUNT})() >= 2", timeout=RUN_TIMEOUT_MS)
+        assert page.evaluate(_WIDE) == [], "Dynamics"
     finally:
         ctx.close()
