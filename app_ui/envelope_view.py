@@ -381,18 +381,21 @@ def _uncertainty(inputs_json: str, rep: dict) -> None:
     c[2].metric("Free lift 5-95 % [kg]", f"{s['free_lift_p05_kg']:.2f}-{s['free_lift_p95_kg']:.2f}")
     c[3].metric("P(all limits met)", f"{100 * s['probability_feasible']:.0f} %")
     st.plotly_chart(bands_figure(mc, rep), key="mc_bands")
-    t1, t2 = st.columns([1, 1.6])
-    t1.dataframe(
-        pd.DataFrame(
-            [{"Constraint": BY_NAME[k].label, "P(met)": v} for k, v in s["probability_met"].items()]
-        ),
-        hide_index=True,
-        key="mc_probabilities",
+    # static tables, full width, cells that wrap: every column in sight at 1024 px
+    probabilities = pd.DataFrame(
+        [{"Constraint": BY_NAME[k].label, "P(met)": v} for k, v in s["probability_met"].items()]
     )
-    t2.dataframe(pd.DataFrame(mc["specs"]), hide_index=True, key="mc_specs")
+    st.table(probabilities.style.format({"P(met)": "{:.1%}"}), hide_index=True)
+    st.table(_text_frame(pd.DataFrame(mc["specs"])), hide_index=True)
     st.markdown("**Rule sets, same mission** (each sized under its own limits, 2000 samples)")
     rows = cached_rules_spread(inputs_json, run["seed"])
-    st.dataframe(pd.DataFrame(rows), hide_index=True, key="mc_rules")
+    spread = pd.DataFrame(rows).set_index("rules").T  # one column per rule set: it fits
+    st.table(_text_frame(spread.rename_axis("Quantity").reset_index()), hide_index=True)
+
+
+def _text_frame(df: pd.DataFrame) -> pd.DataFrame:
+    """Numbers at 4 significant digits as text, so a static table's cells can wrap."""
+    return df.map(lambda v: f"{v:.4g}" if isinstance(v, float) else v)
 
 
 def render(inputs_json: str, rep: dict) -> None:
@@ -406,11 +409,10 @@ def render(inputs_json: str, rep: dict) -> None:
         "constraint value g (> 0: a limit is broken); hover for the binding constraint "
         "and its margin."
     )
-    st.dataframe(
-        pd.DataFrame({"Altitude [m]": env.altitude, "Flyable up to [m/s]": lw}),
+    limits = pd.DataFrame({"Altitude [m]": env.altitude, "Flyable up to [m/s]": lw})
+    st.table(
+        limits.style.format({"Altitude [m]": "{:.0f}", "Flyable up to [m/s]": "{:.1f}"}),
         hide_index=True,
-        height=220,
-        key="envelope_limits",
     )
     st.subheader("Flyable time", anchor=False)
     _flyable(inputs_json)

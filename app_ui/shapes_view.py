@@ -178,18 +178,21 @@ def study_frame(rows: list[dict], objective: str) -> pd.DataFrame:
     return df[[k for k in names if k in df.columns]].rename(columns=names)
 
 
-#: Column formats of :func:`study_frame` (decimals from :mod:`app_ui.formats`).
-STUDY_FORMAT = {
-    col: st.column_config.NumberColumn(format=formats.printf(q))
-    for col, q in (
-        ("l/d [-]", "fineness_ratio"),
-        ("ΔS_f [%]", "area_change"),
-        ("Δl_f [% of l]", "position"),
-        ("Volume [m³]", "volume"),
-        ("Total mass [kg]", "total_mass"),
-        ("Blow-by [m]", "blow_by"),
-    )
+#: Numeric columns of the per-shape optima -> quantity kind (app_ui.formats).
+STUDY_KINDS = {
+    "l/d [-]": "fineness_ratio",
+    "ΔS_f [%]": "area_change",
+    "Δl_f [% of l]": "position",
+    "Volume [m³]": "volume",
+    "Total mass [kg]": "total_mass",
+    "Blow-by [m]": "blow_by",
 }
+
+
+def study_styler(df: pd.DataFrame):
+    """The per-shape optima as a static table (cells wrap), each number at its kind's decimals."""
+    fmt = {c: formats.formatter(k) for c, k in STUDY_KINDS.items() if c in df.columns}
+    return df.style.format(fmt, na_rep="–")
 
 
 # --- figures ---------------------------------------------------------------------------------

@@ -103,9 +103,10 @@ if run or st.session_state.get("shape_opt_done"):
             )
         else:
             st.warning("No shape meets every requirement.", icon=":material/warning:")
-        st.dataframe(
-            view.study_frame(rows, objective),
-            hide_index=True,
-            key="shape_opt_table",
-            column_config=view.STUDY_FORMAT,
-        )
+        study = view.study_frame(rows, objective)
+        # two static tables (design variables, then results), so every column is in sight
+        design_cols = ["Shape", "Best", "Feasible", "l/d [-]", "ΔS_f [%]", "Δl_f [% of l]"]
+        first = [c for c in design_cols if c in study.columns]
+        rest = ["Shape", *[c for c in study.columns if c not in first and c != objective]]
+        st.table(view.study_styler(study[first]), hide_index=True)
+        st.table(view.study_styler(study[rest]), hide_index=True)

@@ -51,7 +51,7 @@ def test_shapes_page_optimises_every_shape(at):
     at.run()
     assert not at.exception, [e.value for e in at.exception]
     assert any("Best shape" in m for m in messages(at, "success"))
-    t = [df.value for df in at.dataframe if "Best" in df.value.columns][0]
+    t = [df.value for df in [*at.dataframe, *at.table] if "Best" in df.value.columns][0]
     assert len(t) == 8 and t["Best"].sum() == 1
     pos = t["Δl_f [% of l]"].dropna()  # the fin position in % of the hull length, as elsewhere
     assert len(pos) and ((pos >= 40) & (pos <= 95)).all()

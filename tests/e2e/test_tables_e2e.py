@@ -169,3 +169,28 @@ def test_dynamics_tables_show_every_column_at_1024(browser: Browser, base_url: s
         assert page.evaluate(_WIDE) == [], "Dynamics"
     finally:
         ctx.close()
+
+
+def test_envelope_and_shape_study_tables_show_every_column_at_1024(browser: Browser, base_url: str):
+    """After the user's actions, the Envelope tab's flyable-time and Monte Carlo tables and the
+    Shapes page's per-shape optima fit a 1024 px window."""
+    ctx, page = _open(browser, base_url, 1024, 768)
+    try:
+        page.get_by_role("tab", name="Envelope", exact=True).click()
+        wait_for_rerun(page)
+        page.get_by_role("button", name="Compute flyable time").click()
+        wait_for_rerun(page, timeout=RUN_TIMEOUT_MS)
+        page.get_by_role("button", name="Run Monte Carlo").click()
+        wait_for_rerun(page, timeout=RUN_TIMEOUT_MS)
+        assert_no_exception(page, "Envelope tab")
+        page.wait_for_function(f"() => ({_COUNT})() >= 5", timeout=RUN_TIMEOUT_MS)
+        assert page.evaluate(_WIDE) == [], "Envelope"
+        goto_page(page, "Shapes", timeout=RUN_TIMEOUT_MS)
+        page.get_by_role("button", name="Optimise every shape").click()
+        wait_for_rerun(page, timeout=RUN_TIMEOUT_MS)
+        assert_no_exception(page, "Shapes page")
+        expect(page.get_by_text("Best shape", exact=False).first).to_be_visible()
+        page.wait_for_function(f"() => ({_COUNT})() >= 6", timeout=RUN_TIMEOUT_MS)
+        assert page.evaluate(_WIDE) == [], "Shapes"
+    finally:
+        ctx.close()
