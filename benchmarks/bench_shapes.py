@@ -15,8 +15,6 @@ from __future__ import annotations
 
 import os
 import platform
-import statistics
-import time
 from dataclasses import replace
 
 os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
@@ -31,18 +29,7 @@ from aerostat_core.performance import evaluate  # noqa: E402
 from aerostat_core.presets import practice_configuration  # noqa: E402
 from aerostat_core.shape_comparison import thesis_shape_comparison  # noqa: E402
 from aerostat_core.shapes import SHAPE_INFO  # noqa: E402
-from benchmarks.bench_core import median_time  # noqa: E402
-
-
-def median_cpu(fn, repeats: int) -> float:
-    """Median process CPU time of ``fn()`` [s] (after one warm-up call)."""
-    fn()
-    times = []
-    for _ in range(repeats):
-        t0 = time.process_time()
-        fn()
-        times.append(time.process_time() - t0)
-    return statistics.median(times)
+from benchmarks.bench_core import median_cpu, median_time  # noqa: E402
 
 
 def main() -> None:
