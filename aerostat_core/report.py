@@ -490,5 +490,6 @@ __all__ = [
     "input_field_info",
     "performance_rows",
     "tether_profile_rows",
+    "tether_profiles",
     "thesis_gui_cases",
 ]
