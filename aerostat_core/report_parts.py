@@ -61,7 +61,7 @@ class ReportPart(FrozenMapping):
 def _warn_key(part: ReportPart, key: str) -> None:
     warnings.warn(
         f"reading the design report by key ([{key!r}]) is deprecated; read the attribute "
-        f"(.{key}) of {type(part).__name__}",
+        f"{type(part).__name__}.{key}",
         DeprecationWarning,
         stacklevel=3,
     )
@@ -112,7 +112,9 @@ class PerformanceCurves(ReportPart):
                     f"the sweep {n}"
                 )
         if (len(self.flag_text),) != n:
-            raise ValueError(f"PerformanceCurves.flag_text has {len(self.flag_text)} rows, the sweep {n}")
+            raise ValueError(
+                f"PerformanceCurves.flag_text has {len(self.flag_text)} rows, the sweep {n}"
+            )
 
 
 @dataclass(frozen=True, eq=False)
@@ -155,8 +157,10 @@ class TetherProfile(ReportPart):
 
     def __post_init__(self) -> None:
         if np.shape(self.x) != np.shape(self.z) or np.ndim(self.x) != 1:
-            raise ValueError(f"TetherProfile: x {np.shape(self.x)} and z {np.shape(self.z)} "
-                             "must be one-dimensional of one length")
+            raise ValueError(
+                f"TetherProfile: x {np.shape(self.x)} and z {np.shape(self.z)} "
+                "must be one-dimensional of one length"
+            )
 
 
 @dataclass(frozen=True, eq=False)
@@ -182,8 +186,10 @@ class TetherProfiles(ReportPart):
     def __post_init__(self) -> None:
         n = np.size(self.wind_speed)
         if np.ndim(self.x) != 2 or np.shape(self.x) != np.shape(self.z) or np.shape(self.x)[1] != n:
-            raise ValueError(f"TetherProfiles: x {np.shape(self.x)} and z {np.shape(self.z)} must be "
-                             f"(nodes, {n}), one column per sweep speed")
+            raise ValueError(
+                f"TetherProfiles: x {np.shape(self.x)} and z {np.shape(self.z)} must be "
+                f"(nodes, {n}), one column per sweep speed"
+            )
 
 
 @dataclass(frozen=True)
@@ -320,10 +326,15 @@ def tether_profiles(tether: TetherProfiles | Mapping[str, Any]) -> TetherProfile
         return tether
     design = tether.get("design")
     if design is not None and not isinstance(design, TetherProfile):
-        design = TetherProfile(np.asarray(design["x"], float), np.asarray(design["z"], float),
-                               float(design["wind"]))
-    return TetherProfiles(np.asarray(tether["x"], float), np.asarray(tether["z"], float),
-                          np.asarray(tether["wind_speed"], float), design)
+        design = TetherProfile(
+            np.asarray(design["x"], float), np.asarray(design["z"], float), float(design["wind"])
+        )
+    return TetherProfiles(
+        np.asarray(tether["x"], float),
+        np.asarray(tether["z"], float),
+        np.asarray(tether["wind_speed"], float),
+        design,
+    )
 
 
 __all__ = [
