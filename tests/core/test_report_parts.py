@@ -306,7 +306,13 @@ def _key_reads(text: str, rel: str) -> list[str]:
             key, obj = node.args[0], node.func.value
         else:
             continue
-        if not (isinstance(key, ast.Constant) and key.value in REPORT_KEYS):
+        if not isinstance(key, ast.Constant):
+            continue
+        of_summary = (  # rep.summary["..."] or d.summary()["..."]: any key
+            obj.func if isinstance(obj, ast.Call) else obj
+        )
+        of_summary = isinstance(of_summary, ast.Attribute) and of_summary.attr == "summary"
+        if key.value not in REPORT_KEYS and not of_summary:
             continue
         if isinstance(obj, ast.Attribute) and obj.attr == "items":
             continue  # mass items by name (MassBreakdown.items["hull"])
@@ -336,6 +342,7 @@ def test_the_key_scan_finds_key_reads():
         'y = p["tension_winch"]\n'
         'bb = rep.summary["blow_by_at_design_wind_m"]\n'
         'shape = rep.get("hull")\n'
+        'v = d.summary()["volume_m3"]\n'
         'hull = d.airframe.mass.items["hull"]\n'
         'kite = m["fins"]\n'
     )
@@ -345,8 +352,9 @@ def test_the_key_scan_finds_key_reads():
         "p['tension_winch']",
         "rep.summary['blow_by_at_design_wind_m']",
         "rep.get('hull')",
+        "d.summary()['volume_m3']",
     ]
-    assert len(_key_reads(text, "app_ui/plots.py")) == 5  # m["fins"] is listed only there
+    assert len(_key_reads(text, "app_ui/plots.py")) == 6  # m["fins"] is listed only there
 
 
 def test_the_scanned_keys_are_report_fields():
