@@ -1,9 +1,10 @@
 """Plain-data views of designs for the app, the CSV files and the comparison of saved cases.
 
 Everything here is pure (no Streamlit): it turns :class:`~aerostat_core.design.Design` objects and
-saved-case dicts (:func:`aerostat_core.io.inputs_to_dict` format) into lists of flat rows, small
-dicts of numpy arrays and 3-D outlines that the UI layer plots. No physics is computed here beyond
-drawing the shapes the engine already defines (hull profile r(xi), trapezoidal fins).
+saved-case dicts (:func:`aerostat_core.io.inputs_to_dict` format) into lists of flat rows, the
+typed :class:`DesignReport` (its parts in :mod:`aerostat_core.report_parts`) and 3-D outlines that
+the UI layer plots. No physics is computed here beyond drawing the shapes the engine already
+defines (hull profile r(xi), trapezoidal fins).
 
 Units: SI, with the unit written into every column name of a CSV row (``blow_by_m``,
 ``payload_mass_kg``).

@@ -263,7 +263,8 @@ class DesignReport(ReportPart):
         Headline numbers (:meth:`Design.summary`).
     constraints : list of dict
         The constraint table rows (:meth:`ConstraintState.rows`): constraint, label, checked_at,
-        value, limit, margin (in ``unit``), met, g.
+        value, limit, margin (in ``unit``), met, g. Rows, like the other tables: their one
+        definition is ``ConstraintState.rows``, which the HTML report reads too.
     violations : tuple of str
         Plain-language reasons the design fails its requirements (empty when feasible).
     feasible, sized : bool
