@@ -53,6 +53,9 @@ class ReportPart(FrozenMapping):
         _warn_key(self, key)
         return self._view().get(key, default)
 
+    def __contains__(self, key: object) -> bool:  # a membership test reads no value: no warning
+        return key in self._view()
+
     def to_dict(self) -> dict[str, Any]:
         """The part as a plain dict (nested parts as dicts), as the report was before typing."""
         return {f.name: _plain(getattr(self, f.name)) for f in fields(self)}

@@ -232,8 +232,9 @@ def test_key_reads_still_work_for_one_release_and_warn():
         assert rep.get("shape", "npl") == rep.shape
     with pytest.warns(DeprecationWarning):
         assert rep["fins"]["outlines"] == list(rep.fins.outlines)  # a list, as before
-    # iteration and len read no values: no warning
+    # iteration, len and membership read no values: no warning (the suite makes it an error)
     assert list(rep) == list(rep.to_dict()) and list(rep.hull) == list(rep.hull.to_dict())
+    assert "perf" in rep and "blow_by" in rep.perf and "nothing" not in rep
 
 
 def test_parts_reject_arrays_of_the_wrong_shape():
