@@ -4,7 +4,7 @@ Typical use::
 
     from aerostat_core import Requirement, Configuration, design
     d = design(Requirement(payload_mass=10, altitude=300))
-    d.summary()["volume_m3"]
+    d.summary().volume_m3
 """
 
 from .deprecation import deprecated_aliases

@@ -68,17 +68,17 @@ def format_summary(d: Design) -> str:
     lines = [
         f"Aerostat for {req.payload_mass:g} kg at {req.altitude:g} m "
         f"({'sized' if d.sized else 'given'} volume)",
-        f"  volume            {s['volume_m3']:9.1f} m3",
-        f"  length x diameter {s['length_m']:6.2f} x {s['diameter_m']:.2f} m",
-        f"  total mass        {s['total_mass_kg']:9.2f} kg",
-        f"  free lift         {s['free_lift_kg']:9.2f} kg "
-        f"({s['percent_static_lift']:.0f} % of buoyancy)",
-        f"  at {req.design_wind:g} m/s: blow-by {s['blow_by_at_design_wind_m']:.1f} m, "
-        f"alpha {s['alpha_at_design_wind_deg']:.1f} deg, tension "
-        f"{s['tension_top_at_design_wind_N']:.0f} N, safety factor "
-        f"{s['safety_factor_at_design_wind']:.1f}",
-        f"  gas fill cost     {s['gas_cost_USD']:9.0f} USD",
-        f"  rules             {s['rules']} (sizing set by: {s['binding_constraint']})",
+        f"  volume            {s.volume_m3:9.1f} m3",
+        f"  length x diameter {s.length_m:6.2f} x {s.diameter_m:.2f} m",
+        f"  total mass        {s.total_mass_kg:9.2f} kg",
+        f"  free lift         {s.free_lift_kg:9.2f} kg "
+        f"({s.percent_static_lift:.0f} % of buoyancy)",
+        f"  at {req.design_wind:g} m/s: blow-by {s.blow_by_at_design_wind_m:.1f} m, "
+        f"alpha {s.alpha_at_design_wind_deg:.1f} deg, tension "
+        f"{s.tension_top_at_design_wind_N:.0f} N, safety factor "
+        f"{s.safety_factor_at_design_wind:.1f}",
+        f"  gas fill cost     {s.gas_cost_USD:9.0f} USD",
+        f"  rules             {s.rules} (sizing set by: {s.binding_constraint})",
         "  mass breakdown:",
     ]
     lines += [f"    {r['item']:<15s}{r['mass_kg']:8.2f} kg" for r in d.mass_rows()]
@@ -149,7 +149,7 @@ def _parser() -> argparse.ArgumentParser:
 
 def summary_json(d: Design) -> str:
     """JSON text of :meth:`Design.summary` plus ``hull_shape``."""
-    s = dict(d.summary())
+    s = d.summary().to_dict()
     s.setdefault("hull_mass_kg", float(d.airframe.mass.items["hull"]))
     s.setdefault("hull_shape", d.airframe.hull.shape)
     return json.dumps(s, indent=2)

@@ -148,11 +148,11 @@ def size_fielded(system: FieldedSystem, rules: str = "practice",
     s = d.summary()
     rel = lambda p, q: None if q is None else p / q - 1.0  # noqa: E731
     return FieldedRow(
-        system=system, length=s["length_m"], diameter=s["diameter_m"], volume=s["volume_m3"],
-        feasible=d.feasible, binding=s["binding_constraint"],
-        length_error=s["length_m"] / system.length - 1.0,
-        diameter_error=rel(s["diameter_m"], system.diameter),
-        volume_error=rel(s["volume_m3"], system.volume),
+        system=system, length=s.length_m, diameter=s.diameter_m, volume=s.volume_m3,
+        feasible=d.feasible, binding=s.binding_constraint,
+        length_error=s.length_m / system.length - 1.0,
+        diameter_error=rel(s.diameter_m, system.diameter),
+        volume_error=rel(s.volume_m3, system.volume),
     )
 
 

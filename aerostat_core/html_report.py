@@ -357,10 +357,10 @@ def render_report(
             )
             + _table(
                 [
-                    {"quantity": "gross buoyancy [N]", "value": s["gross_buoyancy_N"]},
-                    {"quantity": "free lift [kg]", "value": s["free_lift_kg"]},
-                    {"quantity": "percent static lift [%]", "value": s["percent_static_lift"]},
-                    {"quantity": "gas fill cost [USD]", "value": s["gas_cost_USD"]},
+                    {"quantity": "gross buoyancy [N]", "value": s.gross_buoyancy_N},
+                    {"quantity": "free lift [kg]", "value": s.free_lift_kg},
+                    {"quantity": "percent static lift [%]", "value": s.percent_static_lift},
+                    {"quantity": "gas fill cost [USD]", "value": s.gas_cost_USD},
                 ]
             ),
         )

@@ -1,9 +1,10 @@
 """Plain-data views of designs for the app, the CSV files and the comparison of saved cases.
 
 Everything here is pure (no Streamlit): it turns :class:`~aerostat_core.design.Design` objects and
-saved-case dicts (:func:`aerostat_core.io.inputs_to_dict` format) into lists of flat rows, small
-dicts of numpy arrays and 3-D outlines that the UI layer plots. No physics is computed here beyond
-drawing the shapes the engine already defines (hull profile r(xi), trapezoidal fins).
+saved-case dicts (:func:`aerostat_core.io.inputs_to_dict` format) into lists of flat rows, the
+typed :class:`DesignReport` (its parts in :mod:`aerostat_core.report_parts`) and 3-D outlines that
+the UI layer plots. No physics is computed here beyond drawing the shapes the engine already
+defines (hull profile r(xi), trapezoidal fins).
 
 Units: SI, with the unit written into every column name of a CSV row (``blow_by_m``,
 ``payload_mass_kg``).
@@ -13,19 +14,30 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping
-from dataclasses import dataclass, fields
 from typing import Any
 
 import numpy as np
 
 from . import budget
-from .design import Design, DesignSummary, FrozenMapping, design
+from .design import Design, design
 from .fields import report_table
 from .fins import ARRANGEMENT_ANGLES_DEG
 from .geometry import radius
 from .inputs import Requirement
 from .io import inputs_from_dict, inputs_to_dict, rows_to_csv
 from .presets import practice_configuration
+from .report_parts import (
+    DesignLimits,
+    DesignReport,
+    FinView,
+    HullDimensions,
+    KeyPoints,
+    MomentCurve,
+    PerformanceCurves,
+    TetherProfile,
+    TetherProfiles,
+    tether_profiles,
+)
 from .shapes import profile_radius_ratio
 
 # --------------------------------------------------------------------------------------------
@@ -198,30 +210,29 @@ def performance_rows(d: Design) -> list[dict]:
     return rows
 
 
-def _design_wind_profile(d: Design) -> dict[str, Any]:
+def _design_wind_profile(d: Design) -> TetherProfile:
     """Tether shape at the design wind (x, z [m] from the winch; ``wind`` [m/s])."""
     wind = float(d.requirement.design_wind)
     if hasattr(d, "tether_profile"):
         x, z = d.tether_profile(wind)
-        return {
-            "x": np.asarray(x, float).reshape(-1),
-            "z": np.asarray(z, float).reshape(-1),
-            "wind": wind,
-        }
+        return TetherProfile(
+            x=np.asarray(x, float).reshape(-1), z=np.asarray(z, float).reshape(-1), wind=wind
+        )
     ws = np.asarray(d.performance.wind_speed, float)  # engines without Design.tether_profile
     j = int(np.argmin(np.abs(ws - wind)))
-    return {
-        "x": np.asarray(d.tether_x, float)[:, j],
-        "z": np.asarray(d.tether_z, float)[:, j],
-        "wind": float(ws[j]),
-    }
+    return TetherProfile(
+        x=np.asarray(d.tether_x, float)[:, j],
+        z=np.asarray(d.tether_z, float)[:, j],
+        wind=float(ws[j]),
+    )
 
 
-def tether_profile_rows(tether: Mapping[str, Any]) -> list[dict[str, float]]:
+def tether_profile_rows(tether: TetherProfiles | Mapping[str, Any]) -> list[dict[str, float]]:
     """Tidy rows (wind_speed_m_s, node, x_m, z_m) of the sweep's tether profiles; node 0 is the
-    confluence point, the last node the winch. ``tether`` is ``design_report(d)["tether"]``."""
-    x, z = np.asarray(tether["x"], float), np.asarray(tether["z"], float)
-    ws = np.asarray(tether["wind_speed"], float)
+    confluence point, the last node the winch. ``tether`` is ``design_report(d).tether`` (a
+    plain ``{"x", "z", "wind_speed"}`` mapping is accepted too)."""
+    t = tether_profiles(tether)
+    x, z, ws = t.x, t.z, t.wind_speed
     return [
         {
             "wind_speed_m_s": float(ws[j]),
@@ -232,78 +243,6 @@ def tether_profile_rows(tether: Mapping[str, Any]) -> list[dict[str, float]]:
         for j in range(ws.size)
         for i in range(x.shape[0])
     ]
-
-
-@dataclass(frozen=True)
-class DesignReport(FrozenMapping):
-    """Everything the design page shows, as plain data (the core-to-UI contract).
-
-    Attributes
-    ----------
-    summary : DesignSummary
-        Headline numbers (:meth:`Design.summary`).
-    constraints : list of dict
-        The constraint table rows (:meth:`ConstraintState.rows`).
-    violations : tuple of str
-    feasible, sized : bool
-    geometry_rows, mass_rows, performance_rows : list of dict
-        Table rows, units in the keys.
-    perf : dict
-        Arrays versus wind: wind_speed [m/s], alpha_eq [deg], dynamic_lift, drag [N],
-        blow_by, flying_height [m], tension_top, tension_winch [N], safety_factor [-],
-        limited (bool), and ``flag_text`` per row.
-    cm : dict
-        alpha_deg, cm (C_m about the confluence point), alpha_eq_deg and ``wind`` [m/s].
-    tether : dict
-        x, z [m] with shape (nodes, winds), wind_speed [m/s], and ``design``: the profile at
-        the design wind (x, z, wind).
-    shape : str
-        Hull shape name.
-    hull : dict
-        a1, a2, b, length, diameter, xi_cb [m].
-    fins : dict
-        ``outlines`` (3-D corners of each fin [m]) and ``arrangement``.
-    points : dict
-        cb, cg, c: (xi, z) [m].
-    confluence_lines : list of ndarray
-    limits : dict
-        blow_by_limit [m], design_wind [m/s], min_safety_factor [-], altitude [m],
-        stall_deg [deg].
-    inputs : dict
-        The inputs (:func:`aerostat_core.io.inputs_to_dict`).
-
-    ``report["summary"]`` etc. still read as before; :meth:`to_dict` gives the plain dict.
-    """
-
-    summary: DesignSummary
-    constraints: list
-    violations: tuple
-    feasible: bool
-    sized: bool
-    geometry_rows: list
-    mass_rows: list
-    performance_rows: list
-    perf: dict
-    cm: dict
-    tether: dict
-    shape: str
-    hull: dict
-    fins: dict
-    points: dict
-    confluence_lines: list
-    limits: dict
-    inputs: dict
-
-    def _view(self) -> dict:
-        out = {f.name: getattr(self, f.name) for f in fields(self)}
-        out["violations"] = list(self.violations)
-        return out
-
-    def to_dict(self) -> dict[str, Any]:
-        """The report as the plain dict of before (``summary`` a dict too)."""
-        out = self._view()
-        out["summary"] = self.summary.to_dict()
-        return out
 
 
 def design_report(d: Design) -> DesignReport:
@@ -322,54 +261,54 @@ def design_report(d: Design) -> DesignReport:
         geometry_rows=d.geometry_rows(),
         mass_rows=d.mass_rows(),
         performance_rows=prow,
-        perf={
-            "wind_speed": np.asarray(p.wind_speed, float),
-            "alpha_eq": np.asarray(p.alpha_eq, float),
-            "dynamic_lift": np.asarray(p.dynamic_lift, float),
-            "drag": np.asarray(p.drag, float),
-            "blow_by": np.asarray(p.blow_by, float),
-            "flying_height": np.asarray(p.flying_height, float),
-            "tension_top": np.asarray(p.tension_top, float),
-            "tension_winch": np.asarray(p.tension_winch, float),
-            "safety_factor": np.asarray(p.safety_factor, float),
-            "limited": np.asarray(p.limited, bool),
-            "flag_text": [r["flags"] for r in prow],
-        },
-        cm={
-            "alpha_deg": np.asarray(d.cm_alpha_deg, float),
-            "cm": np.asarray(d.cm, float),
-            "alpha_eq_deg": float(d.design_point["alpha_eq_deg"]),
-            "wind": float(req.design_wind if req.design_wind > 0 else 10.0),
-        },
-        tether={
-            "x": np.asarray(d.tether_x, float),
-            "z": np.asarray(d.tether_z, float),
-            "wind_speed": np.asarray(p.wind_speed, float),
-            "design": _design_wind_profile(d),
-        },
+        perf=PerformanceCurves(
+            wind_speed=np.asarray(p.wind_speed, float),
+            alpha_eq=np.asarray(p.alpha_eq, float),
+            dynamic_lift=np.asarray(p.dynamic_lift, float),
+            drag=np.asarray(p.drag, float),
+            blow_by=np.asarray(p.blow_by, float),
+            flying_height=np.asarray(p.flying_height, float),
+            tension_top=np.asarray(p.tension_top, float),
+            tension_winch=np.asarray(p.tension_winch, float),
+            safety_factor=np.asarray(p.safety_factor, float),
+            limited=np.asarray(p.limited, bool),
+            flag_text=tuple(r["flags"] for r in prow),
+        ),
+        cm=MomentCurve(
+            alpha_deg=np.asarray(d.cm_alpha_deg, float),
+            cm=np.asarray(d.cm, float),
+            alpha_eq_deg=float(d.design_point["alpha_eq_deg"]),
+            wind=float(req.design_wind if req.design_wind > 0 else 10.0),
+        ),
+        tether=TetherProfiles(
+            x=np.asarray(d.tether_x, float),
+            z=np.asarray(d.tether_z, float),
+            wind_speed=np.asarray(p.wind_speed, float),
+            design=_design_wind_profile(d),
+        ),
         shape=h.shape,
-        hull={
-            "a1": _f(h.a1),
-            "a2": _f(h.a2),
-            "b": _f(h.b),
-            "length": _f(h.length),
-            "diameter": _f(h.diameter),
-            "xi_cb": _f(h.xi_cb),
-        },
-        fins={"outlines": fin_outlines(d), "arrangement": cfg.fins.arrangement},
-        points={
-            "cb": (_f(h.xi_cb), 0.0),
-            "cg": (_f(af.mass.xi_cg), _f(af.mass.z_cg)),
-            "c": (_f(af.xi_c), _f(af.z_c)),
-        },
+        hull=HullDimensions(
+            a1=_f(h.a1),
+            a2=_f(h.a2),
+            b=_f(h.b),
+            length=_f(h.length),
+            diameter=_f(h.diameter),
+            xi_cb=_f(h.xi_cb),
+        ),
+        fins=FinView(outlines=tuple(fin_outlines(d)), arrangement=cfg.fins.arrangement),
+        points=KeyPoints(
+            cb=(_f(h.xi_cb), 0.0),
+            cg=(_f(af.mass.xi_cg), _f(af.mass.z_cg)),
+            c=(_f(af.xi_c), _f(af.z_c)),
+        ),
         confluence_lines=confluence_lines(d),
-        limits={
-            "blow_by_limit": float(req.blow_by_limit),
-            "design_wind": float(req.design_wind),
-            "min_safety_factor": float(req.min_tether_safety_factor),
-            "altitude": float(req.altitude),
-            "stall_deg": float(cfg.aero.fin_stall_angle_deg),
-        },
+        limits=DesignLimits(
+            blow_by_limit=float(req.blow_by_limit),
+            design_wind=float(req.design_wind),
+            min_safety_factor=float(req.min_tether_safety_factor),
+            altitude=float(req.altitude),
+            stall_deg=float(cfg.aero.fin_stall_angle_deg),
+        ),
         inputs=inputs_to_dict(req, cfg),
     )
 
@@ -431,7 +370,7 @@ def comparison_rows(designs: Mapping[str, Design]) -> list[dict[str, Any]]:
         [_f(d.airframe.mass.items["hull"]) for d in designs.values()])
     summaries = {n: d.summary() for n, d in designs.items()}
     for key, label, unit in SUMMARY_FIELDS:
-        add("result", label, unit, [summaries[n].get(key) for n in names])
+        add("result", label, unit, [getattr(summaries[n], key) for n in names])
     not_met = ["; ".join(d.violations) if d.violations else "none" for d in designs.values()]
     add("result", "Requirements not met", "", not_met)
     flats = {
@@ -528,8 +467,16 @@ def thesis_gui_cases() -> dict[str, dict[str, Any]]:
 
 __all__ = [
     "INPUT_FIELDS",
+    "DesignLimits",
     "DesignReport",
+    "FinView",
+    "HullDimensions",
+    "KeyPoints",
+    "MomentCurve",
+    "PerformanceCurves",
     "SUMMARY_FIELDS",
+    "TetherProfile",
+    "TetherProfiles",
     "case_designs",
     "cases_csv",
     "cases_rows",
@@ -544,5 +491,6 @@ __all__ = [
     "input_field_info",
     "performance_rows",
     "tether_profile_rows",
+    "tether_profiles",
     "thesis_gui_cases",
 ]

@@ -210,8 +210,8 @@ def bands_figure(mc: dict, rep: dict) -> go.Figure:
             col=col,
         )
         fig.add_scatter(
-            x=rep["perf"]["wind_speed"],
-            y=rep["perf"][perf],
+            x=rep.perf.wind_speed,
+            y=getattr(rep.perf, perf),
             name="design",
             line={"color": "black", "dash": "dot"},
             showlegend=col == 1,

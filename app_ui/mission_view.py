@@ -109,37 +109,37 @@ def _inputs(req, cfg) -> None:
 def render(d) -> None:
     """Draw the Mission tab of design ``d`` (an :class:`aerostat_core.Design`)."""
     m = d.mission
-    s = d.summary()
+    s = d.summary().mission  # the mission headline numbers (MissionSummary)
     req, cfg = d.requirement, d.configuration
     _inputs(req, cfg)
     c = st.columns(6)
     c[0].metric(
         "Ballonet [m³]",
-        _fmt(s["ballonet_volume_m3"]),
+        _fmt(s.ballonet_volume_m3),
         help="Ballonet volume from launch to operating altitude plus the superheat.",
     )
     c[1].metric(
         "Days to top-up",
-        _fmt(s["days_to_top_up"]),
+        _fmt(s.days_to_top_up),
         help="Days of helium permeation until the free lift falls to the required share.",
     )
     c[2].metric(
         f"He top-up, {req.deployment_days:g} d [m³]",
-        _fmt(s["helium_top_up_m3"]),
+        _fmt(s.helium_top_up_m3),
         help=f"Helium to replace what permeates out; cost {m.top_up_cost:,.0f} USD.",
     )
     c[3].metric(
         "Envelope stress margin",
-        _fmt(s["envelope_stress_margin"], 2),
+        _fmt(s.envelope_stress_margin, 2),
         help="Fabric strength / (safety factor × membrane load) − 1 at the design wind.",
     )
     c[4].metric(
         "Winch pull [N]",
-        _fmt(s["winch_pull_N"], 0),
+        _fmt(s.winch_pull_N, 0),
         help="Largest tether tension at the winch over the sweep and the survival wind.",
     )
     c[5].metric(
-        "Winch power [W]", _fmt(s["winch_power_W"], 0), help="Line pull × reel speed / efficiency."
+        "Winch power [W]", _fmt(s.winch_power_W, 0), help="Line pull × reel speed / efficiency."
     )
     surv = req.survival_wind
     if m.stay_up:

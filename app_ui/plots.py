@@ -1,5 +1,5 @@
-"""Plot and table builders: pure functions from the plain data of
-:func:`aerostat_core.report.design_report` to plotly figures and display-ready pandas frames (no
+"""Plot and table builders: pure functions from the typed report
+(:class:`~aerostat_core.report.DesignReport` of :func:`aerostat_core.report.design_report`) to plotly figures and display-ready pandas frames (no
 Streamlit; tested directly).
 
 Conventions: SI units in every axis title; operating-limit rows marked with red crosses (trace
@@ -20,7 +20,13 @@ from typing import Any
 import numpy as np
 import plotly.graph_objects as go
 
-from aerostat_core.report import hull_outline, hull_surface
+from aerostat_core.report import (
+    DesignReport,
+    TetherProfiles,
+    hull_outline,
+    hull_surface,
+    tether_profiles,
+)
 
 from . import formats
 from .tables import (  # noqa: F401 - the Design and Compare pages' tables, re-exported
@@ -40,7 +46,7 @@ from .theme import ACCENT, LIMIT_COLOUR, NEUTRAL, PALETTE, THIRD, base_layout
 
 LIMIT_TRACE = "operating limit exceeded"
 
-#: Performance quantities: key in rep["perf"] -> (title, axis label with unit).
+#: Performance quantities: field of rep.perf -> (title, axis label with unit).
 PERF_QUANTITIES: dict[str, tuple[str, str]] = {
     "blow_by": ("Blow-by (downwind offset)", "Blow-by [m]"),
     "alpha_eq": ("Equilibrium angle of attack", "α_eq [deg]"),
@@ -172,7 +178,7 @@ def _grid_triangles(n_rows: int, n_cols: int) -> tuple[list[int], list[int], lis
     )
 
 
-def hull_3d_figure(rep: Mapping[str, Any]) -> go.Figure:
+def hull_3d_figure(rep: DesignReport) -> go.Figure:
     """Interactive 3-D view: NPL hull (surface of revolution), fins, CB/CG/confluence point.
 
     Three WebGL traces only: the hull and the fins are one mesh (face colours), the three points
@@ -180,13 +186,13 @@ def hull_3d_figure(rep: Mapping[str, Any]) -> go.Figure:
     WebGL, SwiftShader) the time goes into setting up each trace, not into the vertices
     (benchmarks/bench_app.py: a 16x coarser surface saved little; 9 traces -> 3 about halved it).
     """
-    h = rep["hull"]
-    x, y, z = (np.asarray(a, float) for a in hull_surface(h["a1"], h["a2"], h["b"], shape=rep.get("shape", "npl")))
+    h = rep.hull
+    x, y, z = (np.asarray(a, float) for a in hull_surface(h.a1, h.a2, h.b, shape=rep.shape))
     n_rows, n_cols = x.shape
     vx, vy, vz = x.ravel().tolist(), y.ravel().tolist(), z.ravel().tolist()
     ii, jj, kk = _grid_triangles(n_rows, n_cols)
     colours = ["#a9bfdc"] * len(ii)
-    for outline in rep["fins"]["outlines"]:
+    for outline in rep.fins.outlines:
         p = np.asarray(outline)[:4]
         o = len(vx)
         vx += _l(p[:, 0])
@@ -212,7 +218,7 @@ def hull_3d_figure(rep: Mapping[str, Any]) -> go.Figure:
             lighting=dict(ambient=0.6, diffuse=0.6, specular=0.2),
         )
     ]
-    pts = [(rep["points"][key], label, colour) for key, label, _s, _sym, colour in _POINTS]
+    pts = [(getattr(rep.points, key), label, colour) for key, label, _s, _sym, colour in _POINTS]
     traces.append(
         dict(
             type="scatter3d",
@@ -228,7 +234,7 @@ def hull_3d_figure(rep: Mapping[str, Any]) -> go.Figure:
     )
     lx: list = []
     lz: list = []
-    for line in rep["confluence_lines"]:
+    for line in rep.confluence_lines:
         lx += [float(line[0, 0]), float(line[1, 0]), None]
         lz += [float(line[0, 1]), float(line[1, 1]), None]
     traces.append(
@@ -258,11 +264,11 @@ def hull_3d_figure(rep: Mapping[str, Any]) -> go.Figure:
     )
 
 
-def side_view_figure(rep: Mapping[str, Any]) -> go.Figure:
+def side_view_figure(rep: DesignReport) -> go.Figure:
     """Side view to scale: hull outline, fins, centre of buoyancy, centre of gravity,
     confluence point and (schematic) confluence lines; nose on the left, z up."""
-    h = rep["hull"]
-    xi, r = hull_outline(h["a1"], h["a2"], h["b"], shape=rep.get("shape", "npl"))
+    h = rep.hull
+    xi, r = hull_outline(h.a1, h.a2, h.b, shape=rep.shape)
     traces: list[dict] = [
         dict(
             type="scatter",
@@ -277,7 +283,7 @@ def side_view_figure(rep: Mapping[str, Any]) -> go.Figure:
         )
     ]
     first = True
-    for outline in rep["fins"]["outlines"]:
+    for outline in rep.fins.outlines:
         p = np.asarray(outline)
         if np.allclose(p[:, 2], 0.0, atol=1e-9):
             continue  # a horizontal fin is edge-on in the side view
@@ -297,7 +303,7 @@ def side_view_figure(rep: Mapping[str, Any]) -> go.Figure:
             )
         )
         first = False
-    for k, line in enumerate(rep["confluence_lines"]):
+    for k, line in enumerate(rep.confluence_lines):
         traces.append(
             dict(
                 type="scatter",
@@ -312,7 +318,7 @@ def side_view_figure(rep: Mapping[str, Any]) -> go.Figure:
             )
         )
     for key, label, short, symbol, colour in _POINTS:
-        x0, z0 = rep["points"][key]
+        x0, z0 = getattr(rep.points, key)
         traces.append(
             dict(
                 type="scatter",
@@ -337,10 +343,10 @@ def side_view_figure(rep: Mapping[str, Any]) -> go.Figure:
     )
 
 
-def mass_figure(rep: Mapping[str, Any]) -> go.Figure:
+def mass_figure(rep: DesignReport) -> go.Figure:
     """Horizontal bars of the mass breakdown [kg] (the total is in the title)."""
-    rows = [r for r in rep["mass_rows"] if r["item"] != "total"]
-    total = next(r["mass_kg"] for r in rep["mass_rows"] if r["item"] == "total")
+    rows = [r for r in rep.mass_rows if r["item"] != "total"]
+    total = next(r["mass_kg"] for r in rep.mass_rows if r["item"] == "total")
     items = [r["item"] for r in rows][::-1]
     masses = [float(r["mass_kg"]) for r in rows][::-1]
     shares = [float(r["share_pct"]) for r in rows][::-1]
@@ -370,11 +376,12 @@ def mass_figure(rep: Mapping[str, Any]) -> go.Figure:
 # --- performance ------------------------------------------------------------------------------
 
 
-def performance_figure(rep: Mapping[str, Any], key: str) -> go.Figure:
-    """One performance quantity versus wind speed, with limit markers and requirement lines."""
-    p, lim = rep["perf"], rep["limits"]
+def performance_figure(rep: DesignReport, key: str) -> go.Figure:
+    """One performance quantity (a field of ``rep.perf``) versus wind speed, with limit markers
+    and requirement lines."""
+    p, lim = rep.perf, rep.limits
     title, ylabel = PERF_QUANTITIES[key]
-    v, y = p["wind_speed"], p[key]
+    v, y = p.wind_speed, getattr(p, key)
     traces = [
         dict(
             type="scatter",
@@ -387,8 +394,8 @@ def performance_figure(rep: Mapping[str, Any], key: str) -> go.Figure:
             hovertemplate=perf_hover(key, ylabel.rsplit("[", 1)[-1].rstrip("]")),
         )
     ]
-    traces += _limit_trace(v, y, p["limited"], p["flag_text"])
-    lines = [dict(axis="x", value=lim["design_wind"], text="design wind", dash="dot")]
+    traces += _limit_trace(v, y, p.limited, p.flag_text)
+    lines = [dict(axis="x", value=lim.design_wind, text="design wind", dash="dot")]
     # horizontal limit line of this quantity, if it has one: (limit key, label format)
     limit_line = {
         "blow_by": ("blow_by_limit", "blow-by limit {:g} m"),
@@ -398,22 +405,27 @@ def performance_figure(rep: Mapping[str, Any], key: str) -> go.Figure:
     if limit_line is not None:
         name, label = limit_line
         lines.append(
-            dict(axis="y", value=lim[name], colour=LIMIT_COLOUR, text=label.format(lim[name]))
+            dict(
+                axis="y",
+                value=getattr(lim, name),
+                colour=LIMIT_COLOUR,
+                text=label.format(getattr(lim, name)),
+            )
         )
     return _figure(
         traces, title, lines=lines, height=360, xaxis=_axis(WIND_AXIS), yaxis=_axis(ylabel)
     )
 
 
-def tension_figure(rep: Mapping[str, Any]) -> go.Figure:
+def tension_figure(rep: DesignReport) -> go.Figure:
     """Tether tension at the top and at the winch [N] (left) and the safety factor (right)."""
-    p, lim = rep["perf"], rep["limits"]
-    v = p["wind_speed"]
+    p, lim = rep.perf, rep.limits
+    v = p.wind_speed
     traces = [
         dict(
             type="scatter",
             x=_l(v),
-            y=_l(p["tension_top"]),
+            y=_l(p.tension_top),
             mode="lines+markers",
             name="tension at the confluence point [N]",
             line=dict(color=ACCENT, width=2.5),
@@ -423,7 +435,7 @@ def tension_figure(rep: Mapping[str, Any]) -> go.Figure:
         dict(
             type="scatter",
             x=_l(v),
-            y=_l(p["tension_winch"]),
+            y=_l(p.tension_winch),
             mode="lines",
             name="tension at the winch [N]",
             line=dict(color=ACCENT, width=1.5, dash="dash"),
@@ -432,7 +444,7 @@ def tension_figure(rep: Mapping[str, Any]) -> go.Figure:
         dict(
             type="scatter",
             x=_l(v),
-            y=_l(p["safety_factor"]),
+            y=_l(p.safety_factor),
             mode="lines",
             name="safety factor [-]",
             yaxis="y2",
@@ -440,17 +452,17 @@ def tension_figure(rep: Mapping[str, Any]) -> go.Figure:
             hovertemplate=perf_hover("safety_factor", "-"),
         ),
     ]
-    traces += _limit_trace(v, p["tension_top"], p["limited"], p["flag_text"])
+    traces += _limit_trace(v, p.tension_top, p.limited, p.flag_text)
     lines = [
         dict(
             axis="y",
-            value=lim["min_safety_factor"],
+            value=lim.min_safety_factor,
             colour=THIRD,
             dash="dot",
             yref="y2",
-            text=f"required safety factor {lim['min_safety_factor']:g}",
+            text=f"required safety factor {lim.min_safety_factor:g}",
         ),
-        dict(axis="x", value=lim["design_wind"], text="design wind", dash="dot"),
+        dict(axis="x", value=lim.design_wind, text="design wind", dash="dot"),
     ]
     return _figure(
         traces,
@@ -471,11 +483,11 @@ def tension_figure(rep: Mapping[str, Any]) -> go.Figure:
     )
 
 
-def cm_figure(rep: Mapping[str, Any]) -> go.Figure:
+def cm_figure(rep: DesignReport) -> go.Figure:
     """Pitching-moment coefficient about the confluence point versus angle of attack."""
-    c = rep["cm"]
-    a, cm = np.asarray(c["alpha_deg"], float), np.asarray(c["cm"], float)
-    a_eq = float(c["alpha_eq_deg"])
+    c = rep.cm
+    a, cm = np.asarray(c.alpha_deg, float), np.asarray(c.cm, float)
+    a_eq = float(c.alpha_eq_deg)
     traces = [
         dict(
             type="scatter",
@@ -496,7 +508,7 @@ def cm_figure(rep: Mapping[str, Any]) -> go.Figure:
     ]
     return _figure(
         traces,
-        f"Pitching moment C_m at {c['wind']:g} m/s",
+        f"Pitching moment C_m at {c.wind:g} m/s",
         lines=[dict(axis="y", value=0.0, dash="solid")],
         height=360,
         xaxis=_axis("Angle of attack α [deg]"),
@@ -533,34 +545,34 @@ def _line(x: Any, y: Any, name: str, colour: str, **kw: Any) -> dict:
     )
 
 
-def tether_speeds(tether: Mapping[str, Any]) -> list[float]:
+def tether_speeds(tether: TetherProfiles | Mapping[str, Any]) -> list[float]:
     """Speeds with a tether profile [m/s]: the sweep's, and the design wind (its own profile,
-    also when the sweep steps over it)."""
-    speeds = {float(v) for v in tether["wind_speed"]}
-    design = tether.get("design")
-    if design is not None:
-        speeds.add(float(design["wind"]))
+    also when the sweep steps over it). ``tether`` is ``rep.tether`` (or its plain dict)."""
+    t = tether_profiles(tether)
+    speeds = {float(v) for v in t.wind_speed}
+    if t.design is not None:
+        speeds.add(float(t.design.wind))
     return sorted(speeds)
 
 
-def default_profile_speeds(tether: Mapping[str, Any], n: int = 5) -> list[float]:
+def default_profile_speeds(tether: TetherProfiles | Mapping[str, Any], n: int = 5) -> list[float]:
     """:func:`default_tether_speeds` of the sweep, plus the design wind."""
-    chosen = set(default_tether_speeds([float(v) for v in tether["wind_speed"]], n))
-    design = tether.get("design")
-    if design is not None and float(design["wind"]) > 0:
-        chosen.add(float(design["wind"]))
+    t = tether_profiles(tether)
+    chosen = set(default_tether_speeds([float(v) for v in t.wind_speed], n))
+    if t.design is not None and float(t.design.wind) > 0:
+        chosen.add(float(t.design.wind))
     return sorted(chosen)
 
 
-def _profile_at(tether: Mapping[str, Any], speed: float) -> tuple[np.ndarray, np.ndarray, float]:
+def _profile_at(tether: TetherProfiles, speed: float) -> tuple[np.ndarray, np.ndarray, float]:
     """Tether profile (x, z) [m] at the sweep speed nearest ``speed`` (or the design wind's own
     profile when ``speed`` is the design wind), and that speed [m/s]."""
-    design = tether.get("design")
-    if design is not None and abs(float(speed) - float(design["wind"])) < 1e-9:
-        return np.asarray(design["x"]), np.asarray(design["z"]), float(design["wind"])
-    ws = np.asarray(tether["wind_speed"], float)
+    design = tether.design
+    if design is not None and abs(float(speed) - float(design.wind)) < 1e-9:
+        return np.asarray(design.x), np.asarray(design.z), float(design.wind)
+    ws = np.asarray(tether.wind_speed, float)
     j = int(np.argmin(np.abs(ws - speed)))
-    return np.asarray(tether["x"])[:, j], np.asarray(tether["z"])[:, j], float(ws[j])
+    return np.asarray(tether.x)[:, j], np.asarray(tether.z)[:, j], float(ws[j])
 
 
 def _winch_trace(label: bool) -> dict:
@@ -591,10 +603,10 @@ def _to_scale_figure(traces: list[dict], title: str, **kw: Any) -> go.Figure:
     )
 
 
-def tether_figure(rep: Mapping[str, Any], speeds: Sequence[float] | None = None) -> go.Figure:
+def tether_figure(rep: DesignReport, speeds: Sequence[float] | None = None) -> go.Figure:
     """Tether profiles for several wind speeds, to scale, with the winch and the aerostat."""
-    t, lim = rep["tether"], rep["limits"]
-    ws = np.asarray(t["wind_speed"], float)
+    t, lim = rep.tether, rep.limits
+    ws = np.asarray(t.wind_speed, float)
     speeds = default_tether_speeds(ws) if speeds is None else list(speeds)
     traces: list[dict] = []
     tops_x, tops_z, tops_t = [], [], []
@@ -626,9 +638,9 @@ def tether_figure(rep: Mapping[str, Any], speeds: Sequence[float] | None = None)
     lines = [
         dict(
             axis="x",
-            value=lim["blow_by_limit"],
+            value=lim.blow_by_limit,
             colour=LIMIT_COLOUR,
-            text=f"blow-by limit {lim['blow_by_limit']:g} m",
+            text=f"blow-by limit {lim.blow_by_limit:g} m",
         )
     ]
     return _to_scale_figure(
@@ -648,23 +660,22 @@ def plain_label(text: str) -> str:
     return html.escape(str(text), quote=False)
 
 
-def compare_performance_figure(reps: Mapping[str, Mapping[str, Any]], key: str) -> go.Figure:
+def compare_performance_figure(reps: Mapping[str, DesignReport], key: str) -> go.Figure:
     """One performance quantity versus wind speed, one line per case (limit rows marked)."""
     title, ylabel = PERF_QUANTITIES[key]
     traces: list[dict] = []
     for k, (case, rep) in enumerate(reps.items()):
         name = plain_label(case)
-        p = rep["perf"]
+        p = rep.perf
         colour = PALETTE[k % len(PALETTE)]
         hover = perf_hover(key, ylabel.rsplit("[", 1)[-1].rstrip("]"))
-        traces.append(
-            _line(p["wind_speed"], p[key], name, colour, legendgroup=name, hovertemplate=hover)
-        )
+        y = getattr(p, key)
+        traces.append(_line(p.wind_speed, y, name, colour, legendgroup=name, hovertemplate=hover))
         traces += _limit_trace(
-            p["wind_speed"],
-            p[key],
-            p["limited"],
-            p["flag_text"],
+            p.wind_speed,
+            y,
+            p.limited,
+            p.flag_text,
             name=f"{name}: {LIMIT_TRACE}",
             legendgroup=name,
             showlegend=False,
@@ -673,12 +684,12 @@ def compare_performance_figure(reps: Mapping[str, Mapping[str, Any]], key: str) 
     return _figure(traces, title, height=360, xaxis=_axis(WIND_AXIS), yaxis=_axis(ylabel))
 
 
-def compare_tether_figure(reps: Mapping[str, Mapping[str, Any]], wind: float) -> go.Figure:
+def compare_tether_figure(reps: Mapping[str, DesignReport], wind: float) -> go.Figure:
     """Tether profiles of every case at the sweep speed nearest ``wind``, to scale."""
     traces: list[dict] = []
     for k, (case, rep) in enumerate(reps.items()):
         name = plain_label(case)
-        x, z, w = _profile_at(rep["tether"], wind)
+        x, z, w = _profile_at(rep.tether, wind)
         colour = PALETTE[k % len(PALETTE)]
         top = int(np.argmax(z))
         traces.append(_line(x, z, f"{name} ({w:g} m/s)", colour, legendgroup=name))

@@ -12,18 +12,16 @@ carries its coordinates (``data-xi``, ``data-z`` in metres), so a test reads bac
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping
 from html import escape
-from typing import Any
 
 import numpy as np
 
-from aerostat_core.report import hull_outline
+from aerostat_core.report import DesignReport, hull_outline
 
 from . import formats
 from .theme import ACCENT, FONT, LIMIT_COLOUR, NEUTRAL, THIRD
 
-#: Marked points: key in rep["points"], label, short name, colour.
+#: Marked points: field of rep.points, label, short name, colour.
 POINTS = (
     ("cb", "centre of buoyancy (CB)", "CB", THIRD),
     ("cg", "centre of gravity (CG)", "CG", "#000000"),
@@ -40,20 +38,17 @@ def _nice_step(span: float, target: int = 8) -> float:
     return next(m * k for m in (1, 2, 5, 10) if m * k >= raw)
 
 
-def side_view_svg(rep: Mapping[str, Any]) -> str:
+def side_view_svg(rep: DesignReport) -> str:
     """Side view to scale (nose left, z up): hull outline, fins, confluence lines, CB, CG and
     the confluence point, a station axis in metres. Returns the SVG markup."""
-    h = rep["hull"]
-    xi, r = (
-        np.asarray(a, float)
-        for a in hull_outline(h["a1"], h["a2"], h["b"], shape=rep.get("shape", "npl"))
-    )
+    h = rep.hull
+    xi, r = (np.asarray(a, float) for a in hull_outline(h.a1, h.a2, h.b, shape=rep.shape))
     hull_x = np.concatenate([xi, xi[::-1]])
     hull_z = np.concatenate([r, -r[::-1]])
-    fins = [np.asarray(o, float) for o in rep["fins"]["outlines"]]
+    fins = [np.asarray(o, float) for o in rep.fins.outlines]
     fins = [p for p in fins if not np.allclose(p[:, 2], 0.0, atol=1e-9)]  # edge-on fins
-    lines = [np.asarray(ln, float) for ln in rep["confluence_lines"]]
-    pts = {k: tuple(float(v) for v in rep["points"][k]) for k, *_ in POINTS}
+    lines = [np.asarray(ln, float) for ln in rep.confluence_lines]
+    pts = {k: tuple(float(v) for v in getattr(rep.points, k)) for k, *_ in POINTS}
     xs = np.concatenate([hull_x, *[p[:, 0] for p in fins], *[ln[:, 0] for ln in lines]])
     zs = np.concatenate([hull_z, *[p[:, 2] for p in fins], *[ln[:, 1] for ln in lines]])
     x0, x1 = float(xs.min()), float(xs.max())

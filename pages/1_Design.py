@@ -8,7 +8,7 @@ import streamlit as st
 
 from aerostat_core import thesis_baseline
 from aerostat_core.io import design_to_json
-from aerostat_core.report import tether_profile_rows
+from aerostat_core.report import DesignReport, tether_profile_rows
 from app_ui import (
     cache,
     envelope_view,
@@ -77,7 +77,7 @@ TABS = ("Geometry", "3-D view", "Mass", "Performance", "Tether profiles", "Missi
 TAB_KEY = "design_tab"
 
 
-def _geometry_tab(rep: dict) -> None:
+def _geometry_tab(rep: DesignReport) -> None:
     # Static drawing and table on the first tab: a plotly chart or a data grid here pulled
     # 5 MB of JavaScript into a fresh browser before the first result (the interactive side
     # view is a toggle away).
@@ -90,15 +90,15 @@ def _geometry_tab(rep: dict) -> None:
         st.plotly_chart(plots.side_view_figure(rep), key="side_view")
     g1, g2 = st.container(), st.container()
     with g1:
-        st.table(plots.geometry_styler(geometry_frame(rep["geometry_rows"])).hide(axis="index"))
+        st.table(plots.geometry_styler(geometry_frame(rep.geometry_rows)).hide(axis="index"))
     with g2:
         st.markdown(
             "**Reading the geometry.** ξ is measured from the nose, aft positive; z is up. "
-            + shapes_view.geometry_note(rep.get("shape", "npl"))
+            + shapes_view.geometry_note(rep.shape)
         )
         st.download_button(
             "Geometry table (CSV)",
-            data=cache.csv_bytes(rep["geometry_rows"]),
+            data=cache.csv_bytes(rep.geometry_rows),
             file_name="geometry.csv",
             mime="text/csv",
             on_click="ignore",
@@ -109,14 +109,14 @@ def _geometry_tab(rep: dict) -> None:
     shapes_view.export_panel(state.current_inputs_key())
 
 
-def _mass_tab(rep: dict) -> None:
+def _mass_tab(rep: DesignReport) -> None:
     # One above the other: beside the chart the table was 150 px wide at 1024 px and scrolled.
     m1, m2 = st.container(), st.container()
     with m1:
-        st.table(mass_styler(mass_frame(rep["mass_rows"])))  # static: no grid bundle to load
+        st.table(mass_styler(mass_frame(rep.mass_rows)))  # static: no grid bundle to load
         st.download_button(
             "Mass table (CSV)",
-            data=cache.csv_bytes(rep["mass_rows"]),
+            data=cache.csv_bytes(rep.mass_rows),
             file_name="mass.csv",
             mime="text/csv",
             on_click="ignore",
@@ -127,8 +127,8 @@ def _mass_tab(rep: dict) -> None:
         st.plotly_chart(plots.mass_figure(rep), key="mass_chart")
 
 
-def _performance_tab(rep: dict) -> None:
-    pdf = performance_frame(rep["performance_rows"])
+def _performance_tab(rep: DesignReport) -> None:
+    pdf = performance_frame(rep.performance_rows)
     # Three static tables by theme, headers that wrap: one grid of 15 columns scrolled sideways
     # at 1024 px (the result column is under 400 px wide there).
     for title, columns in PERF_TABLES.items():
@@ -139,7 +139,7 @@ def _performance_tab(rep: dict) -> None:
     st.caption("Rows with a red background break an operating limit (last column says which).")
     st.download_button(
         "Performance table (CSV)",
-        data=cache.csv_bytes(rep["performance_rows"]),
+        data=cache.csv_bytes(rep.performance_rows),
         file_name="performance.csv",
         mime="text/csv",
         on_click="ignore",
@@ -160,11 +160,11 @@ def _performance_tab(rep: dict) -> None:
     )
 
 
-def _tether_tab(rep: dict) -> None:
+def _tether_tab(rep: DesignReport) -> None:
     @st.fragment
     def _tether_panel() -> None:
-        speeds = plots.tether_speeds(rep["tether"])  # the sweep and the design wind
-        default = plots.default_profile_speeds(rep["tether"])
+        speeds = plots.tether_speeds(rep.tether)  # the sweep and the design wind
+        default = plots.default_profile_speeds(rep.tether)
         chosen = st.multiselect(
             "Wind speeds to show [m/s]",
             speeds,
@@ -176,14 +176,14 @@ def _tether_tab(rep: dict) -> None:
         st.plotly_chart(plots.tether_figure(rep, sorted(chosen) or default), key="tether_plot")
 
     _tether_panel()
-    s = rep["summary"]
+    m = rep.summary.mission
     st.caption(
-        f"Winch: line pull {s['winch_pull_N']:,.0f} N (largest winch tension, survival wind "
-        f"included), motor {s['winch_power_W']:,.0f} W; drum and reel-in time on the Mission tab."
+        f"Winch: line pull {m.winch_pull_N:,.0f} N (largest winch tension, survival wind "
+        f"included), motor {m.winch_power_W:,.0f} W; drum and reel-in time on the Mission tab."
     )
     st.download_button(
         "Tether profiles (CSV)",
-        data=lambda: cache.csv_bytes(tether_profile_rows(rep["tether"])),
+        data=lambda: cache.csv_bytes(tether_profile_rows(rep.tether)),
         file_name="tether-profiles.csv",
         mime="text/csv",
         on_click="ignore",
@@ -241,23 +241,23 @@ with col_out:
             f"The design could not be evaluated with these inputs: {exc}", icon=":material/error:"
         )
         st.stop()
-    s, lim = rep["summary"], rep["limits"]
+    s, lim = rep.summary, rep.limits
     # After a rejected submit the form holds values that were not applied: say whose results
     # these are, so "meets every requirement" is never read as a verdict on the rejected values.
     stale = bool(st.session_state.get(form_model.ERROR_KEY))
 
     st.subheader("Result", anchor=False)
-    rules = form_model.RULE_SETS[rep["inputs"]["requirement"]["rules"]]
+    rules = form_model.RULE_SETS[rep.inputs["requirement"]["rules"]]
     st.caption(
         f"Rule set: **{rules.name}** ({rules.title}). "
-        + (f"Sized by: {s['binding_constraint'].replace('_', ' ')}." if rep["sized"] else "")
+        + (f"Sized by: {s.binding_constraint.replace('_', ' ')}." if rep.sized else "")
     )
     with st.expander(
         "Constraint table: every limit, its margin and where it is checked", icon=":material/rule:"
     ):
         # static, cells that wrap: a data grid here loaded 1 MB of JavaScript before the first
         # result, and scrolled sideways at 1024 px
-        st.table(constraint_styler(pd.DataFrame(text.constraint_table_rows(rep["constraints"]))))
+        st.table(constraint_styler(pd.DataFrame(text.constraint_table_rows(rep.constraints))))
     if stale:
         st.warning(
             "These results are for the last valid inputs: your latest change was not applied "
@@ -267,62 +267,62 @@ with col_out:
     c = show.metric_row(5)
     c[0].metric(
         "Volume [m³]",
-        _fmt(s["volume_m3"], "volume"),
+        _fmt(s.volume_m3, "volume"),
         help="Hull volume. Sized: the smallest hull meeting the blow-by limit with positive "
         "free lift."
-        if rep["sized"]
+        if rep.sized
         else "Hull volume, given in the inputs.",
-        delta="sized" if rep["sized"] else "given",
+        delta="sized" if rep.sized else "given",
         delta_color="off",
         delta_arrow="off",
     )
-    c[1].metric("Length [m]", _fmt(s["length_m"], "length"), help="Hull length l.")
-    c[2].metric("Diameter [m]", _fmt(s["diameter_m"], "diameter"), help="Maximum hull diameter d.")
+    c[1].metric("Length [m]", _fmt(s.length_m, "length"), help="Hull length l.")
+    c[2].metric("Diameter [m]", _fmt(s.diameter_m, "diameter"), help="Maximum hull diameter d.")
     c[3].metric(
         "Total mass [kg]",
-        _fmt(s["total_mass_kg"], "total_mass"),
+        _fmt(s.total_mass_kg, "total_mass"),
         help="Hull, fins, lifting gas, miscellaneous, payload and tether.",
     )
     c[4].metric(
         "Free lift [kg]",
-        _fmt(s["free_lift_kg"], "free_lift"),
+        _fmt(s.free_lift_kg, "free_lift"),
         help="Gross buoyancy minus total weight, in kilograms "
-        f"({s['percent_static_lift']:.0f} % of the gross buoyancy).",
+        f"({s.percent_static_lift:.0f} % of the gross buoyancy).",
     )
-    st.caption(f"At the design wind, {lim['design_wind']:g} m/s:")
+    st.caption(f"At the design wind, {lim.design_wind:g} m/s:")
     c = show.metric_row(5)
-    bb = s["blow_by_at_design_wind_m"]
+    bb = s.blow_by_at_design_wind_m
     c[0].metric(
         "Blow-by [m]",
         _fmt(bb, "blow_by"),
-        delta=f"{text.signed(bb - lim['blow_by_limit'], formats.decimals('blow_by'))} m",
+        delta=f"{text.signed(bb - lim.blow_by_limit, formats.decimals('blow_by'))} m",
         delta_color="inverse",
         help=f"Downwind offset of the confluence point from the winch; limit "
-        f"{lim['blow_by_limit']:g} m (the delta is blow-by minus limit).",
+        f"{lim.blow_by_limit:g} m (the delta is blow-by minus limit).",
     )
     c[1].metric(
         "α_eq [deg]",
-        _fmt(s["alpha_at_design_wind_deg"], "alpha_eq"),
+        _fmt(s.alpha_at_design_wind_deg, "alpha_eq"),
         help="Equilibrium angle of attack (moment balance about the confluence point).",
     )
     c[2].metric(
         "Tension [N]",
-        _fmt(s["tension_top_at_design_wind_N"], "tension"),
+        _fmt(s.tension_top_at_design_wind_N, "tension"),
         help="Tether tension at the confluence point.",
     )
-    sf = s["safety_factor_at_design_wind"]
+    sf = s.safety_factor_at_design_wind
     c[3].metric(
         "Safety factor [-]",
         _fmt(sf, "safety_factor"),
-        delta=text.signed(sf - lim["min_safety_factor"], formats.decimals("safety_factor")),
+        delta=text.signed(sf - lim.min_safety_factor, formats.decimals("safety_factor")),
         help="Breaking strength of the tether / largest tension along the tether; required "
-        f"{lim['min_safety_factor']:g} (the delta is the margin).",
+        f"{lim.min_safety_factor:g} (the delta is the margin).",
     )
     c[4].metric(
-        "Gas cost [USD]", _fmt(s["gas_cost_USD"], "gas_cost"), help="Hull volume × gas price."
+        "Gas cost [USD]", _fmt(s.gas_cost_USD, "gas_cost"), help="Hull volume × gas price."
     )
 
-    if rep["feasible"]:
+    if rep.feasible:
         st.success(
             ("The last valid inputs meet" if stale else "Meets")
             + " every requirement at the design wind.",
@@ -330,15 +330,15 @@ with col_out:
         )
     else:
         st.error(
-            "**Requirements not met:**\n" + "\n".join(f"- {v}" for v in rep["violations"]),
+            "**Requirements not met:**\n" + "\n".join(f"- {v}" for v in rep.violations),
             icon=":material/error:",
         )
-    p = rep["perf"]
-    lim_speeds = [float(v) for v, flag in zip(p["wind_speed"], p["limited"]) if flag]
+    p = rep.perf
+    lim_speeds = [float(v) for v, flag in zip(p.wind_speed, p.limited) if flag]
     if lim_speeds:
         st.warning(
             f"Operating limits exceeded in the sweep at "
-            f"{text.speed_ranges(lim_speeds, rep['inputs']['requirement']['wind_step'])} m/s "
+            f"{text.speed_ranges(lim_speeds, rep.inputs['requirement']['wind_step'])} m/s "
             "(marked in red in the table and plots).",
             icon=":material/warning:",
         )

@@ -257,8 +257,8 @@ with tab_perf:
 
 with tab_tether:
     if tab_tether.open and reports:
-        speeds = sorted({float(v) for r in reports.values() for v in r["tether"]["wind_speed"]})
-        design_winds = {r["limits"]["design_wind"] for r in reports.values()}
+        speeds = sorted({float(v) for r in reports.values() for v in r.tether.wind_speed})
+        design_winds = {r.limits.design_wind for r in reports.values()}
         default = next(iter(design_winds)) if len(design_winds) == 1 else max(speeds)
         default = min(speeds, key=lambda v: abs(v - default))
         wind = st.select_slider(

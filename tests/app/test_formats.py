@@ -63,13 +63,13 @@ def test_same_quantity_same_decimals_on_design_optimise_and_in_the_tables(thesis
     from aerostat_core.report import design_report
 
     rep = design_report(design(*thesis_baseline()))
-    df = tables.performance_frame(rep["performance_rows"])
+    df = tables.performance_frame(rep.performance_rows)
     forces = tables.PERF_TABLES["Forces and stability"]
     for cell in _styled_cells(tables.performance_styler(df, forces), "α_eq [deg]"):
         assert _decimals(cell) == formats.decimals("alpha_eq"), cell
-    geo = tables.geometry_styler(tables.geometry_frame(rep["geometry_rows"]))
-    volume_row = [r for r in rep["geometry_rows"]].index(
-        next(r for r in rep["geometry_rows"] if r["quantity"] == "Hull volume")
+    geo = tables.geometry_styler(tables.geometry_frame(rep.geometry_rows))
+    volume_row = [r for r in rep.geometry_rows].index(
+        next(r for r in rep.geometry_rows if r["quantity"] == "Hull volume")
     )
     assert _styled_cells(geo, "Value")[volume_row] == shown["volume"]
     # the hover text of a Design figure

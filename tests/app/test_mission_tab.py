@@ -46,7 +46,7 @@ def test_mission_form_writes_the_inputs_and_resizes(at):
     assert float(after.airframe.mass.items["battery"]) > 0
     # the thesis baseline keeps its given volume: the battery eats into the free lift instead
     assert after.free_lift < before.free_lift
-    assert metric(at, "Days to top-up") in {f"{after.summary()['days_to_top_up']:,.1f}", "never"}
+    assert metric(at, "Days to top-up") in {f"{after.summary().mission.days_to_top_up:,.1f}", "never"}
 
 
 def test_ballonet_hint_where_the_500_m_rule_calls_for_one(at):

@@ -240,7 +240,7 @@ def test_tether_figure_is_to_scale_and_marks_winch_and_aerostat(rep):
     assert names[:2] == ["5 m/s", "10 m/s"]
     assert "winch" in names and "aerostat (confluence point)" in names
     tops = next(t for t in fig.data if t.name == "aerostat (confluence point)")
-    np.testing.assert_allclose(tops.x, rep["perf"]["blow_by"][[5, 10]], rtol=1e-6)
+    np.testing.assert_allclose(tops.x, rep.perf.blow_by[[5, 10]], rtol=1e-6)
 
 
 def test_limit_markers_only_on_limited_rows():
@@ -248,7 +248,7 @@ def test_limit_markers_only_on_limited_rows():
     r = design_report(design(replace(req, min_tether_safety_factor=15.0), cfg))
     fig = plots.performance_figure(r, "blow_by")
     marks = next(t for t in fig.data if t.name == plots.LIMIT_TRACE)
-    np.testing.assert_allclose(marks.x, r["perf"]["wind_speed"][r["perf"]["limited"]])
+    np.testing.assert_allclose(marks.x, r.perf.wind_speed[r.perf.limited])
     clean = plots.performance_figure(
         design_report(design(replace(req, blow_by_limit=100.0), cfg)), "alpha_eq"
     )
@@ -263,11 +263,11 @@ def test_default_tether_speeds():
 def test_performance_table_highlights_limited_rows():
     req, cfg = thesis_baseline()
     r = design_report(design(replace(req, min_tether_safety_factor=15.0), cfg))
-    df = plots.performance_frame(r["performance_rows"])
+    df = plots.performance_frame(r.performance_rows)
     assert "Blow-by [m]" in df and "Safety factor [-]" in df
     assert not (np.signbit(df["Blow-by [m]"]) & (df["Blow-by [m]"] == 0)).any()  # no -0.0
     styles = plots.performance_styler(df)._compute().ctx
-    limited = r["perf"]["limited"]
+    limited = r.perf.limited
     for i, lim in enumerate(limited):
         has = any(
             "fde2e2" in v
@@ -415,19 +415,19 @@ def test_wind_lists_collapse_into_ranges():
 def test_tether_speeds_include_the_design_wind():
     req, cfg = thesis_baseline()
     rep = design_report(design(replace(req, wind_step=2.0, design_wind=15.0), cfg))
-    assert 15.0 not in [float(v) for v in rep["tether"]["wind_speed"]]  # the sweep skips it
-    assert 15.0 in plots.tether_speeds(rep["tether"])
-    assert 15.0 in plots.default_profile_speeds(rep["tether"])
+    assert 15.0 not in [float(v) for v in rep.tether.wind_speed]  # the sweep skips it
+    assert 15.0 in plots.tether_speeds(rep.tether)
+    assert 15.0 in plots.default_profile_speeds(rep.tether)
     fig = plots.tether_figure(rep, [14.0, 15.0])
     names = [t.name for t in fig.data]
     assert "15 m/s" in names and "14 m/s" in names
     x15 = np.asarray(next(t for t in fig.data if t.name == "15 m/s").x)
-    assert np.allclose(x15, rep["tether"]["design"]["x"])
-    assert max(x15) == pytest.approx(rep["summary"]["blow_by_at_design_wind_m"], abs=0.05)
+    assert np.allclose(x15, rep.tether.design.x)
+    assert max(x15) == pytest.approx(rep.summary.blow_by_at_design_wind_m, abs=0.05)
 
 
 def test_geometry_counts_are_integers_and_volume_matches_the_metric(rep):
-    html = plots.geometry_styler(plots.geometry_frame(rep["geometry_rows"])).to_html()
+    html = plots.geometry_styler(plots.geometry_frame(rep.geometry_rows)).to_html()
     import re
 
     assert re.search(r"Number of fins</td>\s*<td[^>]*>4</td>", html)

@@ -38,7 +38,7 @@ def test_sized_hull_is_the_smallest_meeting_every_constraint(payload, altitude) 
     d = design(Requirement(payload_mass=payload, altitude=altitude))
     assert d.feasible, d.violations
     assert d.requirement.rules == "practice"
-    binding = d.summary()["binding_constraint"]
+    binding = d.summary().binding_constraint
     assert binding in NAMES
     cfg = practice_configuration(volume=d.volume * 0.997)
     smaller = design(d.requirement, cfg)

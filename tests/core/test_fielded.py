@@ -47,7 +47,7 @@ def test_practice_fabric_is_the_least_squares_fit_on_the_fit_set() -> None:
         cfg = practice_configuration_for(gsm)
         assert cfg.hull.fineness_ratio == PRACTICE_FINENESS_RATIO
         e = [np.log(design(Requirement(payload_mass=s.payload_mass, altitude=s.altitude),
-                           cfg).summary()["length_m"] / s.length) for s in FIELDED if s.fit]
+                           cfg).summary().length_m / s.length) for s in FIELDED if s.fit]
         return float(np.sqrt(np.mean(np.square(e))))
 
     scan = np.arange(0.20, 0.2401, 0.005)
@@ -61,5 +61,5 @@ def test_old_absolute_limit_would_oversize(harness) -> None:
     s = FIELDED[0]
     old = design(Requirement(payload_mass=s.payload_mass, altitude=s.altitude,
                              blow_by_limit=30.0, design_wind=15.0))
-    assert old.summary()["length_m"] > 1.8 * s.length
+    assert old.summary().length_m > 1.8 * s.length
     assert abs(harness.rows[0].length_error) < 0.25

@@ -108,24 +108,24 @@ def test_confluence_lines_join_the_point_to_the_hull_belly(baseline):
 
 def test_design_report_holds_the_engine_numbers(baseline):
     rep = design_report(baseline)
-    assert rep["summary"] == baseline.summary()
-    assert rep["violations"] == list(baseline.violations)
-    assert rep["feasible"] is bool(baseline.feasible)
-    np.testing.assert_allclose(rep["perf"]["blow_by"], baseline.performance.blow_by)
-    np.testing.assert_array_equal(rep["perf"]["limited"], baseline.performance.limited)
-    assert rep["tether"]["x"].shape == baseline.tether_x.shape
-    assert rep["points"]["c"] == (
+    assert rep.summary == baseline.summary()
+    assert rep.violations == tuple(baseline.violations)
+    assert rep.feasible is bool(baseline.feasible)
+    np.testing.assert_allclose(rep.perf.blow_by, baseline.performance.blow_by)
+    np.testing.assert_array_equal(rep.perf.limited, baseline.performance.limited)
+    assert rep.tether.x.shape == baseline.tether_x.shape
+    assert rep.points.c == (
         pytest.approx(float(baseline.airframe.xi_c)),
         pytest.approx(float(baseline.airframe.z_c)),
     )
-    assert rep["limits"]["blow_by_limit"] == baseline.requirement.blow_by_limit
-    assert inputs_from_dict(rep["inputs"]) == (baseline.requirement, baseline.configuration)
+    assert rep.limits.blow_by_limit == baseline.requirement.blow_by_limit
+    assert inputs_from_dict(rep.inputs) == (baseline.requirement, baseline.configuration)
     # the design-wind tether profile ends at the design-point blow-by, starting at the winch
-    prof = rep["tether"]["design"]
-    assert prof["wind"] == baseline.requirement.design_wind
-    top = int(np.argmax(prof["z"]))
-    assert prof["x"][top] == pytest.approx(baseline.design_point["blow_by_m"], rel=1e-6)
-    assert min(prof["z"]) == pytest.approx(0.0, abs=1e-9)
+    prof = rep.tether.design
+    assert prof.wind == baseline.requirement.design_wind
+    top = int(np.argmax(prof.z))
+    assert prof.x[top] == pytest.approx(baseline.design_point["blow_by_m"], rel=1e-6)
+    assert min(prof.z) == pytest.approx(0.0, abs=1e-9)
 
 
 def test_performance_rows_flag_the_limited_rows():
@@ -143,7 +143,8 @@ def test_performance_rows_flag_the_limited_rows():
 
 def test_tether_profile_rows_are_tidy(baseline):
     rep = design_report(baseline)
-    rows = tether_profile_rows(rep["tether"])
+    rows = tether_profile_rows(rep.tether)
+    assert tether_profile_rows(rep.tether.to_dict()) == rows  # a plain dict, as before typing
     n_nodes, n_winds = baseline.tether_x.shape
     assert len(rows) == n_nodes * n_winds
     assert set(rows[0]) == {"wind_speed_m_s", "node", "x_downwind_m", "z_height_m"}
@@ -256,5 +257,5 @@ def test_empty_cases_give_an_empty_csv():
 def test_report_numbers_are_finite(baseline):
     rep = design_report(baseline)
     for key in ("blow_by", "alpha_eq", "tension_top", "safety_factor"):
-        assert np.all(np.isfinite(rep["perf"][key])), key
-    assert all(math.isfinite(v) for v in rep["hull"].values())
+        assert np.all(np.isfinite(getattr(rep.perf, key))), key
+    assert all(math.isfinite(v) for v in rep.hull.to_dict().values())
