@@ -36,8 +36,11 @@ Shapes (``SHAPES``):
 
   Other original shapes: Wang et al. (2009) (GA-optimised); Zhiyuan-1, Wang & Shan (2006), Wang
   et al. (2010); Lotte, Lutz et al., University of Stuttgart solar airship. None of these papers
-  was seen either: no volume or surface-area coefficient published for them was found, so the
-  tests check the fits against the two public tables (C_p, m, l/d) and the closed forms.
+  was seen either, and no volume or surface-area coefficient published for GNVR, Wang or
+  Zhiyuan-1 was found. The tests check those fits against the two public tables (C_p, m, l/d)
+  and the closed forms. For Lotte, the published envelope (16 m long, 4 m diameter, 109 m3;
+  German Wikipedia "LOTTE (Luftschiff)", docs/methods.md S21) gives V/l^3 = 0.02661. The fit
+  at its l/d 3.9019 gives 0.02667 (+0.22 %, tests/core/test_shape_sources.py).
 * ``sphere``: f = 1. ``oblate``: oblate spheroid of revolution about the wind axis, f < 1 (the
   spheroid family below the sphere; a pumpkin-shaped balloon flattened vertically is not a body
   of revolution about x and is outside this model).

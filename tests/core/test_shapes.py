@@ -176,9 +176,10 @@ def _spheroid_area(a, b):
 
 
 #: Per shape, the coefficients the tests hold it to, and where each number comes from. No
-#: published surface coefficient S/V^(2/3) or volume coefficient V/l^3 was found for GNVR, Wang,
-#: Zhiyuan-1 or Lotte (their papers were not seen); for them the published figures held are the
-#: tabulated C_p and l/d (S7 and the second public table above, both second-hand).
+#: published surface coefficient S/V^(2/3) or volume coefficient V/l^3 was found for GNVR, Wang
+#: or Zhiyuan-1 (their papers were not seen). For them the published figures held are the
+#: tabulated C_p and l/d (S7 and the second public table above, both second-hand). Lotte's
+#: published envelope dimensions (S21) are held in test_shape_sources.py.
 PUBLISHED_COEFFICIENTS = [
     # shape, l/d, coefficient, value, tolerance (rel), source
     ("sphere", 1.0, "S/V^(2/3)", (36 * math.pi) ** (1 / 3), 1e-9, "closed form 4 pi r^2"),
