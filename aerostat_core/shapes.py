@@ -44,9 +44,10 @@ Shapes (``SHAPES``):
   et al. (2010); Lotte, Lutz et al., University of Stuttgart solar airship. None of these papers
   was seen either, and no volume or surface-area coefficient published for GNVR, Wang or
   Zhiyuan-1 was found. The tests check the fits against the two public tables (C_p, m, l/d),
-  and GNVR's pieces against their closed forms. For Lotte, the published envelope (16 m long, 4 m diameter, 109 m3;
-  German Wikipedia "LOTTE (Luftschiff)", docs/methods.md S21) gives V/l^3 = 0.02661. The fit
-  at its l/d 3.9019 gives 0.02667 (+0.22 %, tests/core/test_shape_sources.py).
+  and GNVR's pieces against their closed forms. For Lotte, the published envelope (16 m long,
+  4 m diameter, 109 m3; German Wikipedia "LOTTE (Luftschiff)", docs/methods.md S21) gives
+  V/l^3 = 0.02661. The fit at its l/d 3.9019 gives 0.02667 (+0.22 %,
+  tests/core/test_shape_sources.py).
 * ``sphere``: f = 1. ``oblate``: oblate spheroid of revolution about the wind axis, f < 1 (the
   spheroid family below the sphere; a pumpkin-shaped balloon flattened vertically is not a body
   of revolution about x and is outside this model).
@@ -165,10 +166,8 @@ def gnvr_volume_fraction(x):
     q_arc_end = q_nose(a) + (g_arc(GNVR_ARC_END - a) - g_arc(0.0)) / f
     xt = np.maximum(x, x2)
     q_tail = GNVR_TAIL_K * f * ((xt - x2) - (xt * xt - x2 * x2) / 2.0)
-    return np.where(
-        u <= a, q_nose(u), np.where(u <= GNVR_ARC_END, q_nose(a) + (g_arc(v) - g_arc(0.0)) / f,
-                                    q_arc_end + q_tail)
-    )
+    q_arc = q_nose(a) + (g_arc(v) - g_arc(0.0)) / f
+    return np.where(u <= a, q_nose(u), np.where(u <= GNVR_ARC_END, q_arc, q_arc_end + q_tail))
 
 
 def profile_function(shape: str, x):
