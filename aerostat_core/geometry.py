@@ -222,9 +222,9 @@ class HullGeometry:
         """Hull volume between the nose and station ``xi`` [m3]."""
         if self.shape == "npl":
             return volume_to_station(xi, self.a1, self.a2, self.b)
-        x = np.clip(np.asarray(xi, dtype=float) / self.length, 0.0, 1.0)
-        q = np.polynomial.Polynomial(_shapes.profile_coefficients(self.shape)).integ()
-        return np.pi * self.diameter**2 * self.length * q(x)
+        x = np.asarray(xi, dtype=float) / self.length
+        q = _shapes.profile_volume_fraction(self.shape, x)
+        return np.pi * self.diameter**2 * self.length * q
 
 
 def _profile_geometry(volume, fineness_ratio, shape: str) -> HullGeometry:
@@ -344,7 +344,8 @@ def profile_quadrature(g: HullGeometry):
 
     Returns stations xi [m], radii r [m], surface weights w_s (so that sum(w_s F(xi)) =
     int F dS) [m2] and volume weights w_v (sum(w_v F) = int F dV) [m3]; arrays of shape
-    (..., 96) over a batch (NPL) or (..., QUAD_ORDER) (other shapes).
+    (..., 96) over a batch (NPL) or (..., QUAD_ORDER) (other shapes; GNVR's nodes are
+    composite over its three pieces, shapes.profile_nodes).
     """
     if g.shape != "npl":
         pd = _shapes.profile_data(g.shape)

@@ -12,32 +12,42 @@ Shapes (``SHAPES``):
 * ``npl``: National Physical Laboratory double ellipsoid, maximum diameter at 0.432 l (Khoury &
   Gillett, *Airship Technology*, 1999; thesis §2.4.3(a), §3.1.3(a)). Keeps the closed forms of
   :mod:`aerostat_core.geometry`.
-* ``gnvr``, ``wang``, ``zhiyuan-1``, ``lotte``: Gertler (1950, DTMB Report 604) sixth-order
-  polynomial FITS of the standard envelopes (the thesis' Fig. 2.16 set), with the parameters
-  (m, r0, r1, C_p, l/d) of ``GERTLER_TABLE``.
+* ``gnvr``: the piecewise GNVR profile (:func:`gnvr_profile`). The thesis (§2.4.3(a))
+  describes GNVR, after G. N. V. Rao, as "a combination of an ellipse, circle, and parabola
+  (Ram and Pant, 2010)" (Ram C.V., Pant R.S., "Multidisciplinary shape optimization of aerostat
+  envelopes", J. Aircraft 47(3), 2010; NOT seen). The constants, in units of the maximum
+  diameter d, are an elliptic nose (semi-axes 1.25 d and 0.5 d), a circular arc of radius 4 d
+  to 2.875 d, and a parabolic tail r^2 = 0.1373 d (3.05 d - xi). They come from one
+  unattributed public script that states no source (docs/methods.md S22). They are NOT Ram &
+  Pant's paper read first-hand. Two independent public Gertler tables (S7, S14) corroborate
+  them. The second gives GNVR l/d = 3.0500, which is this profile's 3.05. The computed C_p
+  0.6175 lies within 0.2 % of that table's 0.6163 and 0.4 % of S7's 0.615. V/l^3 (0.05214)
+  agrees with the S7 fit within 0.02 %.
+  Other fineness ratios stretch the profile along the axis (P(x) kept, x = xi/l). That is an
+  engineering choice, valid for f in [2, 6] as for the Gertler shapes. The published GNVR is
+  f = 3.05.
+* ``wang``, ``zhiyuan-1``, ``lotte``: Gertler (1950, DTMB Report 604) sixth-order polynomial
+  FITS of the standard envelopes (the thesis' Fig. 2.16 set), with the parameters
+  (m, r0, r1, C_p, l/d) of ``GERTLER_TABLE``. The table's GNVR row is kept as the Gertler fit
+  the tests hold the piecewise profile against.
 
   Where these numbers come from (docs/methods.md §1.13, S7, S14): the table is the
   ``STANDARD_ENVELOPES`` table of public Gertler-envelope generator code (S7), which states no
-  source; a second public copy of such a table gives GNVR (0.4143, 0.5999, 0.1762, 0.6163,
+  source. A second public copy of such a table gives GNVR (0.4143, 0.5999, 0.1762, 0.6163,
   3.0500), Zhiyuan-1 (0.4193, 0.3306, 0.2500, 0.6489, 3.2592) and Wang (0.4040, 0.6000, 0.1000,
   0.6100, 3.8540), within 0.4 % of ours on C_p and l/d. The project attributes the table to
   Alam & Pant (2017), "Multi-objective multidisciplinary design analyses and optimization of
-  high altitude airships", *Aerosp. Sci. Technol.* 78, whose comparison set it matches; that
+  high altitude airships", *Aerosp. Sci. Technol.* 78, whose comparison set it matches. That
   paper was NOT seen, so the attribution is unverified.
-
-  GNVR is NOT Ram & Pant's definition. The thesis (§2.4.3(a)) describes GNVR, after G. N. V.
-  Rao, as "a combination of an ellipse, circle, and parabola (Ram and Pant, 2010)" (Ram C.V.,
-  Pant R.S., "Multidisciplinary shape optimization of aerostat envelopes", J. Aircraft 47(3),
-  2010, as issue 12 cites it; not seen). That piecewise profile and its coefficients were not
-  found in any stored source (searched: the thesis seed text, stored pages, documentation and
-  code), so it is not implemented. The Gertler fit is an engineering choice: one smooth
-  polynomial family for all four streamlined shapes, volume and area from one quadrature. Its
-  C_p = 0.615 and l/d = 3.044 are the fit's, not figures published for the piecewise GNVR.
 
   Other original shapes: Wang et al. (2009) (GA-optimised); Zhiyuan-1, Wang & Shan (2006), Wang
   et al. (2010); Lotte, Lutz et al., University of Stuttgart solar airship. None of these papers
-  was seen either: no volume or surface-area coefficient published for them was found, so the
-  tests check the fits against the two public tables (C_p, m, l/d) and the closed forms.
+  was seen either, and no volume or surface-area coefficient published for GNVR, Wang or
+  Zhiyuan-1 was found. The tests check the fits against the two public tables (C_p, m, l/d),
+  and GNVR's pieces against their closed forms. For Lotte, the published envelope (16 m long,
+  4 m diameter, 109 m3; German Wikipedia "LOTTE (Luftschiff)", docs/methods.md S21) gives
+  V/l^3 = 0.02661. The fit at its l/d 3.9019 gives 0.02667 (+0.22 %,
+  tests/core/test_shape_sources.py).
 * ``sphere``: f = 1. ``oblate``: oblate spheroid of revolution about the wind axis, f < 1 (the
   spheroid family below the sphere; a pumpkin-shaped balloon flattened vertically is not a body
   of revolution about x and is outside this model).
@@ -64,7 +74,8 @@ from .validation import InputError
 #: parameters, C_p prismatic coefficient, standard l/d) of the standard envelopes: the table of
 #: public Gertler-envelope code (docs/methods.md S7, no source stated there), attributed by the
 #: project to Alam & Pant (2017) (Aerosp. Sci. Technol. 78; not seen, unverified). Fits, not the
-#: shapes' original definitions (module docstring).
+#: shapes' original definitions (module docstring). The "gnvr" row is the fit only; the shape
+#: itself is the piecewise :func:`gnvr_profile`.
 GERTLER_TABLE = {
     "sphere": (0.5, 0.5, 0.5, 0.667, 1.000),
     "gnvr": (0.415, 0.600, 0.180, 0.615, 3.044),
@@ -73,6 +84,107 @@ GERTLER_TABLE = {
     "npl": (0.432, 0.589, 0.425, 0.667, 4.000),
     "lotte": (0.4502, 0.5759, 0.10, 0.5170, 3.9019),
 }
+
+
+#: GNVR profile, lengths in units of the maximum diameter d (docs/methods.md §1.13, S22):
+#: elliptic nose of semi-axes 1.25 d (axial) and 0.5 d, maximum diameter at 1.25 d; circular
+#: arc of radius 4 d centred 3.5 d below the axis at 1.25 d, to 2.875 d; parabolic tail
+#: r^2 = k d (3.05 d - xi) closing at l = 3.05 d.
+GNVR_FINENESS = 3.05
+GNVR_NOSE = 1.25
+GNVR_ARC_RADIUS = 4.0
+GNVR_ARC_CENTRE = 3.5
+GNVR_ARC_END = 2.875
+#: Tail parabola coefficient k [-]. The source gives 0.1373. The value that joins the arc at
+#: 2.875 d is k = r(2.875 d)^2 / (0.175 d^2) = 0.137371, so 0.1373 is it truncated to four
+#: digits (0.05 % low, which would leave a 4e-5 d step in radius). The joining value is used,
+#: so the profile is continuous.
+GNVR_TAIL_K = (
+    (GNVR_ARC_RADIUS**2 - (GNVR_ARC_END - GNVR_NOSE) ** 2) ** 0.5 - GNVR_ARC_CENTRE
+) ** 2 / (GNVR_FINENESS - GNVR_ARC_END)
+
+
+def gnvr_profile(x):
+    """GNVR profile P(x) = (r/d)^2 and dP/dx at x = xi/l in [0, 1] (values clipped to it).
+
+    With u = F x (F = 3.05, stations in units of d):
+
+    * nose, u <= 1.25: ellipse, P = 0.25 (1 - (u/1.25 - 1)^2);
+    * middle, 1.25 <= u <= 2.875: circular arc, P = (sqrt(16 - (u - 1.25)^2) - 3.5)^2;
+    * tail, u >= 2.875: parabola, P = k (F - u), with k = 0.137371 (GNVR_TAIL_K; the
+      source's 0.1373 truncated).
+
+    The ellipse and the arc meet at the maximum diameter with zero slope (C1). Arc and tail
+    meet with equal radius and slopes within 0.4 % (-0.4446 and -0.4430 in dr/dxi), so the
+    join is not exactly C1. Source: docs/methods.md §1.13, S22.
+
+    Returns
+    -------
+    P, dP/dx : ndarray [-]
+    """
+    x = np.clip(np.asarray(x, dtype=float), 0.0, 1.0)
+    f = GNVR_FINENESS
+    u = f * x
+    t = u / GNVR_NOSE - 1.0
+    p_nose = 0.25 * (1.0 - t * t)
+    dp_nose = -0.5 * t * f / GNVR_NOSE
+    v = np.clip(u - GNVR_NOSE, 0.0, GNVR_ARC_RADIUS)
+    sq = np.sqrt(GNVR_ARC_RADIUS**2 - v * v)
+    p_arc = (sq - GNVR_ARC_CENTRE) ** 2
+    dp_arc = -2.0 * (sq - GNVR_ARC_CENTRE) * v / sq * f
+    p_tail = GNVR_TAIL_K * (f - u)
+    dp_tail = -GNVR_TAIL_K * f * np.ones_like(u)
+    nose, tail = u <= GNVR_NOSE, u >= GNVR_ARC_END
+    p = np.where(nose, p_nose, np.where(tail, p_tail, p_arc))
+    dp = np.where(nose, dp_nose, np.where(tail, dp_tail, dp_arc))
+    return np.maximum(p, 0.0), dp
+
+
+def gnvr_volume_fraction(x):
+    """Q(x) = int_0^x P dx of the GNVR profile, in closed form for each piece [-].
+
+    V(0..xi) = pi d^2 l Q(xi/l), and C_p = 4 Q(1).
+
+    Nose: (1.25/F) (t - t^3/3 + 2/3) / 4 with t = F x/1.25 - 1. Arc: with v = F x - 1.25,
+    int (sqrt(R^2 - v^2) - c)^2 dv = (R^2 + c^2) v - v^3/3 - c (v s + R^2 asin(v/R)),
+    s = sqrt(R^2 - v^2). Tail: k F ((x - x2) - (x^2 - x2^2)/2).
+    """
+    x = np.clip(np.asarray(x, dtype=float), 0.0, 1.0)
+    f, a, rr, c = GNVR_FINENESS, GNVR_NOSE, GNVR_ARC_RADIUS, GNVR_ARC_CENTRE
+
+    def q_nose(u):
+        t = np.minimum(u, a) / a - 1.0
+        return 0.25 * (a / f) * (t - t**3 / 3.0 + 2.0 / 3.0)
+
+    def g_arc(v):
+        sq = np.sqrt(rr * rr - v * v)
+        return (rr * rr + c * c) * v - v**3 / 3.0 - c * (v * sq + rr * rr * np.arcsin(v / rr))
+
+    x2 = GNVR_ARC_END / f
+    u = f * x
+    v = np.clip(u - a, 0.0, GNVR_ARC_END - a)
+    q_arc_end = q_nose(a) + (g_arc(GNVR_ARC_END - a) - g_arc(0.0)) / f
+    xt = np.maximum(x, x2)
+    q_tail = GNVR_TAIL_K * f * ((xt - x2) - (xt * xt - x2 * x2) / 2.0)
+    q_arc = q_nose(a) + (g_arc(v) - g_arc(0.0)) / f
+    return np.where(u <= a, q_nose(u), np.where(u <= GNVR_ARC_END, q_arc, q_arc_end + q_tail))
+
+
+def profile_function(shape: str, x):
+    """P(x) = (r/d)^2 and dP/dx [-] of a non-NPL shape at stations x = xi/l in [0, 1]."""
+    if SHAPE_INFO[shape].family == "piecewise":
+        return gnvr_profile(x)
+    pp = np.polynomial.Polynomial(profile_coefficients(shape))
+    xc = np.clip(np.asarray(x, dtype=float), 0.0, 1.0)
+    return pp(xc), pp.deriv()(xc)
+
+
+def profile_volume_fraction(shape: str, x):
+    """Q(x) = int_0^x P dx [-] of a non-NPL shape (V(0..xi) = pi d^2 l Q(xi/l))."""
+    if SHAPE_INFO[shape].family == "piecewise":
+        return gnvr_volume_fraction(x)
+    q = np.polynomial.Polynomial(profile_coefficients(shape)).integ()
+    return q(np.clip(np.asarray(x, dtype=float), 0.0, 1.0))
 
 
 @dataclass(frozen=True)
@@ -85,7 +197,7 @@ class ShapeInfo:
         Key (``HullSpec.shape``).
     label : str
         Display name.
-    family : {"double-ellipsoid", "gertler", "spheroid"}
+    family : {"double-ellipsoid", "gertler", "piecewise", "spheroid"}
     fineness_range : (float, float)
         Fineness ratios l/d the shape is valid for [-] (inclusive).
     default_fineness : float
@@ -125,14 +237,14 @@ SHAPE_INFO: dict[str, ShapeInfo] = {
         ShapeInfo(
             "gnvr",
             "GNVR",
-            "gertler",
+            "piecewise",
             (2.0, 6.0),
-            3.044,
+            GNVR_FINENESS,
             True,
             False,
-            "Gertler fit, public table (docs/methods.md S7, attributed to Alam & Pant 2017, "
-            "unverified); GNVR itself: Ram & Pant (2010), ellipse + circle + parabola, not "
-            "implemented",
+            "Ellipse + circular arc + parabola (thesis §2.4.3(a), after Ram & Pant 2010, not "
+            "seen); constants from an unattributed public script (docs/methods.md S22), "
+            "agreeing with the Gertler tables S7/S14",
         ),
         ShapeInfo(
             "wang",
@@ -281,17 +393,20 @@ def profile_coefficients(shape: str) -> np.ndarray:
     """
     if shape in ("sphere", "oblate", "helikite"):
         return np.array([0.0, 1.0, -1.0])
-    if shape in GERTLER_TABLE and shape != "npl":
+    if shape in GERTLER_TABLE and SHAPE_INFO[shape].family == "gertler":
         m, r0, r1, cp, _ = GERTLER_TABLE[shape]
         return gertler_coefficients(m, r0, r1, cp)
-    raise ValueError(f"shape {shape!r} has no polynomial profile (npl is a double ellipsoid)")
+    raise ValueError(
+        f"shape {shape!r} has no polynomial profile (npl is a double ellipsoid, gnvr is "
+        "piecewise: use profile_function)"
+    )
 
 
 def profile_radius_ratio(shape: str, x, nose_fraction: float = 0.432):
     """Dimensionless profile r/d at stations x = xi/l (0 outside [0, 1]).
 
     NPL: r/d = 0.5 sqrt(1 - ((x - m)/m)^2) forward of m = nose_fraction, with (1 - m) aft.
-    Others: sqrt(max(P(x), 0)).
+    Others: sqrt(max(P(x), 0)) (:func:`profile_function`).
     """
     x = np.asarray(x, dtype=float)
     if shape == "npl":
@@ -299,7 +414,7 @@ def profile_radius_ratio(shape: str, x, nose_fraction: float = 0.432):
         a = np.where(x <= m, m, 1.0 - m)
         u = np.clip((x - m) / a, -1.0, 1.0)
         return 0.5 * np.sqrt(1.0 - u * u)
-    p = np.polynomial.polynomial.polyval(np.clip(x, 0.0, 1.0), profile_coefficients(shape))
+    p, _ = profile_function(shape, x)
     return np.sqrt(np.maximum(p, 0.0)) * ((x >= 0.0) & (x <= 1.0))
 
 
@@ -325,7 +440,8 @@ class ProfileData:
     x, wx : nodes in [0, 1] and dx weights; p, dp : P(x), P'(x) at the nodes;
     cp : prismatic coefficient 4 int P dx; x_cv : centre of volume / l;
     planform : int 2 sqrt(P) dx (planform area / (d l)); x_planform : its centroid / l;
-    coef : polynomial coefficients of P (lowest power first); x_max : station of max r / l.
+    coef : polynomial coefficients of P (lowest power first; empty for GNVR, which is
+    piecewise); x_max : station of max r / l.
     """
 
     x: np.ndarray
@@ -340,14 +456,57 @@ class ProfileData:
     x_max: float
 
 
+def _piecewise_nodes(order: int):
+    """Composite nodes of the GNVR profile: :func:`_nodes` on each of its three pieces.
+
+    The pieces join with a jump in curvature, which a single Gauss rule over [0, 1] would
+    integrate slowly. Per piece, every integrand is smooth, and the cosine spacing of each piece
+    also covers the square-root ends at the nose and tail. Orders 3/8, 1/4, 3/8 of ``order``.
+    """
+    n1 = (3 * order) // 8
+    n2 = order - 2 * n1
+    edges = (0.0, GNVR_NOSE / GNVR_FINENESS, GNVR_ARC_END / GNVR_FINENESS, 1.0)
+    xs, ws = [], []
+    for (lo, hi), n in zip(zip(edges[:-1], edges[1:]), (n1, n2, n1)):
+        x, w = _nodes(n)
+        xs.append(lo + (hi - lo) * x)
+        ws.append((hi - lo) * w)
+    return np.concatenate(xs), np.concatenate(ws)
+
+
+def profile_nodes(shape: str, order: int = QUAD_ORDER):
+    """Quadrature nodes x in [0, 1] and dx weights for the profile integrals of ``shape``."""
+    if SHAPE_INFO[shape].family == "piecewise":
+        return _piecewise_nodes(order)
+    return _nodes(order)
+
+
 @cache
 def profile_data(shape: str, order: int = QUAD_ORDER) -> ProfileData:
-    """Quadrature nodes and the fineness-independent integrals of a polynomial profile.
+    """Quadrature nodes and the fineness-independent integrals of a non-NPL profile.
 
-    C_p = 4 int P dx, x_cv = int x P dx / int P dx (exact: P is a polynomial);
+    C_p = 4 int P dx, x_cv = int x P dx / int P dx (exact for a polynomial P; for GNVR C_p is
+    the closed form of :func:`gnvr_volume_fraction` and x_cv uses the composite nodes);
     planform J1/(d l) = 2 int sqrt(P) dx and its centroid, by Gauss-Legendre in t with
-    x = (1 - cos t)/2.
+    x = (1 - cos t)/2 (per piece for GNVR, :func:`_piecewise_nodes`).
     """
+    if SHAPE_INFO[shape].family == "piecewise":
+        x, wx = profile_nodes(shape, order)
+        p, dp = gnvr_profile(x)
+        sq = np.sqrt(p)
+        planform = 2.0 * np.sum(wx * sq)
+        return ProfileData(
+            x=x,
+            wx=wx,
+            p=p,
+            dp=dp,
+            cp=4.0 * float(gnvr_volume_fraction(1.0)),
+            x_cv=float(np.sum(wx * x * p) / np.sum(wx * p)),
+            planform=float(planform),
+            x_planform=float(2.0 * np.sum(wx * sq * x) / planform),
+            coef=np.zeros(0),
+            x_max=GNVR_NOSE / GNVR_FINENESS,
+        )
     coef = profile_coefficients(shape)
     pp = np.polynomial.Polynomial(coef)
     integ = pp.integ()
@@ -378,8 +537,8 @@ def prismatic_coefficient(shape: str, nose_fraction: float = 0.432) -> float:
 
     Examples
     --------
-    >>> round(prismatic_coefficient("gnvr"), 3)
-    0.615
+    >>> round(prismatic_coefficient("gnvr"), 4)
+    0.6175
     """
     if shape == "npl":
         return 2.0 / 3.0
@@ -462,10 +621,10 @@ def _body_points(shape: str, f: float, n: int, nose_fraction: float = 0.432):
         drdx = -0.5 * d * u / (a * np.sqrt(np.maximum(1.0 - u * u, 1e-300)))
         drdt = drdx * dxdt
     else:
-        pp = np.polynomial.Polynomial(profile_coefficients(shape))
-        p = np.maximum(pp(x), 1e-300)
+        p, dp = profile_function(shape, x)
+        p = np.maximum(p, 1e-300)
         rho = d * np.sqrt(p)
-        drdt = d * 0.5 * pp.deriv()(x) / np.sqrt(p) * dxdt
+        drdt = d * 0.5 * dp / np.sqrt(p) * dxdt
     norm = np.hypot(dxdt, drdt)
     nx, nr = -drdt / norm, dxdt / norm
     return x, rho, nx, nr, norm * wt
@@ -545,7 +704,7 @@ def added_mass_numerical(
 
 def _vol_nodes(shape, f, nose_fraction):
     """Stations, volume weights pi r^2 dx and r^2 of a body of length 1 and l/d = f."""
-    x, wx = _nodes(QUAD_ORDER)
+    x, wx = _nodes(QUAD_ORDER) if shape == "npl" else profile_nodes(shape)
     r = profile_radius_ratio(shape, x, nose_fraction) / f
     return x, np.pi * r**2 * wx, r**2
 
@@ -564,8 +723,8 @@ def added_mass_factors(shape: str, fineness_ratio):
     * ``npl``: Lamb's factors of the prolate spheroid of the same l/d (the thesis' method,
       Appendix C; keeps the engine's established numbers);
     * sphere, oblate, Helikite hull: Lamb's closed forms (:func:`spheroid_lamb_factors`);
-    * Gertler shapes: :func:`added_mass_numerical` tabulated on 33 fineness ratios over the
-      shape's valid range and interpolated linearly (vectorised for batches).
+    * Gertler shapes and GNVR: :func:`added_mass_numerical` tabulated on 33 fineness ratios
+      over the shape's valid range and interpolated linearly (vectorised for batches).
 
     Parameters
     ----------
@@ -574,7 +733,7 @@ def added_mass_factors(shape: str, fineness_ratio):
         l/d [-], within the shape's range.
     """
     f = np.asarray(fineness_ratio, dtype=float)
-    if shape == "npl" or not SHAPE_INFO[shape].family == "gertler":
+    if shape == "npl" or SHAPE_INFO[shape].family not in ("gertler", "piecewise"):
         return spheroid_lamb_factors(np.maximum(f, 1.0 + 1e-6) if shape == "npl" else f)
     fs, ks = _added_mass_table(shape)
     return tuple(np.interp(f, fs, ks[:, j]) for j in range(3))

@@ -37,7 +37,7 @@ def test_shapes_page_shows_table_2_2_and_figure_2_5(at):
     lib = pd.concat([t.value for t in at.table if "C_p [-]" in t.value.index], axis=1)
     assert len(lib.columns) == 8 and "GNVR" in lib.columns
     assert {"l/d [-]", "C_p [-]", "Area / V^(2/3) [-]"} <= set(lib.index)
-    assert any("GNVR: Gertler fit" in str(c.value) for c in at.caption)
+    assert any("GNVR: Ellipse + circular arc + parabola" in str(c.value) for c in at.caption)
     versus = [t.value for t in at.table if "Hull [kg]" in t.value.index][0]
     assert float(versus.loc["Hull [kg]", ("Spherical", "thesis")]) == 13.54
     hull = float(versus.loc["Hull [kg]", ("Spherical", "this model")])
