@@ -63,6 +63,14 @@ class _LRU:
                 self._data.popitem(last=False)
         return value
 
+    def peek(self, key: Hashable) -> Any:
+        """The value held for ``key`` (now the most recently used), or None."""
+        with self._lock:
+            if key not in self._data:
+                return None
+            self._data.move_to_end(key)
+            return self._data[key]
+
     def keys(self) -> list:
         """The keys held, least recently used first."""
         with self._lock:
@@ -96,6 +104,15 @@ def memo(kind: str, key: Hashable, compute: Callable[[], T], size: int = MAX_DES
     return _store(kind, size).get(key, compute)
 
 
+def peek(kind: str, key: Hashable) -> Any:
+    """The result :func:`memo` holds for ``key`` of ``kind``, or None (nothing is computed):
+    for a page that draws a progress bar only when there is something to compute."""
+    stores, lock = _stores()
+    with lock:
+        lru = stores.get(kind)
+    return lru.peek(key) if lru is not None else None
+
+
 def memo_keys(kind: str) -> list:
     """The keys :func:`memo` holds for ``kind``, least recently used first ([] for none)."""
     stores, lock = _stores()
@@ -121,7 +138,6 @@ def frozen_inputs(req: Requirement, cfg: Configuration) -> tuple[Requirement, Co
     return req.resolved(), cfg  # the limits as applied (rule-set values filled in)
 
 
-
 def design_of(req: Requirement, cfg: Configuration) -> Design:
     """:func:`aerostat_core.design` of the inputs, computed once per distinct inputs."""
     key = frozen_inputs(req, cfg)
@@ -135,10 +151,19 @@ def report_of(req: Requirement, cfg: Configuration) -> DesignReport:
 
 
 @functools.lru_cache(maxsize=MAX_DESIGNS)
+def given_inputs(inputs_json: str) -> tuple[Requirement, Configuration]:
+    """(Requirement as given, Configuration) of canonical inputs JSON, parsed once per text
+    (raises ``ValueError``; failures are not cached): the key of a study that resolves the
+    requirement under other rule sets itself (the rule-set spread, the HTML report)."""
+    req, cfg = inputs_from_dict(json.loads(inputs_json))
+    return req, cfg
+
+
+@functools.lru_cache(maxsize=MAX_DESIGNS)
 def inputs_of(inputs_json: str) -> tuple[Requirement, Configuration]:
     """(resolved Requirement, Configuration) of canonical inputs JSON, parsed once per text
     (raises ``ValueError``; failures are not cached)."""
-    return frozen_inputs(*inputs_from_dict(json.loads(inputs_json)))
+    return frozen_inputs(*given_inputs(inputs_json))
 
 
 def cached_design(inputs_json: str) -> Design:
