@@ -247,8 +247,12 @@ _STORE_SIZE = 16
 
 
 def stored(key: str) -> dict | None:
-    """The stored result of a request key (JSON from :func:`request_key`), or None."""
-    return cache.peek("dynamics", frozen_request(key))
+    """The stored result of a request key (JSON from :func:`request_key`), or None (also for
+    a request whose inputs no longer read: :func:`run_cached` then raises the message)."""
+    try:
+        return cache.peek("dynamics", frozen_request(key))
+    except ValueError:
+        return None
 
 
 def run_cached(key: str, progress: Callable[[float], None] | None = None) -> dict:

@@ -188,3 +188,12 @@ def test_freeze_makes_plain_data_hashable():
     assert cache.freeze({"b": [1, {"c": 2}], "a": None}) == (("a", None), ("b", (1, (("c", 2),))))
     with pytest.raises(TypeError):
         cache.freeze({"a": {1, 2}})
+
+
+def test_a_dynamics_request_whose_inputs_no_longer_read_is_not_stored_and_says_why():
+    bad = inputs_to_dict(*_inputs(11.59))
+    bad["requirement"]["payload_mass"] = -1.0
+    key = dynamics_view.request_key({"source": "Current design", "inputs": bad, "speed": 10.0})
+    assert dynamics_view.stored(key) is None
+    with pytest.raises(ValueError, match="payload_mass"):
+        dynamics_view.run_cached(key)
