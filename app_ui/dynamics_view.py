@@ -2,7 +2,7 @@
 
 Physics lives in :mod:`aerostat_core.dynamics` (:mod:`~aerostat_core.dynamics.scenarios` turns a
 request into a run, :mod:`~aerostat_core.dynamics.thesis` holds the thesis comparison); this
-module validates the page's form into a request (plain JSON: the store key), runs it through
+module validates the page's form into a request (plain data, kept as JSON text), runs it through
 :func:`run_cached` and draws the plain result.
 
 Caching: results live in the app's one process-wide store (:func:`app_ui.cache.memo`), keyed
