@@ -8,11 +8,18 @@ JSON text of the session state (:func:`app_ui.state.inputs_key`) are parsed once
 text. Invalid inputs raise ``ValueError`` (nothing is cached for them); the pages catch it and
 show the message.
 
+The study pages (Sensitivity, Optimise, Envelope, Shapes, Dynamics) cache through the same
+store with :func:`memo`: the key is the frozen inputs plus the study's other parameters as
+hashable values (tuples, numbers, names; :func:`freeze` for a plain request dict), never JSON
+text. A compute that raises (a rejected request, a cancelled run) stores nothing, and a hit
+returns at once without running ``compute``, so a progress bar drawn by it is never replayed.
+
 Typical use in a page::
 
     from app_ui import cache, state
     rep = cache.cached_report(state.current_inputs_key())    # DesignReport for tables and plots
     d = cache.design_of(req, cfg)                            # the Design object itself
+    env = cache.memo("envelope", cache.frozen_inputs(req, cfg), lambda: operating_envelope(d), 32)
 """
 
 from __future__ import annotations
@@ -22,7 +29,7 @@ import json
 import threading
 from collections import OrderedDict
 from collections.abc import Callable, Hashable, Mapping
-from typing import Any
+from typing import Any, TypeVar
 
 import streamlit as st
 
@@ -33,6 +40,8 @@ from aerostat_core.report import DesignReport, cases_csv, comparison_rows, desig
 #: Designs (and reports) kept for every session together.
 MAX_DESIGNS = 256
 
+T = TypeVar("T")
+
 
 class _LRU:
     """A least-recently-used map shared by every session (thread-safe)."""
@@ -42,7 +51,7 @@ class _LRU:
         self._data: OrderedDict = OrderedDict()
         self._lock = threading.Lock()
 
-    def get(self, key: Hashable, compute: Callable[[], Any]) -> Any:
+    def get(self, key: Hashable, compute: Callable[[], T]) -> T:
         with self._lock:
             if key in self._data:
                 self._data.move_to_end(key)
@@ -54,34 +63,107 @@ class _LRU:
                 self._data.popitem(last=False)
         return value
 
+    def peek(self, key: Hashable) -> Any:
+        """The value held for ``key`` (now the most recently used), or None."""
+        with self._lock:
+            if key not in self._data:
+                return None
+            self._data.move_to_end(key)
+            return self._data[key]
+
+    def keys(self) -> list:
+        """The keys held, least recently used first."""
+        with self._lock:
+            return list(self._data)
+
 
 @st.cache_resource(show_spinner=False)
-def _store(kind: str) -> _LRU:
-    """The process-wide LRU of ``kind`` ("design", "report", "comparison")."""
-    return _LRU(MAX_DESIGNS if kind != "comparison" else 64)
+def _stores() -> tuple[dict[str, _LRU], threading.Lock]:
+    """Every process-wide LRU by kind ("design", "report", "comparison", a study's name)."""
+    return {}, threading.Lock()
 
 
-def _key(req: Requirement, cfg: Configuration) -> tuple[Requirement, Configuration]:
+def _store(kind: str, size: int = MAX_DESIGNS) -> _LRU:
+    """The LRU of ``kind``, made with ``size`` entries on first use."""
+    stores, lock = _stores()
+    with lock:
+        if kind not in stores:
+            stores[kind] = _LRU(size)
+        return stores[kind]
+
+
+def memo(kind: str, key: Hashable, compute: Callable[[], T], size: int = MAX_DESIGNS) -> T:
+    """``compute()`` once per distinct ``key`` of ``kind``, shared by every session.
+
+    ``key`` holds frozen, hashable values: the frozen inputs (:func:`frozen_inputs`) and the
+    request's other parameters as tuples, numbers and names (an unhashable part raises
+    ``TypeError``). At most ``size`` results of a kind are kept (the size of its first call). When
+    ``compute`` raises, nothing is stored. The result is shared, not copied: treat it as
+    read-only.
+    """
+    return _store(kind, size).get(key, compute)
+
+
+def peek(kind: str, key: Hashable) -> Any:
+    """The result :func:`memo` holds for ``key`` of ``kind``, or None (nothing is computed):
+    for a page that draws a progress bar only when there is something to compute."""
+    stores, lock = _stores()
+    with lock:
+        lru = stores.get(kind)
+    return lru.peek(key) if lru is not None else None
+
+
+def memo_keys(kind: str) -> list:
+    """The keys :func:`memo` holds for ``kind``, least recently used first ([] for none)."""
+    stores, lock = _stores()
+    with lock:
+        lru = stores.get(kind)
+    return lru.keys() if lru is not None else []
+
+
+def freeze(value: Any) -> Hashable:
+    """Plain data (dicts, lists, numbers, strings, None) as nested tuples, hashable: a dict
+    becomes its sorted ``(key, value)`` pairs, a list or tuple a tuple."""
+    if isinstance(value, Mapping):
+        return tuple(sorted((str(k), freeze(v)) for k, v in value.items()))
+    if isinstance(value, (list, tuple)):
+        return tuple(freeze(v) for v in value)
+    hash(value)  # a set or an object without a hash raises TypeError here
+    return value
+
+
+def frozen_inputs(req: Requirement, cfg: Configuration) -> tuple[Requirement, Configuration]:
+    """The cache key of a design: the resolved Requirement (rule-set limits filled in) and the
+    Configuration, both frozen and hashed field by field."""
     return req.resolved(), cfg  # the limits as applied (rule-set values filled in)
 
 
 def design_of(req: Requirement, cfg: Configuration) -> Design:
     """:func:`aerostat_core.design` of the inputs, computed once per distinct inputs."""
-    key = _key(req, cfg)
-    return _store("design").get(key, lambda: design(*key))
+    key = frozen_inputs(req, cfg)
+    return memo("design", key, lambda: design(*key))
 
 
 def report_of(req: Requirement, cfg: Configuration) -> DesignReport:
     """:func:`aerostat_core.report.design_report` of :func:`design_of` the inputs."""
-    key = _key(req, cfg)
-    return _store("report").get(key, lambda: design_report(design_of(*key)))
+    key = frozen_inputs(req, cfg)
+    return memo("report", key, lambda: design_report(design_of(*key)))
+
+
+@functools.lru_cache(maxsize=MAX_DESIGNS)
+def given_inputs(inputs_json: str) -> tuple[Requirement, Configuration]:
+    """(Requirement as given, Configuration) of canonical inputs JSON, parsed once per text
+    (raises ``ValueError``; failures are not cached): the key of a study that resolves the
+    requirement under other rule sets itself (the rule-set spread, the HTML report)."""
+    req, cfg = inputs_from_dict(json.loads(inputs_json))
+    return req, cfg
 
 
 @functools.lru_cache(maxsize=MAX_DESIGNS)
 def inputs_of(inputs_json: str) -> tuple[Requirement, Configuration]:
     """(resolved Requirement, Configuration) of canonical inputs JSON, parsed once per text
     (raises ``ValueError``; failures are not cached)."""
-    return _key(*inputs_from_dict(json.loads(inputs_json)))
+    return frozen_inputs(*given_inputs(inputs_json))
 
 
 def cached_design(inputs_json: str) -> Design:
@@ -106,7 +188,7 @@ def case_inputs(cases: Mapping[str, Mapping[str, Any]]) -> dict[str, tuple]:
     out = {}
     for name, inputs in cases.items():
         try:
-            out[name] = _key(*inputs_from_dict(dict(inputs)))
+            out[name] = frozen_inputs(*inputs_from_dict(dict(inputs)))
         except ValueError as exc:
             raise ValueError(f"case {name!r}: {exc}") from None
     return out
@@ -121,8 +203,8 @@ def comparison_of(cases: Mapping[str, Mapping[str, Any]]) -> list[dict]:
     """:func:`aerostat_core.report.comparison_rows` of ``{name: inputs}``."""
     keys = case_inputs(cases)
     key = tuple(keys.items())
-    return _store("comparison").get(
-        key, lambda: comparison_rows({n: design_of(*k) for n, k in keys.items()})
+    return memo(
+        "comparison", key, lambda: comparison_rows({n: design_of(*k) for n, k in keys.items()}), 64
     )
 
 

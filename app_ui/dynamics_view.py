@@ -2,13 +2,16 @@
 
 Physics lives in :mod:`aerostat_core.dynamics` (:mod:`~aerostat_core.dynamics.scenarios` turns a
 request into a run, :mod:`~aerostat_core.dynamics.thesis` holds the thesis comparison); this
-module validates the page's form into a request (plain JSON: the store key), runs it through
+module validates the page's form into a request (plain data, kept as JSON text), runs it through
 :func:`run_cached` and draws the plain result.
 
-Caching: results live in one process-wide store (``st.cache_resource``, a dict behind a lock),
-filled by :func:`run_cached` *outside* any ``st.cache_data`` function, so the page's progress bar
-is drawn by the page itself and a replay (a second click, coming back to the page, a second
-session hitting the same case) never re-runs a UI element (no ``CacheReplayClosureError``).
+Caching: results live in the app's one process-wide store (:func:`app_ui.cache.memo`), keyed
+by the request as frozen values (the design inputs as the frozen Requirement and Configuration,
+the rest as nested tuples: :func:`frozen_request`); the session keeps the request's JSON text.
+The store is filled by :func:`run_cached`, never inside an ``st.cache_data`` function, so the
+page's progress bar is drawn by the page itself and a replay (a second click, coming back to the
+page, a second session hitting the same case) never re-runs a UI element (no
+``CacheReplayClosureError``). A failed or interrupted run stores nothing.
 
 Figures mirror the thesis (Figs 4.36-4.41): tether profile at t = 0 and t_end, x_C(t) and z_C(t),
 hull velocities, pitch and angle of attack, tensions at C and at the winch, wind input; limits
@@ -17,10 +20,9 @@ hull velocities, pitch and angle of attack, tensions at C and at the winch, wind
 
 from __future__ import annotations
 
+import functools
 import json
 import math
-import threading
-from collections import OrderedDict
 from collections.abc import Callable, Mapping
 from typing import Any
 
@@ -54,7 +56,7 @@ from aerostat_core.fields import field_spec
 from aerostat_core.io import inputs_from_dict, inputs_to_dict
 from aerostat_core.presets import thesis_optimized_label
 
-from . import entry, formats
+from . import cache, entry, formats
 from .theme import ACCENT, FONT, MARGIN, SECOND, THIRD
 from .theme import LIMIT_COLOUR as LIMIT
 
@@ -217,8 +219,21 @@ def build_request(form: Mapping[str, Any], design_inputs: Mapping[str, Any] | No
 
 
 def request_key(req: Mapping[str, Any]) -> str:
-    """Canonical JSON of a request (store key)."""
+    """Canonical JSON of a request (what the session keeps; :func:`frozen_request` keys the
+    store)."""
     return json.dumps(req, sort_keys=True, separators=(",", ":"))
+
+
+@functools.lru_cache(maxsize=64)
+def frozen_request(key: str) -> tuple:
+    """The store key of a request's JSON text (:func:`request_key`), parsed once per text: the
+    design inputs as the frozen (resolved Requirement, Configuration) of
+    :func:`app_ui.cache.frozen_inputs` (None for the thesis design), every other part as
+    hashable nested tuples (:func:`app_ui.cache.freeze`). Raises ``ValueError`` for bad inputs."""
+    req = json.loads(key)
+    inputs = req.get("inputs")
+    frozen = None if inputs is None else cache.frozen_inputs(*inputs_from_dict(inputs))
+    return frozen, cache.freeze({k: v for k, v in req.items() if k != "inputs"})
 
 
 def run(req: Mapping[str, Any], progress: Callable[[float], None] | None = None) -> dict:
@@ -231,35 +246,22 @@ def run(req: Mapping[str, Any], progress: Callable[[float], None] | None = None)
 _STORE_SIZE = 16
 
 
-@st.cache_resource
-def _store() -> tuple[OrderedDict, threading.Lock]:
-    return OrderedDict(), threading.Lock()
-
-
 def stored(key: str) -> dict | None:
-    """The stored result of a request key, or None."""
-    store, lock = _store()
-    with lock:
-        out = store.get(key)
-        if out is not None:
-            store.move_to_end(key)
-        return out
+    """The stored result of a request key (JSON from :func:`request_key`), or None (also for
+    a request whose inputs no longer read: :func:`run_cached` then raises the message)."""
+    try:
+        return cache.peek("dynamics", frozen_request(key))
+    except ValueError:
+        return None
 
 
 def run_cached(key: str, progress: Callable[[float], None] | None = None) -> dict:
     """The result of the request in ``key`` (JSON from :func:`request_key`): from the store, or
     run now (``progress`` is called with the fraction done) and stored. The caller draws any
     progress element; nothing here touches the page."""
-    out = stored(key)
-    if out is not None:
-        return out
-    out = run(json.loads(key), progress)
-    store, lock = _store()
-    with lock:
-        store[key] = out
-        while len(store) > _STORE_SIZE:
-            store.popitem(last=False)
-    return out
+    return cache.memo(
+        "dynamics", frozen_request(key), lambda: run(json.loads(key), progress), _STORE_SIZE
+    )
 
 
 def kernels_ready() -> bool:
@@ -389,10 +391,14 @@ def limits_frame_rows(out: Mapping[str, Any]) -> list[dict]:
 
 
 # --- thesis comparison --------------------------------------------------------------------------
-@st.cache_data(max_entries=4, show_spinner=False)
 def thesis_comparison(seed: int = 1) -> dict:
-    """The thesis comparison computed live (no UI element inside): table rows, the settings, and
-    the time histories of pitch and hull velocities per scenario (plain data)."""
+    """The thesis comparison computed live (no UI element inside; shared by every session,
+    read-only): table rows, the settings, and the time histories of pitch and hull velocities
+    per scenario (plain data)."""
+    return cache.memo("dynamics_thesis", (int(seed),), lambda: _thesis_comparison(int(seed)), 4)
+
+
+def _thesis_comparison(seed: int) -> dict:
     from aerostat_core.dynamics.scenarios import default_request, design_of
 
     d = design_of(default_request())

@@ -3,7 +3,8 @@ flyable time at a site, Monte Carlo bands with the rule-set spread, and the HTML
 
 Physics lives in :mod:`aerostat_core.envelope`, :mod:`aerostat_core.site_wind`,
 :mod:`aerostat_core.uncertainty` and :mod:`aerostat_core.html_report`; this module caches their
-results per inputs (JSON text keys) and draws them.
+results (:func:`app_ui.cache.memo`, keyed by the frozen inputs, the site as frozen values and the
+sample size and seed; shared by every session, read-only) and draws them.
 """
 
 from __future__ import annotations
@@ -19,7 +20,6 @@ import streamlit as st
 from aerostat_core.constraints import BY_NAME
 from aerostat_core.envelope import ENVELOPE_NAMES, Envelope, operating_envelope
 from aerostat_core.html_report import build_report
-from aerostat_core.io import inputs_from_dict
 from aerostat_core.site_wind import MAX_CSV_BYTES, WeibullSite, flyable_time, read_wind_csv
 from aerostat_core.uncertainty import monte_carlo, rule_set_spread
 
@@ -36,14 +36,15 @@ _MD = str.maketrans({ch: "\\" + ch for ch in "\\`*_{}[]()#+-.!|<>$~"})
 MC_SIZES = (1000, 5000, 10000, 20000)
 
 
-@st.cache_data(max_entries=32, show_spinner=False)
 def cached_envelope(inputs_json: str) -> Envelope:
     """:func:`operating_envelope` of the design of ``inputs_json`` (default axes)."""
-    return operating_envelope(cache.cached_design(inputs_json))
+    key = cache.inputs_of(inputs_json)
+    return cache.memo("envelope", key, lambda: operating_envelope(cache.design_of(*key)), 32)
 
 
-def _site(site_json: str, csv_bytes: bytes | None):
-    spec = json.loads(site_json)
+def _site(spec: Any, csv_bytes: bytes | None):
+    """The site wind of a frozen site spec (:func:`_site_key`)."""
+    spec = dict(spec)
     if spec["kind"] == "csv":
         return read_wind_csv(csv_bytes or b"", spec["reference_height"], spec["shear_exponent"])
     return WeibullSite(
@@ -51,47 +52,60 @@ def _site(site_json: str, csv_bytes: bytes | None):
     )
 
 
-@st.cache_data(max_entries=32, show_spinner=False)
+def _site_key(site_json: str | None, csv_bytes: bytes | None) -> tuple | None:
+    """The site of the session (JSON text of the spec, the CSV file's bytes) as frozen values."""
+    if site_json is None:
+        return None
+    return cache.freeze(json.loads(site_json)), csv_bytes
+
+
 def cached_flyable(inputs_json: str, site_json: str, csv_bytes: bytes | None) -> dict:
     """:func:`flyable_time` summary for the design and the site (raises ValueError)."""
-    spec = json.loads(site_json)
-    ft = flyable_time(
-        cache.cached_design(inputs_json),
-        _site(site_json, csv_bytes),
-        target_availability=spec["target"],
-    )
-    return ft.summary()
+    key = (*cache.inputs_of(inputs_json), _site_key(site_json, csv_bytes))
+
+    def compute() -> dict:
+        spec, data = key[2]
+        ft = flyable_time(
+            cache.design_of(*key[:2]), _site(spec, data), target_availability=dict(spec)["target"]
+        )
+        return ft.summary()
+
+    return cache.memo("flyable", key, compute, 32)
 
 
-@st.cache_data(max_entries=16, show_spinner=False)
 def cached_monte_carlo(inputs_json: str, n: int, seed: int):
     """:func:`monte_carlo` of the design (bands and probabilities)."""
-    mc = monte_carlo(cache.cached_design(inputs_json), n, seed)
-    return {
-        "summary": mc.summary(),
-        "speeds": mc.speeds,
-        "blow_by": mc.blow_by,
-        "tension": mc.tension,
-        "specs": [
-            {
-                "Input": u.label,
-                "1-sigma": u.sigma,
-                "Kind": "relative" if u.relative else "absolute",
-                "Source": u.source,
-            }
-            for u in mc.specs
-        ],
-    }
+    key = (*cache.inputs_of(inputs_json), int(n), int(seed))
+
+    def compute() -> dict:
+        mc = monte_carlo(cache.design_of(*key[:2]), key[2], key[3])
+        return {
+            "summary": mc.summary(),
+            "speeds": mc.speeds,
+            "blow_by": mc.blow_by,
+            "tension": mc.tension,
+            "specs": [
+                {
+                    "Input": u.label,
+                    "1-sigma": u.sigma,
+                    "Kind": "relative" if u.relative else "absolute",
+                    "Source": u.source,
+                }
+                for u in mc.specs
+            ],
+        }
+
+    return cache.memo("monte_carlo", key, compute, 16)
 
 
-@st.cache_data(max_entries=16, show_spinner=False)
 def cached_rules_spread(inputs_json: str, seed: int) -> list[dict]:
-    """:func:`rule_set_spread` of the mission of ``inputs_json``."""
-    req, _ = inputs_from_dict(json.loads(inputs_json))
-    return rule_set_spread(req, n=2000, seed=seed)
+    """:func:`rule_set_spread` of the mission of ``inputs_json`` (the requirement as given:
+    each rule set fills in its own limits)."""
+    req, _ = cache.given_inputs(inputs_json)
+    key = (req, int(seed))
+    return cache.memo("rules_spread", key, lambda: rule_set_spread(req, n=2000, seed=key[1]), 16)
 
 
-@st.cache_data(max_entries=8, show_spinner=False)
 def cached_report_html(
     inputs_json: str,
     site_json: str | None = None,
@@ -101,11 +115,19 @@ def cached_report_html(
 ) -> bytes:
     """The HTML design report with the tab's site wind and Monte Carlo (defaults: the default
     Weibull site, 2000 samples)."""
-    req, _ = inputs_from_dict(json.loads(inputs_json))
-    site = None if site_json is None else _site(site_json, csv_bytes)
-    return build_report(
-        cache.cached_design(inputs_json), site, n_monte_carlo=n, seed=seed, base_requirement=req
-    ).encode("utf-8")
+    key = (*cache.given_inputs(inputs_json), _site_key(site_json, csv_bytes), int(n), int(seed))
+
+    def compute() -> bytes:
+        req, cfg, site, n_mc, s = key
+        return build_report(
+            cache.design_of(req, cfg),
+            None if site is None else _site(*site),
+            n_monte_carlo=n_mc,
+            seed=s,
+            base_requirement=req,
+        ).encode("utf-8")
+
+    return cache.memo("report_html", key, compute, 8)
 
 
 def envelope_figure(env: Envelope) -> go.Figure:

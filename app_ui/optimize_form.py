@@ -1,6 +1,6 @@
 """Form model of the Sensitivity and Optimise pages: the design variables in their display units,
 the bound boxes (text boxes read like the Design form's: a decimal comma is a decimal point),
-the bounds checked in the unit of the boxes, and the optimisation request.
+the engine's bounds check worded in the unit of the boxes, and the optimisation request.
 
 The fin position is a percentage of the hull length on every page (the Design form's unit); the
 engine keeps the fraction. Conversion happens here, in both directions, so every message about
@@ -9,7 +9,6 @@ a bound quotes the number as typed.
 
 from __future__ import annotations
 
-import json
 from collections.abc import Mapping, Sequence
 from dataclasses import replace
 from typing import Any
@@ -18,18 +17,20 @@ import numpy as np
 import streamlit as st
 
 from aerostat_core import Configuration, Requirement, budget, fields, thesis_baseline
-from aerostat_core.io import inputs_from_dict, inputs_to_dict
+from aerostat_core.io import inputs_to_dict
 from aerostat_core.optimize import (
     DEFAULT_BOUNDS,
     SETTINGS,
     SOLVERS,
     VARIABLE_INFO,
     VARIABLES,
+    BoundsError,
     OptimizationProblem,
+    check_bounds,
     default_limits,
 )
 
-from . import entry
+from . import cache, entry
 from .formats import unit
 from .state import current_inputs, inputs_key
 
@@ -99,30 +100,45 @@ def parse_ranges(
 ) -> dict[str, tuple[float, float]]:
     """The bounds typed in :func:`variable_range_inputs`' boxes, in the engine's units.
 
-    Checked in the unit of the boxes (the fin position in % of the hull length), so a message
-    quotes the numbers as typed: lower below upper, not equal, inside the variable's valid
-    range. Raises ``ValueError`` naming the variable's label.
+    Checked by the engine's one bounds check (:func:`aerostat_core.optimize.check_bounds`);
+    its :class:`~aerostat_core.optimize.BoundsError` is worded here in the unit of the boxes
+    (the fin position in % of the hull length), so a message quotes the numbers as typed.
+    Raises ``ValueError`` naming the variable's label.
     """
-    out: dict[str, tuple[float, float]] = {}
+    typed: dict[str, tuple[float, float]] = {}
+    si: dict[str, tuple[float, float]] = {}
     for name, (t_lo, t_hi) in texts.items():
         label = var_label(name)
         scale = DISPLAY.get(name, (1.0,))[0]
-        lo = entry.read(t_lo, f"{label} – {lower}")
-        hi = entry.read(t_hi, f"{label} – {upper}")
-        vlo, vhi = (float(f"{v * scale:.12g}") for v in VARIABLE_INFO[name][2])
-        if lo > hi:
-            raise ValueError(f"{label}: lower bound {lo:g} > upper bound {hi:g}")
-        if lo == hi:
-            raise ValueError(
-                f"{label}: the bounds are empty (lower = upper = {lo:g}); give a range with "
-                "the lower bound below the upper"
-            )
-        if lo < vlo or hi > vhi:
-            raise ValueError(
-                f"{label}: bounds ({lo:g}, {hi:g}) leave the valid range [{vlo:g}, {vhi:g}]"
-            )
-        out[name] = (float(f"{lo / scale:.12g}"), float(f"{hi / scale:.12g}"))
-    return out
+        typed[name] = (
+            entry.read(t_lo, f"{label} – {lower}"),
+            entry.read(t_hi, f"{label} – {upper}"),
+        )
+        si[name] = tuple(float(f"{v / scale:.12g}") for v in typed[name])
+    if not si:
+        return {}
+    try:
+        return check_bounds(si)
+    except BoundsError as exc:
+        raise ValueError(bounds_message(exc, typed)) from None
+
+
+def bounds_message(exc: BoundsError, typed: Mapping[str, Sequence[float]]) -> str:
+    """A :class:`~aerostat_core.optimize.BoundsError` in the form's words: the variable's label
+    and display unit, the bounds as typed (``typed``: {variable: (lower, upper)} in the unit of
+    the boxes) and the valid range in that unit."""
+    if exc.variable not in typed or exc.valid is None:
+        return str(exc)
+    label = var_label(exc.variable)
+    lo, hi = typed[exc.variable]
+    vlo, vhi = (float(f"{v:.12g}") for v in shown(exc.variable, np.asarray(exc.valid)))
+    return {
+        "order": f"{label}: lower bound {lo:g} > upper bound {hi:g}",
+        "empty": f"{label}: the bounds are empty (lower = upper = {lo:g}); give a range with "
+        "the lower bound below the upper",
+        "range": f"{label}: bounds ({lo:g}, {hi:g}) leave the valid range [{vlo:g}, {vhi:g}]",
+        "not finite": f"{label}: bounds ({lo:g}, {hi:g}) must be finite numbers",
+    }.get(exc.reason, f"{label}: {exc}")
 
 
 def load_inputs() -> tuple[str, Requirement, Configuration]:
@@ -138,14 +154,29 @@ def is_thesis_preset(req: Requirement, cfg: Configuration) -> bool:
 
 
 def inputs_from_json(inputs_json: str) -> tuple[Requirement, Configuration]:
-    """(Requirement, Configuration) from canonical inputs JSON (raises ValueError)."""
-    req, cfg = inputs_from_dict(json.loads(inputs_json))
-    return req.resolved(), cfg  # the limits as applied (rule-set values filled in)
+    """The frozen (resolved Requirement, Configuration) of canonical inputs JSON, parsed once
+    per text (:func:`app_ui.cache.inputs_of`; raises ValueError)."""
+    return cache.inputs_of(inputs_json)
 
 
-def bounds_key(bounds: Mapping[str, Sequence[float]]) -> str:
-    """Canonical JSON of a bounds mapping (cache key)."""
-    return json.dumps({k: [float(v) for v in bounds[k]] for k in bounds}, sort_keys=True)
+#: Bounds as a cache key: ((variable, lower, upper), ...) in the order of ``VARIABLES``.
+Bounds = tuple[tuple[str, float, float], ...]
+
+
+def bounds_items(bounds: Mapping[str, Sequence[float]] | Bounds) -> Bounds:
+    """Bounds ``{variable: (lower, upper)}`` (or already items) as hashable items in the order
+    of ``VARIABLES`` (then any other name, sorted), floats: equal bounds give equal keys."""
+    pairs = (
+        bounds.items() if isinstance(bounds, Mapping) else ((n, (lo, hi)) for n, lo, hi in bounds)
+    )
+    rank = {n: i for i, n in enumerate(VARIABLES)}
+    items = [(str(n), float(lo), float(hi)) for n, (lo, hi) in pairs]
+    return tuple(sorted(items, key=lambda t: (rank.get(t[0], len(rank)), t[0])))
+
+
+def bounds_dict(bounds: Bounds) -> dict[str, tuple[float, float]]:
+    """:func:`bounds_items` back as the engine's ``{variable: (lower, upper)}``."""
+    return {n: (lo, hi) for n, lo, hi in bounds}
 
 
 def build_request(
@@ -190,7 +221,7 @@ def build_request(
         limits = default_limits(req, int(pareto_points), pareto_low, pareto_high).tolist()
     return {
         "inputs": inputs_key(inputs_to_dict(req, cfg)),
-        "bounds": bounds_key(bounds),
+        "bounds": bounds_items(problem.bounds),
         "objective": objective,
         "level": level,
         "seed": int(seed),

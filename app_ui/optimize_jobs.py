@@ -1,23 +1,28 @@
 """Background work of the Sensitivity and Optimise pages: cached engine calls, the solver results
 shared by every session, and the optimisation job (one task per solver, then the Pareto front).
 
-Cache keys are canonical JSON texts (inputs dict, bounds), so two sessions with the same request
-share one computation, and every stochastic solver is seeded, so a cached result means something.
+Every engine call is cached through :func:`app_ui.cache.memo`, the one process-wide store: the
+key is the frozen inputs (resolved Requirement, Configuration) plus the request's other
+parameters as hashable values (bounds as ``((variable, lower, upper), ...)`` in the order of
+the variables, numbers, names), so two sessions with the same request share one computation,
+and every stochastic solver is seeded, so a cached result means something. A request the engine
+rejects (``ValueError``) or a cancelled run stores nothing. Results are shared, not copied:
+read-only.
+
 The page shows a progress bar and a Cancel button while the tasks run. Pressing Cancel
 interrupts the script at the next progress update (Streamlit reruns on a click); the finished
-tasks are kept in the session and shown, the rest are skipped.
+tasks are kept in the session and shown, the rest are skipped. The solvers draw that bar only
+when they compute: a cached result returns at once, so no bar is ever replayed.
 """
 
 from __future__ import annotations
 
-import json
-import threading
-from collections import OrderedDict
 from collections.abc import Mapping, MutableMapping, Sequence
 from typing import Any
 
 import streamlit as st
 
+from aerostat_core import Configuration, Requirement
 from aerostat_core.optimize import (
     SOLVERS,
     OptimizationProblem,
@@ -39,7 +44,7 @@ from aerostat_core.sensitivity import (
 )
 
 from . import cache
-from .optimize_form import inputs_from_json
+from .optimize_form import Bounds, bounds_dict, bounds_items
 
 #: Session keys of the optimisation job and the case-save feedback.
 JOB_KEY = "opt_job"
@@ -47,109 +52,162 @@ JOB_KEY = "opt_job"
 PREVIOUS_JOB_KEY = "opt_previous_job"
 TASK_LABELS = {**{k: v[0] for k, v in SOLVERS.items()}, "pareto": "Pareto front"}
 
+#: Largest number of results of each study kept for every session.
+STUDY_RESULTS = 64
+#: Largest number of solver results kept for every session (the cache of :func:`solve_shared`).
+SHARED_RESULTS = 64
+
 # --- cached engine calls --------------------------------------------------------------------------
 
 
-@st.cache_data(max_entries=64, show_spinner=False)
 def cached_sensitivity(
-    inputs_json: str, ranges_json: str, n_points: int, resize: bool
+    req: Requirement,
+    cfg: Configuration,
+    ranges: Mapping[str, Sequence[float]] | Bounds,
+    n_points: int,
+    resize: bool,
 ) -> SensitivityResult:
-    """:func:`aerostat_core.sensitivity.one_at_a_time` of the inputs."""
-    return one_at_a_time(*inputs_from_json(inputs_json), json.loads(ranges_json), n_points, resize)
+    """:func:`aerostat_core.sensitivity.one_at_a_time` of the inputs (raises ValueError)."""
+    key = (*cache.frozen_inputs(req, cfg), bounds_items(ranges), int(n_points), bool(resize))
+    return cache.memo(
+        "sensitivity",
+        key,
+        lambda: one_at_a_time(*key[:2], bounds_dict(key[2]), key[3], key[4]),
+        STUDY_RESULTS,
+    )
 
 
-@st.cache_data(max_entries=64, show_spinner=False)
 def cached_map(
-    inputs_json: str, x_var: str, y_var: str, ranges_json: str, n: int, resize: bool
+    req: Requirement,
+    cfg: Configuration,
+    x_var: str,
+    y_var: str,
+    ranges: Mapping[str, Sequence[float]] | Bounds,
+    n: int,
+    resize: bool,
 ) -> SensitivityMap:
-    """:func:`aerostat_core.sensitivity.two_variable_map` of the inputs."""
-    return two_variable_map(*inputs_from_json(inputs_json), x_var, y_var, json.loads(ranges_json), n, resize)
-
-
-@st.cache_data(max_entries=128, show_spinner=False)
-def cached_solve(
-    inputs_json: str, bounds_json: str, objective: str, solver: str, level: str, seed: int
-) -> OptimizationResult:
-    """One seeded solver run (:func:`aerostat_core.optimize.solve`)."""
-    p = OptimizationProblem(*inputs_from_json(inputs_json), json.loads(bounds_json), objective)
-    return solve(p, solver, level, seed)
-
-
-#: Largest number of solver results kept for every session (the cache of :func:`solve_shared`).
-SHARED_RESULTS = 64
-_shared_lock = threading.Lock()
-
-
-@st.cache_resource(show_spinner=False)
-def _shared_results() -> OrderedDict:
-    """Solver results shared by every session, keyed by the request (an LRU of
-    :data:`SHARED_RESULTS`). A resource cache rather than ``st.cache_data``: the run draws its
-    progress bar while it runs, which a replayed ``st.cache_data`` call must never do."""
-    return OrderedDict()
+    """:func:`aerostat_core.sensitivity.two_variable_map` of the inputs (raises ValueError)."""
+    key = (
+        *cache.frozen_inputs(req, cfg),
+        str(x_var),
+        str(y_var),
+        bounds_items(ranges),
+        int(n),
+        bool(resize),
+    )
+    return cache.memo(
+        "sensitivity_map",
+        key,
+        lambda: two_variable_map(*key[:4], bounds_dict(key[4]), key[5], key[6]),
+        STUDY_RESULTS,
+    )
 
 
 def solve_shared(
-    inputs_json: str,
-    bounds_json: str,
+    req: Requirement,
+    cfg: Configuration,
+    bounds: Mapping[str, Sequence[float]] | Bounds,
     objective: str,
     solver: str,
     level: str,
     seed: int,
     progress: Any = None,
 ) -> OptimizationResult:
-    """:func:`cached_solve` that reports ``progress(fraction, text)`` after every batch (the
-    solver's own callback, which names the solver) when it has to compute; a request any
-    session has run before returns at once."""
-    key = (inputs_json, bounds_json, objective, solver, level, int(seed))
-    cache = _shared_results()
-    with _shared_lock:
-        if key in cache:
-            cache.move_to_end(key)
-            return cache[key]
-    p = OptimizationProblem(*inputs_from_json(inputs_json), json.loads(bounds_json), objective)
-    result = solve(p, solver, level, seed, progress=progress)
-    with _shared_lock:
-        cache[key] = result
-        while len(cache) > SHARED_RESULTS:
-            cache.popitem(last=False)
-    return result
+    """One seeded solver run (:func:`aerostat_core.optimize.solve`), shared by every session.
+
+    ``progress(fraction, text)`` is called after every batch (the solver's own callback, which
+    names the solver) only when the run has to compute; a request any session has run before
+    returns at once. A run interrupted from ``progress`` (Cancel) stores nothing.
+    """
+    key = (
+        *cache.frozen_inputs(req, cfg),
+        bounds_items(bounds),
+        str(objective),
+        str(solver),
+        str(level),
+        int(seed),
+    )
+
+    def compute() -> OptimizationResult:
+        problem = OptimizationProblem(*key[:2], bounds_dict(key[2]), objective)
+        return solve(problem, solver, level, int(seed), progress=progress)
+
+    return cache.memo("solve", key, compute, SHARED_RESULTS)
 
 
-@st.cache_data(max_entries=64, show_spinner=False)
+def cached_solve(
+    req: Requirement,
+    cfg: Configuration,
+    bounds: Mapping[str, Sequence[float]] | Bounds,
+    objective: str,
+    solver: str,
+    level: str,
+    seed: int,
+) -> OptimizationResult:
+    """:func:`solve_shared` without a progress callback (the same cache)."""
+    return solve_shared(req, cfg, bounds, objective, solver, level, seed)
+
+
+def _x_items(x: Mapping[str, float]) -> tuple[tuple[str, float], ...]:
+    """Design variables {name: value} as hashable items, sorted by name."""
+    return tuple(sorted((str(k), float(v)) for k, v in x.items()))
+
+
 def cached_pareto(
-    inputs_json: str, bounds_json: str, objective: str, limits: tuple, starts_json: str
+    req: Requirement,
+    cfg: Configuration,
+    bounds: Mapping[str, Sequence[float]] | Bounds,
+    objective: str,
+    limits: Sequence[float],
+    starts: Sequence[Mapping[str, float]] = (),
 ) -> ParetoFront:
-    """Epsilon-constraint front (:func:`aerostat_core.optimize.pareto_front`)."""
-    req, cfg = inputs_from_json(inputs_json)
-    return pareto_front(
-        req,
-        cfg,
-        json.loads(bounds_json),
-        list(limits),
-        objective=objective,
-        starts=json.loads(starts_json),
+    """Epsilon-constraint front (:func:`aerostat_core.optimize.pareto_front`), started from
+    ``starts`` (design-variable dicts; raises ValueError)."""
+    key = (
+        *cache.frozen_inputs(req, cfg),
+        bounds_items(bounds),
+        str(objective),
+        tuple(float(v) for v in limits),
+        tuple(_x_items(x) for x in starts),
+    )
+    return cache.memo(
+        "pareto",
+        key,
+        lambda: pareto_front(
+            *key[:2],
+            bounds_dict(key[2]),
+            list(key[4]),
+            objective=objective,
+            starts=[dict(x) for x in key[5]],
+        ),
+        STUDY_RESULTS,
     )
 
 
-@st.cache_data(max_entries=64, show_spinner=False)
-def cached_comparison(inputs_json: str, baseline_json: str, x_json: str) -> dict[str, Any]:
-    """Baseline (the design inputs as given) versus optimum (sized): change rows, thesis rows
-    and performance curves of both."""
-    req, _ = inputs_from_json(inputs_json)
-    _, cfg_base = inputs_from_json(baseline_json)
-    x = json.loads(x_json)
-    # each design once, from the shared cache, for both the change rows and the curves
-    d_base = cache.design_of(req, cfg_base)
-    d_opt = cache.design_of(req, optimum_configuration(cfg_base, x))
-    rows = design_change_rows(d_base, d_opt)
-    base, opt = curves_of(d_base), curves_of(d_opt)
-    return {
-        "changes": rows,
-        "thesis": thesis_comparison_rows(rows),
-        "baseline": base,
-        "optimum": opt,
-        "performance_rows": performance_comparison_rows(base, opt),
-    }
+def cached_comparison(
+    req: Requirement, cfg_base: Configuration, x: Mapping[str, float]
+) -> dict[str, Any]:
+    """Baseline (the design inputs ``cfg_base`` as given) versus optimum (variables ``x``, sized)
+    under the run's requirement ``req``: change rows, thesis rows and performance curves of
+    both."""
+    key = (*cache.frozen_inputs(req, cfg_base), _x_items(x))
+
+    def compute() -> dict[str, Any]:
+        req_k, base = key[:2]
+        # each design once, from the shared cache, for both the change rows and the curves
+        d_base = cache.design_of(req_k, base)
+        d_opt = cache.design_of(req_k, optimum_configuration(base, dict(key[2])))
+        rows = design_change_rows(d_base, d_opt)
+        b, o = curves_of(d_base), curves_of(d_opt)
+        return {
+            "changes": rows,
+            "thesis": thesis_comparison_rows(rows),
+            "baseline": b,
+            "optimum": o,
+            "performance_rows": performance_comparison_rows(b, o),
+        }
+
+    return cache.memo("optimum_comparison", key, compute, STUDY_RESULTS)
 
 
 # --- the optimisation job (chunked across tasks, cancellable) ------------------------------------
@@ -200,18 +258,20 @@ def _run_task(
     request: Mapping[str, Any], task: str, done: Mapping[str, Any], progress: Any = None
 ) -> Any:
     """Run one task of a job (a solver, or the Pareto front started from the best optimum); cached."""
+    req, cfg = cache.inputs_of(request["inputs"])
     if task == "pareto":
         best = best_result([v for k, v in done.items() if k != "pareto"])
-        starts = [best.x] if best is not None else []
         return cached_pareto(
-            request["inputs"],
+            req,
+            cfg,
             request["bounds"],
             request["objective"],
-            tuple(request["limits"]),
-            json.dumps(starts, sort_keys=True),
+            request["limits"],
+            [best.x] if best is not None else [],
         )
     return solve_shared(
-        request["inputs"],
+        req,
+        cfg,
         request["bounds"],
         request["objective"],
         task,

@@ -9,7 +9,6 @@ The rooms: :mod:`app_ui.optimize_form` (bound boxes, request), :mod:`app_ui.opti
 
 from __future__ import annotations
 
-import json
 from collections.abc import Mapping
 from typing import Any
 
@@ -34,7 +33,7 @@ from .optimize_form import (
     DISPLAY,
     RUN_LEVELS,
     SENS_RESOLUTION,
-    bounds_key,
+    bounds_items,
     build_request,
     inputs_from_json,
     is_thesis_preset,
@@ -182,9 +181,7 @@ def render_results(job: Mapping[str, Any], baseline_inputs_json: str) -> None:
         return
 
     st.subheader("Baseline versus optimum", anchor=False)
-    cmp = cached_comparison(
-        req_d["inputs"], baseline_inputs_json, json.dumps(best.x, sort_keys=True)
-    )
+    cmp = cached_comparison(req, inputs_from_json(baseline_inputs_json)[1], best.x)
     st.table(changes_styler(changes_frame(cmp["changes"])))
     st.caption(
         "Baseline: the design inputs as given (their volume if set, else sized). "
@@ -291,7 +288,7 @@ __all__ = [
     "changes_styler",
     "TASK_LABELS",
     "best_result",
-    "bounds_key",
+    "bounds_items",
     "build_request",
     "cached_comparison",
     "cached_map",

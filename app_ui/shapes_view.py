@@ -1,13 +1,13 @@
 """Shapes page and shape widgets: cached engine calls, frames and figures (no physics here).
 
 Everything numeric comes from :mod:`aerostat_core.shapes`, :mod:`aerostat_core.shape_comparison`,
-:mod:`aerostat_core.shape_optimize` and :mod:`aerostat_core.export`; this module only caches,
-tabulates and plots.
+:mod:`aerostat_core.shape_optimize` and :mod:`aerostat_core.export`; this module only caches
+(:func:`app_ui.cache.memo`, keyed by the frozen inputs and the study's parameters; shared by
+every session, read-only), tabulates and plots.
 """
 
 from __future__ import annotations
 
-import json
 from collections.abc import Mapping
 from typing import Any
 
@@ -18,7 +18,6 @@ import streamlit as st
 
 from aerostat_core.export import design_stl, gore_csv, gore_dxf, gore_pattern, gore_svg
 from aerostat_core.fields import column_label
-from aerostat_core.io import inputs_from_dict
 from aerostat_core.shape_comparison import (
     TABLE_SHAPES,
     THESIS_SHAPE_PRESET,  # noqa: F401 - re-exported for pages/7_Shapes.py
@@ -40,73 +39,79 @@ _COLOURS = {k: PALETTE[i] for i, k in enumerate(TABLE_SHAPES)}
 WIND_AXIS = "Wind speed at the aerostat [m/s]"
 
 
-def _inputs(inputs_json: str):
-    req, cfg = inputs_from_dict(json.loads(inputs_json))
-    return req.resolved(), cfg  # the limits as applied (rule-set values filled in)
-
-
 # --- cached engine calls -----------------------------------------------------------------------
-@st.cache_data(max_entries=4, show_spinner=False)
 def cached_comparisons() -> dict[str, Any]:
     """Thesis-preset and full-model comparisons, their rows and the notes (plain data)."""
-    t, f = thesis_shape_comparison(), full_model_shape_comparison()
-    return {
-        "thesis": {
-            "rows": table_2_2_rows(t),
-            "wind": t.wind.tolist(),
-            "blow_by": {k: v.tolist() for k, v in t.blow_by.items()},
-        },
-        "full": {
-            "rows": table_2_2_rows(f),
-            "wind": f.wind.tolist(),
-            "blow_by": {k: v.tolist() for k, v in f.blow_by.items()},
-        },
-        "reference": thesis_reference_rows(),
-        "notes": comparison_notes(t, f),
-    }
+
+    def compute() -> dict[str, Any]:
+        t, f = thesis_shape_comparison(), full_model_shape_comparison()
+        return {
+            "thesis": {
+                "rows": table_2_2_rows(t),
+                "wind": t.wind.tolist(),
+                "blow_by": {k: v.tolist() for k, v in t.blow_by.items()},
+            },
+            "full": {
+                "rows": table_2_2_rows(f),
+                "wind": f.wind.tolist(),
+                "blow_by": {k: v.tolist() for k, v in f.blow_by.items()},
+            },
+            "reference": thesis_reference_rows(),
+            "notes": comparison_notes(t, f),
+        }
+
+    return cache.memo("shape_comparisons", (), compute, 4)
 
 
-@st.cache_data(max_entries=4, show_spinner=False)
 def cached_library(volume: float = 100.0) -> list[dict]:
     """:func:`aerostat_core.shape_comparison.shape_dimensions_rows` at ``volume`` [m3]."""
-    return shape_dimensions_rows(volume)
+    key = (float(volume),)
+    return cache.memo("shape_library", key, lambda: shape_dimensions_rows(key[0]), 4)
 
 
-@st.cache_data(max_entries=32, show_spinner=False)
 def cached_shape_study(inputs_json: str, objective: str) -> list[dict]:
     """Rows of :func:`aerostat_core.shape_optimize.optimize_shapes` (SLSQP, quick) for the
     inputs."""
-    req, cfg = _inputs(inputs_json)
-    return optimize_shapes(req, cfg, objective=objective).rows()
+    key = (*cache.inputs_of(inputs_json), str(objective))
+    return cache.memo(
+        "shape_study", key, lambda: optimize_shapes(*key[:2], objective=key[2]).rows(), 32
+    )
 
 
-@st.cache_data(max_entries=32, show_spinner=False)
 def cached_sweeps(inputs_json: str, n_points: int = 15) -> dict[str, dict[str, list]]:
     """:func:`aerostat_core.shape_optimize.fineness_sweeps` as plain lists."""
-    req, cfg = _inputs(inputs_json)
-    out = {}
-    for s, sw in fineness_sweeps(req, cfg, n_points=n_points).items():
-        out[s] = {
-            "f": sw.fineness_ratio.tolist(),
-            "mass": sw.total_mass.tolist(),
-            "volume": sw.volume.tolist(),
-            "feasible": sw.feasible.tolist(),
-        }
-    return out
+    key = (*cache.inputs_of(inputs_json), int(n_points))
+
+    def compute() -> dict[str, dict[str, list]]:
+        out = {}
+        for s, sw in fineness_sweeps(*key[:2], n_points=key[2]).items():
+            out[s] = {
+                "f": sw.fineness_ratio.tolist(),
+                "mass": sw.total_mass.tolist(),
+                "volume": sw.volume.tolist(),
+                "feasible": sw.feasible.tolist(),
+            }
+        return out
+
+    return cache.memo("shape_sweeps", key, compute, 32)
 
 
-@st.cache_data(max_entries=16, show_spinner=False)
 def cached_exports(inputs_json: str, n_gores: int, seam_mm: float) -> dict[str, bytes]:
     """STL, DXF, SVG and CSV bytes of the design of the inputs."""
-    d = cache.cached_design(inputs_json)  # the design the page already made
-    p = gore_pattern(d, int(n_gores), float(seam_mm) / 1000.0)
-    return {
-        "stl": design_stl(d),
-        "dxf": gore_dxf(p),
-        "svg": gore_svg(p),
-        "csv": gore_csv(p).encode("utf-8"),
-        "area": f"{p.pattern_area:.2f} m² of gores for {p.hull_area:.2f} m² of hull",
-    }
+    key = (*cache.inputs_of(inputs_json), int(n_gores), float(seam_mm))
+
+    def compute() -> dict[str, bytes]:
+        d = cache.design_of(*key[:2])  # the design the page already made
+        p = gore_pattern(d, key[2], key[3] / 1000.0)
+        return {
+            "stl": design_stl(d),
+            "dxf": gore_dxf(p),
+            "svg": gore_svg(p),
+            "csv": gore_csv(p).encode("utf-8"),
+            "area": f"{p.pattern_area:.2f} m² of gores for {p.hull_area:.2f} m² of hull",
+        }
+
+    return cache.memo("exports", key, compute, 16)
 
 
 # --- frames ----------------------------------------------------------------------------------
@@ -290,7 +295,9 @@ def sweeps_figure(sweeps: Mapping[str, Mapping[str, list]]) -> go.Figure:
                 height=440,
                 xaxis=dict(
                     title=dict(text=column_label("configuration.hull.fineness_ratio")),
-                    hoverformat=formats.axis_hover(column_label("configuration.hull.fineness_ratio")),
+                    hoverformat=formats.axis_hover(
+                        column_label("configuration.hull.fineness_ratio")
+                    ),
                 ),
                 yaxis=dict(
                     title=dict(text="Total mass [kg]"),

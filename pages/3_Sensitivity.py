@@ -3,8 +3,6 @@ and a two-variable map of total mass with the blow-by-limit contour."""
 
 from __future__ import annotations
 
-import json
-
 import streamlit as st
 
 from aerostat_core.optimize import VARIABLE_INFO, VARIABLES
@@ -94,13 +92,12 @@ try:  # the boxes as typed: a decimal comma is a decimal point, bounds checked i
 except ValueError as exc:
     st.error(widgets.plain(short(f"Ranges: {exc}")), icon=":material/error:")
     ranges = None
-ranges_json = json.dumps({k: list(v) for k, v in (ranges or {}).items()}, sort_keys=True)
 
 st.subheader("One factor at a time", anchor=False)
 try:
     if ranges is None:
         raise ValueError("fix the ranges above first")
-    res = view.cached_sensitivity(inputs_json, ranges_json, n_points, sweep_mode == "resize")
+    res = view.cached_sensitivity(req, cfg, ranges, n_points, sweep_mode == "resize")
 except ValueError as exc:
     st.error(widgets.plain(short(f"Cannot compute the sweeps: {exc}")), icon=":material/error:")
 else:
@@ -145,7 +142,7 @@ elif x_var == y_var:
     )
 else:
     try:
-        smap = view.cached_map(inputs_json, x_var, y_var, ranges_json, n_map, map_mode == "resize")
+        smap = view.cached_map(req, cfg, x_var, y_var, ranges, n_map, map_mode == "resize")
     except ValueError as exc:
         st.error(widgets.plain(short(f"Cannot compute the map: {exc}")), icon=":material/error:")
     else:

@@ -66,6 +66,7 @@ from __future__ import annotations
 from ..deprecation import deprecated_aliases
 from .batch import (
     ACTIVE_TOL,
+    BOUNDS_REASONS,
     CONSTRAINT_TEXT,
     CONSTRAINTS,
     DEFAULT_BOUNDS,
@@ -73,6 +74,7 @@ from .batch import (
     OBJECTIVES,
     VARIABLE_INFO,
     VARIABLES,
+    BoundsError,
     DesignBatch,
     check_bounds,
     evaluate_designs,
@@ -102,6 +104,8 @@ from .tracking import History, OptimizationCancelled, OptimizationResult
 
 __all__ = [
     "ACTIVE_TOL",
+    "BOUNDS_REASONS",
+    "BoundsError",
     "CONSTRAINTS",
     "CONSTRAINT_TEXT",
     "DEFAULT_BOUNDS",

@@ -392,48 +392,120 @@ def evaluate_designs(
     )
 
 
+#: Why :func:`check_bounds` rejects bounds (:attr:`BoundsError.reason`).
+BOUNDS_REASONS = (
+    "not a mapping",  # the bounds are not a {variable: (lower, upper)} mapping
+    "no variables",  # the mapping is empty
+    "unknown",  # a name that is not a design variable
+    "not numbers",  # a value that is not two numbers
+    "not finite",  # a bound that is NaN or infinite
+    "order",  # lower > upper
+    "empty",  # lower == upper
+    "range",  # the pair leaves the variable's valid range
+)
+
+
+class BoundsError(ValueError):
+    """Rejected bounds of the design variables, with what a form needs to word the problem in
+    its own labels and units (the message itself quotes engine units).
+
+    Attributes
+    ----------
+    reason : str
+        One of :data:`BOUNDS_REASONS`.
+    variable : str
+        The design variable (a key of :data:`VARIABLE_INFO`, or the unknown name as given); ""
+        when the whole mapping is wrong.
+    label, unit : str
+        The variable's label and unit from the field registry ("" when unknown).
+    lower, upper : float or None
+        The bounds as given [unit of :data:`VARIABLE_INFO`]; None when they are not numbers.
+    valid : tuple of float or None
+        The variable's valid range (lowest, highest) in the same unit; None when unknown.
+    """
+
+    def __init__(
+        self,
+        message: str,
+        reason: str,
+        variable: str = "",
+        lower: float | None = None,
+        upper: float | None = None,
+    ) -> None:
+        super().__init__(message)
+        if reason not in BOUNDS_REASONS:
+            raise AssertionError(f"unknown bounds reason {reason!r}")
+        self.reason, self.variable = reason, variable
+        self.lower, self.upper = lower, upper
+        info = VARIABLE_INFO.get(variable)
+        self.label = info[0] if info else ""
+        self.unit = info[1] if info else ""
+        self.valid = info[2] if info else None
+
+
 def check_bounds(bounds: Any) -> dict[str, tuple[float, float]]:
-    """Validate a bounds mapping {variable: (lower, upper)}; raise ValueError naming the cause.
+    """Validate a bounds mapping {variable: (lower, upper)}: the one check of design-variable
+    bounds (the optimiser, the sensitivity sweeps and the app's forms all call it).
 
     Parameters
     ----------
     bounds : mapping
         Keys among :data:`VARIABLES`; values pairs of finite numbers (units of
         :data:`VARIABLE_INFO`), lower < upper, inside the engine's valid range.
+
+    Returns
+    -------
+    dict
+        {variable: (lower, upper)} as floats, in the order given.
+
+    Raises
+    ------
+    BoundsError
+        A ``ValueError`` naming the variable, the bounds and the valid range, with the
+        details as attributes (:attr:`BoundsError.reason` says which rule failed).
     """
     if not isinstance(bounds, Mapping):
-        raise ValueError("bounds must be a mapping {variable: (lower, upper)}")
+        raise BoundsError("bounds must be a mapping {variable: (lower, upper)}", "not a mapping")
     if len(bounds) == 0:
-        raise ValueError(
-            "bounds are empty: give (lower, upper) for at least one of " + ", ".join(VARIABLES)
+        raise BoundsError(
+            "bounds are empty: give (lower, upper) for at least one of " + ", ".join(VARIABLES),
+            "no variables",
         )
     out: dict[str, tuple[float, float]] = {}
     for name, pair in bounds.items():
         if name not in VARIABLE_INFO:
-            raise ValueError(
-                f"unknown design variable {name!r} in bounds; valid: {', '.join(VARIABLES)}"
+            raise BoundsError(
+                f"unknown design variable {name!r} in bounds; valid: {', '.join(VARIABLES)}",
+                "unknown",
+                str(name),
             )
         label, unit, (vlo, vhi) = VARIABLE_INFO[name]
         u = "" if unit == "-" else f" {unit}"
         try:
             lo, hi = (float(v) for v in pair)
         except (TypeError, ValueError):
-            raise ValueError(
-                f"bounds of {name} ({label}) must be two numbers (lower, upper), got {pair!r}"
+            raise BoundsError(
+                f"bounds of {name} ({label}) must be two numbers (lower, upper), got {pair!r}",
+                "not numbers",
+                name,
             ) from None
+        what = f"{name} ({label})"
         if not (math.isfinite(lo) and math.isfinite(hi)):
-            raise ValueError(f"bounds of {name} ({label}) must be finite, got ({lo:g}, {hi:g})")
+            msg = f"bounds of {what} must be finite, got ({lo:g}, {hi:g})"
+            raise BoundsError(msg, "not finite", name, lo, hi)
         if lo > hi:
-            raise ValueError(f"lower bound {lo:g}{u} > upper bound {hi:g}{u} for {name} ({label})")
+            msg = f"lower bound {lo:g}{u} > upper bound {hi:g}{u} for {what}"
+            raise BoundsError(msg, "order", name, lo, hi)
         if lo == hi:
-            raise ValueError(
-                f"bounds of {name} ({label}) are empty: lower = upper = {lo:g}{u}; to hold it "
-                "fixed, leave it out of the bounds (its configuration value is then used)"
+            msg = (
+                f"bounds of {what} are empty: lower = upper = {lo:g}{u}; to hold it fixed, "
+                "leave it out of the bounds (its configuration value is then used)"
             )
+            raise BoundsError(msg, "empty", name, lo, hi)
         if lo < vlo or hi > vhi:
-            raise ValueError(
-                f"bounds ({lo:g}, {hi:g}){u} of {name} ({label}) leave the valid range "
-                f"[{vlo:g}, {vhi:g}]{u}"
+            msg = (
+                f"bounds ({lo:g}, {hi:g}){u} of {what} leave the valid range [{vlo:g}, {vhi:g}]{u}"
             )
+            raise BoundsError(msg, "range", name, lo, hi)
         out[name] = (lo, hi)
     return out

@@ -279,7 +279,12 @@ def test_cancelled_run_keeps_finished_tasks(opt):
     job = state[view.JOB_KEY]
     assert job["tasks"] == ["slsqp", "pso", "pareto"]
     job["done"]["slsqp"] = view.cached_solve(
-        request["inputs"], request["bounds"], "total_mass", "slsqp", "quick", 0
+        *view.inputs_from_json(request["inputs"]),
+        request["bounds"],
+        "total_mass",
+        "slsqp",
+        "quick",
+        0,
     )
     job["cancelled"] = True
     opt.session_state[view.JOB_KEY] = job
@@ -315,7 +320,7 @@ def test_progress_is_reported_per_batch_naming_the_solver_and_shared_runs_skip_i
 
     r = _quick_request()
     calls: list[tuple[float, str]] = []
-    args = (r["inputs"], r["bounds"], "total_mass", "pso", "quick", 123)
+    args = (*view.inputs_from_json(r["inputs"]), r["bounds"], "total_mass", "pso", "quick", 123)
     first = view.solve_shared(*args, progress=lambda f, t: calls.append((f, t)))
     # one report per generation of the swarm (quick: 20), each naming the solver
     assert len(calls) >= 20
@@ -399,7 +404,7 @@ def test_optimise_reads_a_decimal_comma_as_a_point(opt):
     opt.button(key="opt_run").click().run()
     assert not opt.exception and not messages(opt, "error")
     request = opt.session_state["opt_job"]["request"]
-    bounds = json.loads(request["bounds"])
+    bounds = {name: (lo, hi) for name, lo, hi in request["bounds"]}
     assert bounds["area_change"][0] == -12.5
     assert bounds["position"][1] == pytest.approx(0.725)
     assert json.loads(request["inputs"])["requirement"]["blow_by_limit"] == 53.5

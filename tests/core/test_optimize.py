@@ -13,14 +13,18 @@ from hypothesis import strategies as st
 
 from aerostat_core import design, thesis_baseline, thesis_optimized
 from aerostat_core.optimize import (
+    BOUNDS_REASONS,
     CONSTRAINTS,
     DEFAULT_BOUNDS,
     FEASIBILITY_TOL,
     THESIS_REPORTED,
+    VARIABLE_INFO,
+    BoundsError,
     FunctionProblem,
     OptimizationProblem,
     agreement,
     baseline_vs_optimum,
+    check_bounds,
     compare_solvers,
     comparison_rows,
     default_limits,
@@ -347,6 +351,47 @@ def test_bad_bounds_raise_a_clear_value_error(bounds, words) -> None:
         OptimizationProblem(*thesis_baseline(), bounds=bounds)
     for w in words:
         assert w in str(exc.value)
+
+
+@pytest.mark.parametrize(
+    "bounds, reason, variable, lower, upper",
+    [
+        ([("position", 0.6, 0.7)], "not a mapping", "", None, None),
+        ({}, "no variables", "", None, None),
+        ({"span": (1.0, 2.0)}, "unknown", "span", None, None),
+        ({"fineness_ratio": ("a", 3.0)}, "not numbers", "fineness_ratio", None, None),
+        ({"fineness_ratio": (float("nan"), 3.0)}, "not finite", "fineness_ratio", np.nan, 3.0),
+        ({"fineness_ratio": (4.5, 2.5)}, "order", "fineness_ratio", 4.5, 2.5),
+        ({"area_change": (10.0, 10.0)}, "empty", "area_change", 10.0, 10.0),
+        ({"position": (0.6, 0.99)}, "range", "position", 0.6, 0.99),
+        ({"position": (0.3, 0.7)}, "range", "position", 0.3, 0.7),
+    ],
+)
+def test_bounds_error_carries_the_reason_variable_bounds_and_valid_range(
+    bounds, reason, variable, lower, upper
+) -> None:
+    """The one bounds check raises a structured error a form can word in its own units."""
+    with pytest.raises(BoundsError) as exc:
+        check_bounds(bounds)
+    e = exc.value
+    assert isinstance(e, ValueError) and e.reason == reason and e.reason in BOUNDS_REASONS
+    assert e.variable == variable
+    for got, want in ((e.lower, lower), (e.upper, upper)):  # the bounds as given
+        assert got is None if want is None else np.array_equal(got, want, equal_nan=True)
+    if variable in VARIABLE_INFO:
+        label, unit, valid = VARIABLE_INFO[variable]
+        assert (e.label, e.unit, e.valid) == (label, unit, valid)
+    else:
+        assert e.valid is None and e.label == ""
+    if variable == "position":
+        assert e.valid == (0.4, 0.95)  # the fraction of the hull length, the engine's unit
+
+
+def test_bounds_inside_the_valid_range_pass_unchanged() -> None:
+    assert check_bounds({"position": (0.4, 0.95), "fineness_ratio": (3, 4)}) == {
+        "position": (0.4, 0.95),
+        "fineness_ratio": (3.0, 4.0),
+    }
 
 
 @settings(max_examples=40, deadline=None)

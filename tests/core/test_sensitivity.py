@@ -133,6 +133,10 @@ def test_resized_map_sizes_every_point(thesis) -> None:
             lambda r, c: one_at_a_time(r, c, ranges={"position": (0.5, 0.99)}),
             ["position", "valid range"],
         ),
+        (
+            lambda r, c: one_at_a_time(r, c, ranges=[("position", 0.6, 0.7)]),
+            ["bounds must be a mapping"],
+        ),
         (lambda r, c: two_variable_map(r, c, "position", "position"), ["two different"]),
         (lambda r, c: two_variable_map(r, c, "span", "position"), ["span", "unknown"]),
         (lambda r, c: two_variable_map(r, c, n=500), ["n", "[2, 101]"]),

@@ -1,0 +1,199 @@
+"""The study caches (Sensitivity, Optimise, Envelope, Shapes, Dynamics) share the app's one
+process-wide store, keyed by the frozen inputs and hashable request values, never JSON text.
+
+Each test uses inputs no other test computes (a payload of 11.37 kg etc.), and the engine
+calls are replaced by counters, so a count of 1 means one computation for equal requests."""
+
+from __future__ import annotations
+
+import json
+from dataclasses import replace
+
+import pytest
+
+from aerostat_core import Configuration, Requirement, thesis_baseline
+from aerostat_core.io import inputs_from_dict, inputs_to_dict
+from app_ui import cache, dynamics_view, envelope_view, optimize_jobs, shapes_view
+from app_ui.state import inputs_key
+
+
+def _inputs(payload: float) -> tuple[Requirement, Configuration]:
+    """Inputs built from scratch every call (equal values, distinct objects)."""
+    req, cfg = thesis_baseline()
+    return inputs_from_dict(inputs_to_dict(replace(req, payload_mass=payload), cfg))
+
+
+def test_memo_computes_once_per_distinct_key_and_never_stores_a_failure():
+    calls = []
+
+    def compute(value):
+        calls.append(value)
+        if value == "bad":
+            raise ValueError("rejected")
+        return value
+
+    kind = "test_memo_counts"
+    a, b = _inputs(11.11), _inputs(11.11)
+    assert a[0] is not b[0] and a == b  # built separately, equal
+    key_a, key_b = cache.frozen_inputs(*a), cache.frozen_inputs(*b)
+    assert cache.memo(kind, key_a, lambda: compute("x")) == "x"
+    assert cache.memo(kind, key_b, lambda: compute("y")) == "x"  # hit: equal frozen inputs
+    assert calls == ["x"]
+    other = cache.frozen_inputs(*_inputs(11.12))  # one field differs
+    assert cache.memo(kind, other, lambda: compute("z")) == "z"
+    assert calls == ["x", "z"]
+    for _ in range(2):  # a failure stores nothing: the next call computes again
+        with pytest.raises(ValueError):
+            cache.memo(kind, ("bad",), lambda: compute("bad"))
+    assert calls == ["x", "z", "bad", "bad"]
+    keys = cache.memo_keys(kind)
+    assert keys == [key_a, other]
+    assert all(isinstance(k[0], Requirement) and isinstance(k[1], Configuration) for k in keys)
+    with pytest.raises(TypeError):  # an unhashable part (a dict) is refused, never stringified
+        cache.memo(kind, ({"a": 1},), lambda: 1)
+
+
+def test_memo_keeps_at_most_its_size():
+    kind = "test_memo_size"
+    for i in range(5):
+        cache.memo(kind, (i,), lambda i=i: i, size=3)
+    assert cache.memo_keys(kind) == [(2,), (3,), (4,)]
+    assert cache.peek(kind, (1,)) is None and cache.peek(kind, (2,)) == 2
+
+
+def test_sensitivity_is_keyed_by_the_frozen_inputs_and_the_bounds(monkeypatch):
+    calls = []
+
+    def fake(req, cfg, ranges, n_points, resize):
+        calls.append((req.payload_mass, ranges, n_points, resize))
+        return object()
+
+    monkeypatch.setattr(optimize_jobs, "one_at_a_time", fake)
+    ranges = {"position": (0.6, 0.7), "fineness_ratio": (2.5, 4.0)}
+    first = optimize_jobs.cached_sensitivity(*_inputs(11.37), ranges, 7, True)
+    again = optimize_jobs.cached_sensitivity(
+        *_inputs(11.37), {"fineness_ratio": [2.5, 4.0], "position": [0.6, 0.7]}, 7, 1
+    )
+    assert again is first and len(calls) == 1  # equal request built separately: one compute
+    assert calls[0][1] == {"fineness_ratio": (2.5, 4.0), "position": (0.6, 0.7)}
+    optimize_jobs.cached_sensitivity(*_inputs(11.38), ranges, 7, True)  # payload differs
+    optimize_jobs.cached_sensitivity(*_inputs(11.37), {"position": (0.6, 0.71)}, 7, True)
+    assert len(calls) == 3
+    key = next(k for k in cache.memo_keys("sensitivity") if k[0].payload_mass == 11.37)
+    req, cfg, bounds, n, resize = key
+    assert isinstance(req, Requirement) and isinstance(cfg, Configuration)
+    assert req == req.resolved()  # the limits as applied
+    assert bounds == (("fineness_ratio", 2.5, 4.0), ("position", 0.6, 0.7)) and (n, resize) == (
+        7,
+        True,
+    )
+    assert not any(
+        isinstance(part, str) and "{" in part for k in cache.memo_keys("sensitivity") for part in k
+    )
+
+
+def test_a_solver_run_is_shared_and_reports_progress_only_when_it_computes(monkeypatch):
+    calls = []
+
+    def fake(problem, solver, level, seed, progress=None):
+        calls.append((problem.requirement.payload_mass, solver, seed))
+        if progress is not None:
+            progress(1.0, "Fake: done")
+        return object()
+
+    monkeypatch.setattr(optimize_jobs, "solve", fake)
+    shown = []
+    args = ({"position": (0.6, 0.7)}, "total_mass", "pso", "quick", 5)
+    first = optimize_jobs.solve_shared(
+        *_inputs(11.41), *args, progress=lambda f, t: shown.append(t)
+    )
+    second = optimize_jobs.cached_solve(*_inputs(11.41), *args)  # another session, same request
+    assert second is first and calls == [(11.41, "pso", 5)] and shown == ["Fake: done"]
+    optimize_jobs.cached_solve(*_inputs(11.41), *args[:-1], 6)  # another seed
+    assert len(calls) == 2
+
+
+def test_a_cancelled_run_is_not_stored(monkeypatch):
+    class Cancelled(Exception):  # what Streamlit raises from the progress bar on Cancel
+        pass
+
+    def fake(problem, solver, level, seed, progress=None):
+        progress(0.5, "half")
+        return object()
+
+    def cancel(frac, text):
+        raise Cancelled
+
+    monkeypatch.setattr(optimize_jobs, "solve", fake)
+    args = (*_inputs(11.43), {"position": (0.6, 0.7)}, "total_mass", "pso", "quick", 0)
+    with pytest.raises(Cancelled):
+        optimize_jobs.solve_shared(*args, progress=cancel)
+    assert not [k for k in cache.memo_keys("solve") if k[0].payload_mass == 11.43]
+    assert optimize_jobs.solve_shared(*args, progress=lambda f, t: None) is not None
+
+
+def test_page_studies_key_their_json_text_inputs_by_the_frozen_inputs(monkeypatch):
+    """Envelope and Shapes take the session's inputs JSON: two texts of equal inputs (keys in
+    another order) hit one entry, keyed by the frozen inputs."""
+    calls = []
+    monkeypatch.setattr(envelope_view, "operating_envelope", lambda d: calls.append(d) or "env")
+    monkeypatch.setattr(
+        shapes_view, "optimize_shapes", lambda r, c, objective: calls.append(objective) or _Rows()
+    )
+    d = inputs_to_dict(*_inputs(11.47))
+    text = inputs_key(d)
+    shuffled = json.dumps({k: d[k] for k in reversed(list(d))})
+    assert shuffled != text
+    assert envelope_view.cached_envelope(text) == envelope_view.cached_envelope(shuffled) == "env"
+    assert shapes_view.cached_shape_study(text, "volume") == shapes_view.cached_shape_study(
+        shuffled, "volume"
+    )
+    assert len(calls) == 2
+    (key,) = [k for k in cache.memo_keys("envelope") if k[0].payload_mass == 11.47]
+    assert key == cache.frozen_inputs(*_inputs(11.47))
+
+
+class _Rows:
+    def rows(self):
+        return [{"shape": "npl"}]
+
+
+def test_dynamics_store_key_is_the_frozen_request():
+    req, cfg = _inputs(11.53)
+    a = {
+        "source": "Current design",
+        "inputs": inputs_to_dict(req, cfg),
+        "speed": 10.0,
+        "gust": {"u": 5.0, "w": 0.0},
+    }
+    b = {
+        "gust": {"w": 0, "u": 5},
+        "speed": 10,
+        "inputs": json.loads(json.dumps(a["inputs"])),
+        "source": "Current design",
+    }
+    ka, kb = dynamics_view.request_key(a), dynamics_view.request_key(b)
+    assert ka != kb  # different texts of the same request
+    frozen = dynamics_view.frozen_request(ka)
+    assert frozen == dynamics_view.frozen_request(kb) and hash(frozen) == hash(
+        dynamics_view.frozen_request(kb)
+    )
+    assert frozen[0] == cache.frozen_inputs(req, cfg)
+    assert dict(frozen[1])["speed"] == 10.0 and dict(dict(frozen[1])["gust"]) == {"u": 5, "w": 0}
+    thesis = dynamics_view.frozen_request(dynamics_view.request_key({**a, "inputs": None}))
+    assert thesis[0] is None
+
+
+def test_freeze_makes_plain_data_hashable():
+    assert cache.freeze({"b": [1, {"c": 2}], "a": None}) == (("a", None), ("b", (1, (("c", 2),))))
+    with pytest.raises(TypeError):
+        cache.freeze({"a": {1, 2}})
+
+
+def test_a_dynamics_request_whose_inputs_no_longer_read_is_not_stored_and_says_why():
+    bad = inputs_to_dict(*_inputs(11.59))
+    bad["requirement"]["payload_mass"] = -1.0
+    key = dynamics_view.request_key({"source": "Current design", "inputs": bad, "speed": 10.0})
+    assert dynamics_view.stored(key) is None
+    with pytest.raises(ValueError, match="payload_mass"):
+        dynamics_view.run_cached(key)
