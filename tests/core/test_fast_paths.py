@@ -1,0 +1,166 @@
+"""The engine's fast paths give the numbers of the plain formulas they replace.
+
+The tether march steps a complex stacked state and the trim root-finder evaluates an
+alpha-expanded moment (both for speed: numpy's per-call overhead dominates on the usual small
+arrays). Here they are checked against the plain definitions over hypothesis-drawn inputs:
+the Heun march written with :func:`aerostat_core.tether._line_load` on separate arrays, and
+:func:`aerostat_core.statics.moment_about_confluence` / ``aerodynamic_moment``.
+"""
+
+from dataclasses import replace
+
+import numpy as np
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from aerostat_core import HullSpec, TetherSpec, design, thesis_baseline
+from aerostat_core.shapes import SHAPE_INFO
+from aerostat_core.statics import (
+    _MomentKernel,
+    aerodynamic_moment,
+    axial_drag_coefficient,
+    equilibrium,
+    moment_about_confluence,
+    weathervane_slope,
+)
+from aerostat_core.tether import _line_load, march
+
+
+def plain_march(tx0, tz0, length, spec, rho, u_nodes, w, segments):
+    """Heun's method on the tether ODE, one array per component (the definition)."""
+    ds = length / segments
+    h = 0.5 * ds
+    kn = 0.5 * rho * spec.diameter * spec.normal_drag_coefficient
+    kt = 0.5 * rho * np.pi * spec.diameter * spec.tangential_drag_coefficient
+    inv_ea = 1.0 / spec.axial_stiffness
+    tx, tz, x, z = [np.asarray(tx0, float)], [np.asarray(tz0, float)], [0.0], [0.0]
+    for i in range(segments):
+        fx1, fz1, cx1, cz1 = _line_load(tx[-1], tz[-1], u_nodes[i], kn, kt, w, inv_ea)
+        fx2, fz2, cx2, cz2 = _line_load(
+            tx[-1] + ds * fx1, tz[-1] + ds * fz1, u_nodes[i + 1], kn, kt, w, inv_ea
+        )
+        tx.append(tx[-1] + h * (fx1 + fx2))
+        tz.append(tz[-1] + h * (fz1 + fz2))
+        x.append(x[-1] - h * (cx1 + cx2))
+        z.append(z[-1] - h * (cz1 + cz2))
+    return tuple(np.array(np.broadcast_arrays(*a)) for a in (tx, tz, x, z))
+
+
+@settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(
+    n=st.integers(1, 7),
+    segments=st.integers(1, 60),
+    length=st.floats(10.0, 2000.0),
+    diameter=st.floats(1e-3, 0.03),
+    cdn=st.floats(0.01, 2.0),
+    cdt=st.floats(0.0, 0.05),
+    ea=st.one_of(st.just(np.inf), st.floats(1e4, 1e8)),
+    w=st.floats(0.0, 5.0),
+    rho=st.floats(0.3, 1.3),
+    u_top=st.floats(-40.0, 40.0),
+    shear=st.floats(0.0, 0.5),
+    seed=st.integers(0, 2**16),
+)
+def test_march_is_the_plain_heun_scheme(
+    n, segments, length, diameter, cdn, cdt, ea, w, rho, u_top, shear, seed
+):
+    rng = np.random.default_rng(seed)
+    tx0 = rng.uniform(-50.0, 2000.0, n)
+    tz0 = rng.uniform(-100.0, 5000.0, n)
+    spec = TetherSpec("t", 0.02, diameter, cdn, cdt, 1e4, ea)
+    heights = np.linspace(length, 0.0, segments + 1)[:, None] * np.ones(n)
+    speed = u_top * rng.uniform(0.5, 1.0, n)
+
+    def wind(z):
+        return speed * (np.maximum(z, 1.0) / length) ** shear
+
+    got = march(tx0, tz0, length, spec, rho, wind, heights, w, segments)
+    ref = plain_march(tx0, tz0, length, spec, rho, wind(heights), w, segments)
+    for a, b in zip(got, ref):
+        assert a.shape == b.shape == (segments + 1, n)
+        scale = np.max(np.abs(b)) + 1e-300
+        # the same floats to rounding (|T| is hypot; e is T times 1/|T|); over a whole line
+        assert np.max(np.abs(a - b)) <= 1e-11 * scale
+
+
+def test_march_keeps_the_batch_shape():
+    spec = TetherSpec("t", 0.02, 0.005, 1.0, 0.01, 1e4, 1e6)
+    heights = np.linspace(300.0, 0.0, 11).reshape(11, 1, 1) * np.ones((1, 2, 3))
+    tx, tz, x, z = march(
+        np.full((2, 3), 80.0),
+        900.0,
+        300.0,
+        spec,
+        1.1,
+        lambda zz: 10.0 * np.ones_like(zz),
+        heights,
+        0.2,
+        10,
+    )
+    assert tx.shape == tz.shape == x.shape == z.shape == (11, 2, 3)
+    assert np.all(x[0] == 0.0) and np.all(z[-1] < -250.0)
+
+
+@pytest.mark.parametrize("shape", list(SHAPE_INFO))
+@settings(max_examples=10, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(
+    alpha_deg=st.lists(st.floats(-85.0, 85.0), min_size=1, max_size=6),
+    speed=st.floats(0.0, 60.0),
+    given_cd0=st.booleans(),
+)
+def test_moment_kernel_is_the_moment_of_the_loads(shape, alpha_deg, speed, given_cd0):
+    req, cfg = thesis_baseline()
+    aero = replace(cfg.aero, hull_axial_drag=0.03) if given_cd0 else cfg.aero
+    cfg = replace(cfg, hull=HullSpec(shape=shape, volume=170.0), aero=aero)
+    af = _airframe(req, cfg)
+    alpha = np.radians(np.asarray(alpha_deg))
+    cd0 = axial_drag_coefficient(af, aero, speed)
+    kernel = _MomentKernel(af, aero, speed, cd0)
+    # rounding of terms of the size of buoyancy x length and q V^(2/3) x length, which cancel
+    # near a trim: a few ulp of those
+    q = 0.5 * af.air_density * speed**2
+    scale = float((af.buoyancy + q * af.hull.reference_area) * af.hull.length)
+    ref = moment_about_confluence(af, aero, alpha, speed, cd0)
+    assert np.max(np.abs(kernel(alpha) - ref)) <= 1e-14 * (np.max(np.abs(ref)) + scale)
+    about_cv = kernel.about(af.hull.xi_cb)
+    ref = aerodynamic_moment(af, aero, alpha, speed, af.hull.xi_cb, cd0)
+    assert np.max(np.abs(about_cv(alpha) - ref)) <= 1e-14 * (np.max(np.abs(ref)) + scale)
+
+
+_AIRFRAMES = {}
+
+
+def _airframe(req, cfg):
+    key = (cfg.hull.shape, cfg.aero.hull_axial_drag)
+    if key not in _AIRFRAMES:
+        _AIRFRAMES[key] = design(req, cfg).airframe
+    return _AIRFRAMES[key]
+
+
+@pytest.mark.parametrize("shape", ["npl", "lotte", "sphere", "helikite"])
+def test_trim_is_a_root_of_the_plain_moment(shape):
+    """The root-finder on the kernel trims where the plain moment is zero (to its 1e-12 rad
+    bracket), with the plain moment's slope there; the weathervane slope likewise."""
+    req, cfg = thesis_baseline()
+    cfg = replace(cfg, hull=HullSpec(shape=shape, volume=170.0))
+    af = _airframe(req, cfg)
+    speed = np.linspace(0.0, 40.0, 17)
+    eq = equilibrium(af, cfg.aero, speed)
+    assert eq.found.all()
+    h = 1e-9
+    lo = moment_about_confluence(af, cfg.aero, eq.alpha - h, speed)
+    hi = moment_about_confluence(af, cfg.aero, eq.alpha + h, speed)
+    assert np.all(lo >= 0.0) and np.all(hi <= 0.0)  # a falling zero crossing within 1e-9 rad
+    d = 1e-5
+    slope = (
+        moment_about_confluence(af, cfg.aero, eq.alpha + d, speed)
+        - moment_about_confluence(af, cfg.aero, eq.alpha - d, speed)
+    ) / (2 * d)
+    np.testing.assert_allclose(eq.moment_slope, slope, rtol=1e-9, atol=1e-6)
+    wv = weathervane_slope(af, cfg.aero, eq.alpha, speed)
+    ref = (
+        aerodynamic_moment(af, cfg.aero, eq.alpha + d, speed, af.hull.xi_cb)
+        - aerodynamic_moment(af, cfg.aero, eq.alpha - d, speed, af.hull.xi_cb)
+    ) / (2 * d)
+    np.testing.assert_allclose(wv, ref, rtol=1e-9, atol=1e-6)
