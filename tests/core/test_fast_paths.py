@@ -3,7 +3,8 @@
 The tether march steps a complex stacked state and the trim root-finder evaluates an
 alpha-expanded moment (both for speed: numpy's per-call overhead dominates on the usual small
 arrays). Here they are checked against the plain definitions over hypothesis-drawn inputs:
-the Heun march written with :func:`aerostat_core.tether._line_load` on separate arrays, and
+the Heun march on separate arrays with :func:`aerostat_core.tether._line_load`
+(``_march_plain``, which wide batches run), and
 :func:`aerostat_core.statics.moment_about_confluence` / ``aerodynamic_moment``.
 """
 
@@ -24,27 +25,7 @@ from aerostat_core.statics import (
     moment_about_confluence,
     weathervane_slope,
 )
-from aerostat_core.tether import _line_load, march
-
-
-def plain_march(tx0, tz0, length, spec, rho, u_nodes, w, segments):
-    """Heun's method on the tether ODE, one array per component (the definition)."""
-    ds = length / segments
-    h = 0.5 * ds
-    kn = 0.5 * rho * spec.diameter * spec.normal_drag_coefficient
-    kt = 0.5 * rho * np.pi * spec.diameter * spec.tangential_drag_coefficient
-    inv_ea = 1.0 / spec.axial_stiffness
-    tx, tz, x, z = [np.asarray(tx0, float)], [np.asarray(tz0, float)], [0.0], [0.0]
-    for i in range(segments):
-        fx1, fz1, cx1, cz1 = _line_load(tx[-1], tz[-1], u_nodes[i], kn, kt, w, inv_ea)
-        fx2, fz2, cx2, cz2 = _line_load(
-            tx[-1] + ds * fx1, tz[-1] + ds * fz1, u_nodes[i + 1], kn, kt, w, inv_ea
-        )
-        tx.append(tx[-1] + h * (fx1 + fx2))
-        tz.append(tz[-1] + h * (fz1 + fz2))
-        x.append(x[-1] - h * (cx1 + cx2))
-        z.append(z[-1] - h * (cz1 + cz2))
-    return tuple(np.array(np.broadcast_arrays(*a)) for a in (tx, tz, x, z))
+from aerostat_core.tether import _WIDE, _march_plain, march
 
 
 @settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
@@ -76,7 +57,7 @@ def test_march_is_the_plain_heun_scheme(
         return speed * (np.maximum(z, 1.0) / length) ** shear
 
     got = march(tx0, tz0, length, spec, rho, wind, heights, w, segments)
-    ref = plain_march(tx0, tz0, length, spec, rho, wind(heights), w, segments)
+    ref = _march_plain(tx0, tz0, length, spec, rho, wind, heights, w, segments, (n,))
     for a, b in zip(got, ref):
         assert a.shape == b.shape == (segments + 1, n)
         scale = np.max(np.abs(b)) + 1e-300
@@ -164,3 +145,26 @@ def test_trim_is_a_root_of_the_plain_moment(shape):
         - aerodynamic_moment(af, cfg.aero, eq.alpha - d, speed, af.hull.xi_cb)
     ) / (2 * d)
     np.testing.assert_allclose(wv, ref, rtol=1e-9, atol=1e-6)
+
+
+def test_a_wide_batch_marches_as_its_columns():
+    """Past _WIDE columns the march runs the plain form: the same numbers as narrow batches."""
+    rng = np.random.default_rng(3)
+    n = _WIDE + 5
+    spec = TetherSpec("t", 0.02, 0.005, 1.0, 0.01, 1e4, 1e6)
+    tx0, tz0 = rng.uniform(10, 400, n), rng.uniform(200, 2000, n)
+    heights = np.linspace(500.0, 0.0, 41)[:, None] * np.ones(n)
+    speed = rng.uniform(0, 30, n)
+
+    def wind(z):
+        return speed * (np.maximum(z, 1.0) / 500.0) ** 0.14
+
+    wide = march(tx0, tz0, 500.0, spec, 1.1, wind, heights, 0.15, 40)
+    cols = slice(0, 7)
+
+    def wind_cols(z):
+        return speed[cols] * (np.maximum(z, 1.0) / 500.0) ** 0.14
+
+    narrow = march(tx0[cols], tz0[cols], 500.0, spec, 1.1, wind_cols, heights[:, cols], 0.15, 40)
+    for a, b in zip(wide, narrow):
+        np.testing.assert_allclose(a[:, cols], b, rtol=1e-12, atol=1e-9)
