@@ -306,7 +306,12 @@ def _append_speed(ev: Evaluation, other: Evaluation) -> Evaluation:
             return a
         return np.concatenate([a, b[..., :1]], axis=-1)
 
-    return map_arrays(cat, ev, other)
+    if ev.airframe is not other.airframe:
+        return map_arrays(cat, ev, other)
+    # one airframe (design() solves both on it): share it rather than walk its whole tree
+    names = [f.name for f in fields(Evaluation) if f.name != "airframe"]
+    parts = map_arrays(cat, *(tuple(getattr(e, k) for k in names) for e in (ev, other)))
+    return Evaluation(airframe=ev.airframe, **dict(zip(names, parts)))
 
 
 def design(req: Requirement | None = None, cfg: Configuration | None = None) -> Design:

@@ -205,23 +205,31 @@ def march(
     kus = list(ku)
     f1, d1, f2, d2 = k1[0], k1[1], k2[0], k2[1]
 
-    def load(tc, kui, f, d):
+    # the two load evaluations of a step, written out (a Python call per stage costs too)
+    for i in range(segments):
+        tc = tens[i]
         absolute(tc, t_re)
         add(t_re, tiny, t_re)
         div(tc, t, e)
         absolute(ef, va)
         mul(va, ef, va)
-        mul(va, kui, g)
-        mul(e, gc, f)
-        sub(f, iw, f)  # f_x + i f_z
-        mul(tc, inv_ea, d)
-        add(d, e, d)  # -d(X + iZ)/ds
-
-    for i in range(segments):
-        load(tens[i], kus[i], f1, d1)
+        mul(va, kus[i], g)
+        mul(e, gc, f1)
+        sub(f1, iw, f1)  # f_x + i f_z
+        mul(tc, inv_ea, d1)
+        add(d1, e, d1)  # -d(X + iZ)/ds
         mul(f1, ds_, tp)
-        add(tens[i], tp, tp)
-        load(tp, kus[i + 1], f2, d2)
+        add(tc, tp, tp)
+        absolute(tp, t_re)
+        add(t_re, tiny, t_re)
+        div(tp, t, e)
+        absolute(ef, va)
+        mul(va, ef, va)
+        mul(va, kus[i + 1], g)
+        mul(e, gc, f2)
+        sub(f2, iw, f2)
+        mul(tp, inv_ea, d2)
+        add(d2, e, d2)
         add(k1, k2, acc)
         mul(acc, h, acc)
         add(rows[i], acc, rows[i + 1])
@@ -277,13 +285,16 @@ def solve_tether(
     shape = np.broadcast(tx0, tz0).shape
     heights = (length - s).reshape((-1,) + (1,) * len(shape)) * np.ones((1,) + shape)
     height = np.full(shape, float(length))
-    for _ in range(max_passes if sheared else 1):
+    passes = max_passes if sheared else 1
+    for p in range(passes):
         tx0, tz0 = top_tension(height)
         tx, tz, x, z = march(
             tx0, tz0, length, spec, air_density, lambda zz, h=height: wind(zz, h), heights,
             weight_per_length, segments,
         )
         new_height = -z[-1]
+        if p == passes - 1:  # no next pass to prepare
+            break
         heights = np.maximum(z - z[-1], 0.0)
         done = np.all(np.abs(new_height - height) < tol)
         height = new_height
