@@ -280,6 +280,8 @@ ALPHA_GRID_WIDE = np.radians(np.arange(-80.0, 80.01, 1.0))
 _WIDE_BELOW = int(np.sum(ALPHA_GRID_WIDE < ALPHA_GRID[0]))
 _WIDE_OUTSIDE = (ALPHA_GRID_WIDE < ALPHA_GRID[0]) | (ALPHA_GRID_WIDE > ALPHA_GRID[-1])
 assert np.array_equal(ALPHA_GRID_WIDE[~_WIDE_OUTSIDE], ALPHA_GRID)
+#: |midpoint| of each grid interval (the bracket nearest alpha = 0 wins), usual and wide grid.
+_ABS_MID = tuple(np.abs(0.5 * (a[:-1] + a[1:])) for a in (ALPHA_GRID, ALPHA_GRID_WIDE))
 
 
 @dataclass(frozen=True)
@@ -328,10 +330,10 @@ def _trim(moment: _MomentKernel, iterations: int = 40) -> Equilibrium:
             m_out = moment(grid[_WIDE_OUTSIDE])
             m = np.concatenate([m_out[:_WIDE_BELOW], m_first, m_out[_WIDE_BELOW:]])
         down = (m[:-1] > 0.0) & (m[1:] <= 0.0)
-        mid = 0.5 * (grid[:-1] + grid[1:]) * np.ones((1,) + shape)
-        score = np.where(down, np.abs(mid), np.inf)
+        mid = _ABS_MID[0 if alphas is ALPHA_GRID else 1].reshape((-1,) + (1,) * len(shape))
+        score = np.where(down, mid, np.inf)
         k = np.argmin(score, axis=0)
-        found = np.isfinite(np.min(score, axis=0))
+        found = down.any(axis=0)
         if np.all(found):
             break
     idx = np.indices(shape)
@@ -357,10 +359,12 @@ def _trim(moment: _MomentKernel, iterations: int = 40) -> Equilibrium:
         hi = np.where(pos, hi, x)
         f_hi = np.where(pos, np.where(was_pos, half * f_hi, f_hi), fx)
         was_pos, was_neg = pos, ~pos
-        tiny = np.abs(fx) <= eps * (one + np.abs(f_lo) + np.abs(f_hi))
+        # in a bracket lo < hi, f_lo > 0 >= f_hi, so |hi - lo| = hi - lo and |f_lo| + |f_hi| =
+        # f_lo - f_hi (columns without one stop on ``unfound``)
+        tiny = np.abs(fx) <= eps * ((one + f_lo) - f_hi)
         # columns without a stable root take the least-|moment| grid angle below: they have no
         # bracket to converge, so they must not keep the others iterating to the limit
-        if np.all((np.abs(hi - lo) < eps) | tiny | unfound):
+        if np.all((hi - lo < eps) | tiny | unfound):
             break
     alpha = x
     # where no stable root: the grid angle with the least |moment|
