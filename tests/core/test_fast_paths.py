@@ -58,10 +58,11 @@ def test_march_is_the_plain_heun_scheme(
 
     got = march(tx0, tz0, length, spec, rho, wind, heights, w, segments)
     ref = _march_plain(tx0, tz0, length, spec, rho, wind, heights, w, segments, (n,))
-    for a, b in zip(got, ref):
+    # the same floats to rounding (|T| is hypot; e is T times 1/|T|), over a whole line: on the
+    # scale of the tension for T_x, T_z and of the line length for the offsets
+    t_scale = np.max(np.abs(ref[:2])) + 1e-300
+    for a, b, scale in zip(got, ref, (t_scale, t_scale, length, length)):
         assert a.shape == b.shape == (segments + 1, n)
-        scale = np.max(np.abs(b)) + 1e-300
-        # the same floats to rounding (|T| is hypot; e is T times 1/|T|); over a whole line
         assert np.max(np.abs(a - b)) <= 1e-11 * scale
 
 
