@@ -14,12 +14,12 @@ from .airframe import Airframe
 from .inputs import Configuration, Requirement
 from .statics import (
     Equilibrium,
-    _MomentKernel,
-    _slope,
-    _trim,
+    MomentKernel,
     aero_loads,
     axial_drag_coefficient,
+    central_difference,
     moment_coefficient,
+    trim_equilibrium,
 )
 from .tether import TetherSolution, solve_tether
 from .wind import profile_speed
@@ -71,8 +71,8 @@ def evaluate(req: Requirement, cfg: Configuration, af: Airframe, speed) -> Evalu
     """
     speed = np.asarray(speed, float)
     cd0 = axial_drag_coefficient(af, cfg.aero, speed)
-    moment = _MomentKernel(af, cfg.aero, speed, cd0)  # statics.equilibrium, built once
-    eq = _trim(moment)
+    moment = MomentKernel(af, cfg.aero, speed, cd0)  # statics.equilibrium, built once
+    eq = trim_equilibrium(moment)
     loads = aero_loads(af, cfg.aero, eq.alpha, speed, cd0)
     tx = loads.drag * np.ones_like(eq.alpha)
     tz = (af.buoyancy - af.aerostat_weight + loads.lift) * np.ones_like(eq.alpha)
@@ -91,7 +91,7 @@ def evaluate(req: Requirement, cfg: Configuration, af: Airframe, speed) -> Evalu
     tmax = np.max(teth.tension, axis=0)
     sf = spec.breaking_strength / np.maximum(tmax, 1e-9)
     # statics.weathervane_slope: the same loads about the centre of volume
-    wv = _slope(moment.about(af.hull.xi_cb), eq.alpha) * np.ones_like(eq.alpha)
+    wv = central_difference(moment.about(af.hull.xi_cb), eq.alpha) * np.ones_like(eq.alpha)
     return Evaluation(af, speed, eq, loads.lift, tx, tz, teth, sf, wv)
 
 

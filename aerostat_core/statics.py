@@ -165,22 +165,46 @@ def weathervane_slope(af: Airframe, aero: AeroModel, alpha, speed, cd0=None, h: 
     (central difference, step ``h`` [rad]); negative = weathervane stable.
 
     The moment is :func:`aerodynamic_moment` about ``af.hull.xi_cb`` (evaluated through the
-    alpha-expanded form of :class:`_MomentKernel`, the same model)."""
+    alpha-expanded form of :class:`MomentKernel`, the same model)."""
     if cd0 is None:
         cd0 = axial_drag_coefficient(af, aero, speed)
-    k = _MomentKernel(af, aero, speed, cd0, af.hull.xi_cb, static=False)
-    return _slope(k, np.asarray(alpha, float), h)
+    k = MomentKernel(af, aero, speed, cd0, af.hull.xi_cb, static=False)
+    return central_difference(k, np.asarray(alpha, float), h)
 
 
-def _slope(moment, alpha, h: float = 1e-5):
-    """Central difference (M(alpha + h) - M(alpha - h)) / 2h of a moment function."""
+def central_difference(moment, alpha, h: float = 1e-5):
+    """Slope of a moment function by central difference: (M(alpha + h) - M(alpha - h)) / 2h.
+
+    Parameters
+    ----------
+    moment : callable
+        ``moment(alpha)`` -> pitching moment [N m] (e.g. a :class:`MomentKernel`).
+    alpha : array_like
+        Angle of attack [rad].
+    h : float
+        Step [rad]; the default 1e-5 rad is the engine's everywhere (truncation error
+        h^2 |d3M/dalpha3| / 6, far below the rounding of M / h).
+
+    Returns
+    -------
+    ndarray
+        dM/dalpha [N m/rad].
+    """
     return (moment(alpha + h) - moment(alpha - h)) / (2.0 * h)
 
 
-class _MomentKernel:
+class MomentKernel:
     """A pitching moment M(alpha) [N m] with everything that does not depend on alpha
     computed once: the trim root-finder evaluates it ~10 times per solve, where numpy's
     per-call overhead on small arrays (and not the arithmetic) is the cost.
+
+    ``MomentKernel(af, aero, speed, cd0)`` is the moment about the confluence point of
+    :func:`moment_about_confluence`; ``.about(xi_ref)`` the aerodynamic moment about the axis
+    station ``xi_ref`` [m] of :func:`aerodynamic_moment`. ``speed`` [m/s] and ``cd0`` (the
+    volumetric drag coefficient, :func:`axial_drag_coefficient`) broadcast with the
+    airframe's arrays to the batch shape ``.shape``; calling it with alpha [rad] of that shape
+    (or with leading axes, as a grid of angles) returns M [N m]. Validity: that of the loads
+    (Jones & DeLaurier, |alpha| < 90 deg; docs/methods.md §1.7-1.8).
 
     The same model as :func:`moment_about_confluence` (``static=True``, about the confluence
     point) or :func:`aerodynamic_moment` (``static=False``, about ``(xi_ref, 0)``), expanded in
@@ -224,7 +248,7 @@ class _MomentKernel:
         self.two, self.half = np.array(2.0), np.array(0.5)
         self._about(xi_ref, static)
 
-    def about(self, xi_ref, static: bool = False) -> _MomentKernel:
+    def about(self, xi_ref, static: bool = False) -> MomentKernel:
         """The same loads' moment about ``(xi_ref, 0)`` (``static``: with buoyancy and weight)."""
         k = copy.copy(self)
         k._about(xi_ref, static)
@@ -314,11 +338,25 @@ def equilibrium(af: Airframe, aero: AeroModel, speed, iterations: int = 40) -> E
     """
     speed = np.asarray(speed, float)
     cd0 = axial_drag_coefficient(af, aero, speed)
-    return _trim(_MomentKernel(af, aero, speed, cd0), iterations)
+    return trim_equilibrium(MomentKernel(af, aero, speed, cd0), iterations)
 
 
-def _trim(moment: _MomentKernel, iterations: int = 40) -> Equilibrium:
-    """:func:`equilibrium` on a built moment kernel (the algorithm is documented there)."""
+def trim_equilibrium(moment: MomentKernel, iterations: int = 40) -> Equilibrium:
+    """:func:`equilibrium` on a built :class:`MomentKernel` (the algorithm, grids and
+    tolerance are documented there), for callers that reuse the kernel (the weathervane slope
+    of :func:`aerostat_core.performance.evaluate`).
+
+    Parameters
+    ----------
+    moment : MomentKernel
+        Moment about the confluence point at the wind speed(s) of the solve.
+    iterations : int
+        Most Illinois iterations.
+
+    Returns
+    -------
+    Equilibrium
+    """
     shape = moment.shape
     m_first = None
     for alphas in (ALPHA_GRID, ALPHA_GRID_WIDE):
@@ -371,7 +409,7 @@ def _trim(moment: _MomentKernel, iterations: int = 40) -> Equilibrium:
     if not found.all():
         kmin = np.argmin(np.abs(m), axis=0)
         alpha = np.where(found, alpha, alphas[kmin])
-    return Equilibrium(alpha=alpha, moment_slope=_slope(moment, alpha), found=found)
+    return Equilibrium(alpha=alpha, moment_slope=central_difference(moment, alpha), found=found)
 
 
 def moment_coefficient(af: Airframe, aero: AeroModel, alpha, speed):

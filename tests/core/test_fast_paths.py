@@ -18,7 +18,7 @@ from hypothesis import strategies as st
 from aerostat_core import HullSpec, TetherSpec, design, thesis_baseline
 from aerostat_core.shapes import SHAPE_INFO
 from aerostat_core.statics import (
-    _MomentKernel,
+    MomentKernel,
     aerodynamic_moment,
     axial_drag_coefficient,
     equilibrium,
@@ -98,7 +98,7 @@ def test_moment_kernel_is_the_moment_of_the_loads(shape, alpha_deg, speed, given
     af = _airframe(req, cfg)
     alpha = np.radians(np.asarray(alpha_deg))
     cd0 = axial_drag_coefficient(af, aero, speed)
-    kernel = _MomentKernel(af, aero, speed, cd0)
+    kernel = MomentKernel(af, aero, speed, cd0)
     # rounding of terms of the size of buoyancy x length and q V^(2/3) x length, which cancel
     # near a trim: a few ulp of those
     q = 0.5 * af.air_density * speed**2
