@@ -404,7 +404,7 @@ def trim_equilibrium(moment: MomentKernel, iterations: int = 40) -> Equilibrium:
         # bracket to converge, so they must not keep the others iterating to the limit
         if np.all((hi - lo < eps) | tiny | unfound):
             break
-    alpha = x
+    alpha = x + 0.0  # a level trim is +0.0, not -0.0 (shown as "-0.0 deg")
     # where no stable root: the grid angle with the least |moment|
     if not found.all():
         kmin = np.argmin(np.abs(m), axis=0)

@@ -169,3 +169,14 @@ def test_a_wide_batch_marches_as_its_columns():
     narrow = march(tx0[cols], tz0[cols], 500.0, spec, 1.1, wind_cols, heights[:, cols], 0.15, 40)
     for a, b in zip(wide, narrow):
         np.testing.assert_allclose(a[:, cols], b, rtol=1e-12, atol=1e-9)
+
+
+@pytest.mark.parametrize("shape", ["sphere", "oblate", "helikite"])
+def test_a_bluff_hull_trims_level(shape):
+    """A drag-only hull's tether acts at its centre: it trims level (alpha = 0 to the
+    root-finder's 1e-12 rad) at every wind, with the pendulum's restoring slope."""
+    req, cfg = thesis_baseline()
+    af = _airframe(req, replace(cfg, hull=HullSpec(shape=shape, volume=170.0)))
+    eq = equilibrium(af, cfg.aero, np.linspace(0.0, 20.0, 5))
+    assert eq.found.all() and np.all(np.abs(eq.alpha) <= 1e-12)
+    assert np.all(eq.moment_slope < 0.0)
