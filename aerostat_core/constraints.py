@@ -337,18 +337,33 @@ def constraint_state(req: Requirement, cfg: Configuration, af: Airframe) -> Cons
                            survival_wind=float(req.survival_wind), evaluation=ev)
 
 
-def wind_flags(req: Requirement, cfg: Configuration, ev: Evaluation) -> dict:
+def wind_flags(req: Requirement, cfg: Configuration, ev: Evaluation,
+               state: ConstraintState | None = None) -> dict:
     """Per-speed flags for a wind sweep: constraint name -> bool array, True where the row
     breaks that constraint of the table (limits of the design wind applied at every speed; the
-    survival check is the constraint table's, not a per-speed flag)."""
+    survival check is the constraint table's, not a per-speed flag).
+
+    ``state``: the constraint table of the same airframe (one design), whose static rows are
+    then read instead of recomputed (the same numbers)."""
     req = req.resolved()
     wq = wind_quantities(req, cfg, ev)
-    sq = static_quantities(req, ev.airframe, cfg)
+    sq = static_quantities(req, ev.airframe, cfg) if state is None else None
     shape = np.shape(wq["blow_by"][0])
     flags = {}
-    for c in CONSTRAINTS:
+    for k, c in enumerate(CONSTRAINTS):
         if c.at == "survival":
             continue
-        g = (sq if c.at == "static" else wq)[c.name][2]
+        if c.at == "static" and state is not None:
+            g = np.asarray(state.g)[..., k]
+        else:
+            g = (sq if c.at == "static" else wq)[c.name][2]
         flags[c.name] = np.broadcast_to(g > c.tolerance, shape).copy()
     return flags
+
+
+def state_flags(state: ConstraintState) -> dict:
+    """The flags of :func:`wind_flags` at the design wind, read from a constraint table of one
+    design (its design-wind and static rows are those g): name -> bool."""
+    g = np.asarray(state.g).reshape(-1)
+    return {c.name: bool(g[k] > c.tolerance) for k, c in enumerate(CONSTRAINTS)
+            if c.at != "survival"}

@@ -11,7 +11,7 @@ import numpy as np
 from . import budget
 from .airframe import Airframe, build_airframe
 from .constraints import NAMES as CONSTRAINT_NAMES
-from .constraints import ConstraintState, constraint_state, wind_flags
+from .constraints import ConstraintState, constraint_state, state_flags, wind_flags
 from .cost import gas_fill_cost
 from .inputs import Configuration, Requirement
 from .mass import ITEM_NAMES
@@ -306,7 +306,12 @@ def _append_speed(ev: Evaluation, other: Evaluation) -> Evaluation:
             return a
         return np.concatenate([a, b[..., :1]], axis=-1)
 
-    return map_arrays(cat, ev, other)
+    if ev.airframe is not other.airframe:
+        return map_arrays(cat, ev, other)
+    # one airframe (design() solves both on it): share it rather than walk its whole tree
+    names = [f.name for f in fields(Evaluation) if f.name != "airframe"]
+    parts = map_arrays(cat, *(tuple(getattr(e, k) for k in names) for e in (ev, other)))
+    return Evaluation(airframe=ev.airframe, **dict(zip(names, parts)))
 
 
 def design(req: Requirement | None = None, cfg: Configuration | None = None) -> Design:
@@ -351,9 +356,11 @@ def design(req: Requirement | None = None, cfg: Configuration | None = None) -> 
         state = constraint_state(req, cfg, af)
     speeds = wind_speeds(req)
     ev = evaluate(req, cfg, af, speeds)
-    table = performance_table(ev, wind_flags(req, cfg, ev))
+    table = performance_table(ev, wind_flags(req, cfg, ev, state))
     at_winds = state.evaluation  # [design, survival] wind: the design point is its first row
-    design_point = performance_table(at_winds, wind_flags(req, cfg, at_winds)).rows()[0]
+    # its flags are the table's own design-wind rows (only that first row is kept)
+    flags = {k: np.array([v, False]) for k, v in state_flags(state).items()}
+    design_point = performance_table(at_winds, flags).rows()[0]
     a_deg, cm = cm_curve(af, cfg, req.design_wind if req.design_wind > 0 else 10.0)
     state = ConstraintState(
         g=np.asarray(state.g).reshape(-1), margin=np.asarray(state.margin).reshape(-1),

@@ -12,7 +12,15 @@ import numpy as np
 
 from .airframe import Airframe
 from .inputs import Configuration, Requirement
-from .statics import Equilibrium, aero_loads, equilibrium, moment_coefficient, weathervane_slope
+from .statics import (
+    Equilibrium,
+    MomentKernel,
+    aero_loads,
+    axial_drag_coefficient,
+    central_difference,
+    moment_coefficient,
+    trim_equilibrium,
+)
 from .tether import TetherSolution, solve_tether
 from .wind import profile_speed
 
@@ -62,8 +70,10 @@ def evaluate(req: Requirement, cfg: Configuration, af: Airframe, speed) -> Evalu
     T_x = D, T_z = F_B + L_dyn - W_a; then the tether march down to the winch.
     """
     speed = np.asarray(speed, float)
-    eq = equilibrium(af, cfg.aero, speed)
-    loads = aero_loads(af, cfg.aero, eq.alpha, speed)
+    cd0 = axial_drag_coefficient(af, cfg.aero, speed)
+    moment = MomentKernel(af, cfg.aero, speed, cd0)  # statics.equilibrium, built once
+    eq = trim_equilibrium(moment)
+    loads = aero_loads(af, cfg.aero, eq.alpha, speed, cd0)
     tx = loads.drag * np.ones_like(eq.alpha)
     tz = (af.buoyancy - af.aerostat_weight + loads.lift) * np.ones_like(eq.alpha)
     profile = cfg.wind_profile
@@ -80,7 +90,8 @@ def evaluate(req: Requirement, cfg: Configuration, af: Airframe, speed) -> Evalu
     )
     tmax = np.max(teth.tension, axis=0)
     sf = spec.breaking_strength / np.maximum(tmax, 1e-9)
-    wv = weathervane_slope(af, cfg.aero, eq.alpha, speed) * np.ones_like(eq.alpha)
+    # statics.weathervane_slope: the same loads about the centre of volume
+    wv = central_difference(moment.about(af.hull.xi_cb), eq.alpha) * np.ones_like(eq.alpha)
     return Evaluation(af, speed, eq, loads.lift, tx, tz, teth, sf, wv)
 
 

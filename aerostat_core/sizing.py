@@ -24,7 +24,6 @@ searched.
 
 from __future__ import annotations
 
-import copy
 import dataclasses
 from dataclasses import dataclass
 
@@ -134,17 +133,36 @@ def _infeasible_reason(st, met, shape, skip=None):
     return binding.astype(str), message.astype(str)
 
 
+#: Field names of each dataclass met by :func:`map_arrays` (``dataclasses.fields`` is slow).
+_FIELD_NAMES: dict[type, tuple[str, ...]] = {}
+_PLAIN = (float, int, str, bool, type(None))
+
+
 def map_arrays(fn, *trees):
     """Apply ``fn`` to the array leaves of equal-structured result trees (frozen dataclasses,
     dicts, tuples); other leaves (floats, strings, specs) are taken from the first tree."""
     t = trees[0]
     if isinstance(t, np.ndarray):
         return fn(*trees)
-    if dataclasses.is_dataclass(t) and not isinstance(t, type):
-        new = copy.copy(t)  # no __init__: the leaves were validated when first built
-        for fld in dataclasses.fields(t):
-            leaves = [getattr(x, fld.name) for x in trees]
-            object.__setattr__(new, fld.name, map_arrays(fn, *leaves))
+    cls = type(t)
+    if cls in _PLAIN:
+        return t
+    names = _FIELD_NAMES.get(cls)
+    if names is None:
+        names = _FIELD_NAMES[cls] = (
+            tuple(f.name for f in dataclasses.fields(cls))
+            if dataclasses.is_dataclass(cls) else ())
+    if names:
+        # a shallow copy without __init__ (the leaves were validated when first built)
+        new = object.__new__(cls)
+        d = new.__dict__
+        d.update(t.__dict__)
+        if len(trees) == 1:
+            for name in names:
+                d[name] = map_arrays(fn, d[name])
+        else:
+            for name in names:
+                d[name] = map_arrays(fn, *[x.__dict__[name] for x in trees])
         return new
     if isinstance(t, dict):
         return {k: map_arrays(fn, *(x[k] for x in trees)) for k in t}

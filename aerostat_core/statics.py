@@ -7,6 +7,7 @@ A body point (xi, z) sits at X = xi cos a + z sin a, Z = -xi sin a + z cos a fro
 
 from __future__ import annotations
 
+import copy
 from dataclasses import dataclass
 
 import numpy as np
@@ -161,9 +162,138 @@ def aerodynamic_moment(af: Airframe, aero: AeroModel, alpha, speed, xi_ref, cd0=
 
 def weathervane_slope(af: Airframe, aero: AeroModel, alpha, speed, cd0=None, h: float = 1e-5):
     """d(aerodynamic moment about the centre of volume)/d(alpha) at ``alpha`` [N m/rad]
-    (central difference, step ``h`` [rad]); negative = weathervane stable."""
-    return (aerodynamic_moment(af, aero, alpha + h, speed, af.hull.xi_cb, cd0)
-            - aerodynamic_moment(af, aero, alpha - h, speed, af.hull.xi_cb, cd0)) / (2.0 * h)
+    (central difference, step ``h`` [rad]); negative = weathervane stable.
+
+    The moment is :func:`aerodynamic_moment` about ``af.hull.xi_cb`` (evaluated through the
+    alpha-expanded form of :class:`MomentKernel`, the same model)."""
+    if cd0 is None:
+        cd0 = axial_drag_coefficient(af, aero, speed)
+    k = MomentKernel(af, aero, speed, cd0, af.hull.xi_cb, static=False)
+    return central_difference(k, np.asarray(alpha, float), h)
+
+
+def central_difference(moment, alpha, h: float = 1e-5):
+    """Slope of a moment function by central difference: (M(alpha + h) - M(alpha - h)) / 2h.
+
+    Parameters
+    ----------
+    moment : callable
+        ``moment(alpha)`` -> pitching moment [N m] (e.g. a :class:`MomentKernel`).
+    alpha : array_like
+        Angle of attack [rad].
+    h : float
+        Step [rad]; the default 1e-5 rad is the engine's everywhere (truncation error
+        h^2 |d3M/dalpha3| / 6, far below the rounding of M / h).
+
+    Returns
+    -------
+    ndarray
+        dM/dalpha [N m/rad].
+    """
+    return (moment(alpha + h) - moment(alpha - h)) / (2.0 * h)
+
+
+class MomentKernel:
+    """A pitching moment M(alpha) [N m] with everything that does not depend on alpha
+    computed once: the trim root-finder evaluates it ~10 times per solve, where numpy's
+    per-call overhead on small arrays (and not the arithmetic) is the cost.
+
+    ``MomentKernel(af, aero, speed, cd0)`` is the moment about the confluence point of
+    :func:`moment_about_confluence`; ``.about(xi_ref)`` the aerodynamic moment about the axis
+    station ``xi_ref`` [m] of :func:`aerodynamic_moment`. ``speed`` [m/s] and ``cd0`` (the
+    volumetric drag coefficient, :func:`axial_drag_coefficient`) broadcast with the
+    airframe's arrays to the batch shape ``.shape``; calling it with alpha [rad] of that shape
+    (or with leading axes, as a grid of angles) returns M [N m]. Validity: that of the loads
+    (Jones & DeLaurier, |alpha| < 90 deg; docs/methods.md §1.7-1.8).
+
+    The same model as :func:`moment_about_confluence` (``static=True``, about the confluence
+    point) or :func:`aerodynamic_moment` (``static=False``, about ``(xi_ref, 0)``), expanded in
+    alpha. The hull's body-axis forces (N, A) at xi_m have the moment dxi N - dz A about any
+    point, whatever alpha (the rotation cancels), so with c = clip(alpha, +-alpha_s):
+
+    M = cos a (C0 + P4 cos a + c (F2 c - F1)) + sin a (C1 - c (F3 + F4 c))
+        + sin 2a (P1 cos a/2 - P3 sin a/2) + P2 sin a |sin a|,
+
+    where C0, C1 hold buoyancy, weight, the fins' zero-lift drag and a bluff hull's constant
+    forces; P1-P4 the Jones & DeLaurier hull terms; F1-F4 the fins' lift and induced drag. The
+    same floats as the plain functions to rounding (a few ulp of the largest term).
+    """
+
+    def __init__(self, af: Airframe, aero: AeroModel, speed, cd0, xi_ref=None,
+                 static: bool = True):
+        speed = np.asarray(speed, float)
+        self.af = af
+        self.shape = np.broadcast(af.hull.length, speed).shape
+        q = 0.5 * af.air_density * speed**2
+        h, fn = af.hull, af.fins
+        # forces per term, independent of the reference point
+        if SHAPE_INFO[h.shape].streamlined:
+            q1 = q * (h.k2 - h.k1) * aero.hull_efficiency
+            qc = q * aero.hull_crossflow_drag
+            self._hull = (q1 * af.i1, q1 * af.i3, qc * af.j1, qc * af.j2,
+                          q * cd0 * h.reference_area)
+            self._bluff = None
+        else:  # drag-only hull (and the Helikite's kite): forces constant in alpha
+            lift, drag = 0.0, q * cd0 * h.reference_area
+            if af.kite is not None:
+                lk, dk = kite_lift_drag(q, af.kite)
+                lift, drag = lift + lk, drag + dk
+            self._hull, self._bluff = None, (lift, drag)
+        e = aero.fin_efficiency * fn.lift_slope
+        ql = q * fn.lifting_area
+        self._fins = (ql * e, ql / (np.pi * fn.oswald * fn.aspect_ratio) * e * e,
+                      q * (aero.fin_zero_lift_drag * fn.area_total))
+        self.fins = bool(np.any(fn.lifting_area != 0) or np.any(fn.area_total != 0))
+        self.stall = np.array(np.radians(aero.fin_stall_angle_deg))
+        self.two, self.half = np.array(2.0), np.array(0.5)
+        self._about(xi_ref, static)
+
+    def about(self, xi_ref, static: bool = False) -> MomentKernel:
+        """The same loads' moment about ``(xi_ref, 0)`` (``static``: with buoyancy and weight)."""
+        k = copy.copy(self)
+        k._about(xi_ref, static)
+        return k
+
+    def _about(self, xi_ref, static):
+        af, one = self.af, np.ones(self.shape)
+        xr = af.xi_c if xi_ref is None else xi_ref
+        zr = af.z_c if xi_ref is None else 0.0
+        dxm, dzm = af.xi_m - xr, -zr
+        if static:
+            b, w = af.buoyancy, af.aerostat_weight
+            c0 = -((af.hull.xi_cb - xr) * b - (af.mass.xi_cg - xr) * w)
+            c1 = -(-zr * b - (af.mass.z_cg - zr) * w)
+        else:
+            c0 = c1 = 0.0
+        if self._hull is not None:
+            n1, m1, nc, mc, ax = self._hull
+            self.p = tuple(a * one for a in (m1 - dxm * n1, mc - dxm * nc, dzm * n1, dzm * ax))
+        else:
+            lift, drag = self._bluff
+            c0 = c0 - dxm * lift + dzm * drag
+            c1 = c1 - dzm * lift - dxm * drag
+            self.p = None
+        dxf, dzf = af.fins.xi_ac - xr, -zr
+        lf, di, d0 = self._fins
+        self.c0 = (c0 + dzf * d0) * one
+        self.c1 = (c1 - dxf * d0) * one
+        self.f = tuple(a * one for a in (dxf * lf, dzf * di, dzf * lf, dxf * di))
+
+    def __call__(self, alpha):
+        a = np.asarray(alpha, float)
+        ca, sa = np.cos(a), np.sin(a)
+        if self.fins:
+            f1, f2, f3, f4 = self.f
+            c = np.minimum(np.maximum(a, -self.stall), self.stall)
+            m = ca * (self.c0 + c * (f2 * c - f1)) + sa * (self.c1 - c * (f3 + f4 * c))
+        else:
+            m = ca * self.c0 + sa * self.c1
+        if self.p is not None:
+            p1, p2, p3, p4 = self.p
+            hv = a * self.half
+            m = (m + ca * (p4 * ca) + np.sin(a * self.two) * (p1 * np.cos(hv) - p3 * np.sin(hv))
+                 + p2 * (sa * np.abs(sa)))
+        return m
 
 
 #: Angle-of-attack grid used to bracket the equilibrium [rad]: where every usual trim lies.
@@ -174,6 +304,8 @@ ALPHA_GRID_WIDE = np.radians(np.arange(-80.0, 80.01, 1.0))
 _WIDE_BELOW = int(np.sum(ALPHA_GRID_WIDE < ALPHA_GRID[0]))
 _WIDE_OUTSIDE = (ALPHA_GRID_WIDE < ALPHA_GRID[0]) | (ALPHA_GRID_WIDE > ALPHA_GRID[-1])
 assert np.array_equal(ALPHA_GRID_WIDE[~_WIDE_OUTSIDE], ALPHA_GRID)
+#: |midpoint| of each grid interval (the bracket nearest alpha = 0 wins), usual and wide grid.
+_ABS_MID = tuple(np.abs(0.5 * (a[:-1] + a[1:])) for a in (ALPHA_GRID, ALPHA_GRID_WIDE))
 
 
 @dataclass(frozen=True)
@@ -205,23 +337,41 @@ def equilibrium(af: Airframe, aero: AeroModel, speed, iterations: int = 40) -> E
     Equilibrium
     """
     speed = np.asarray(speed, float)
-    shape = np.broadcast(af.hull.length, speed).shape
     cd0 = axial_drag_coefficient(af, aero, speed)
+    return trim_equilibrium(MomentKernel(af, aero, speed, cd0), iterations)
+
+
+def trim_equilibrium(moment: MomentKernel, iterations: int = 40) -> Equilibrium:
+    """:func:`equilibrium` on a built :class:`MomentKernel` (the algorithm, grids and
+    tolerance are documented there), for callers that reuse the kernel (the weathervane slope
+    of :func:`aerostat_core.performance.evaluate`).
+
+    Parameters
+    ----------
+    moment : MomentKernel
+        Moment about the confluence point at the wind speed(s) of the solve.
+    iterations : int
+        Most Illinois iterations.
+
+    Returns
+    -------
+    Equilibrium
+    """
+    shape = moment.shape
     m_first = None
     for alphas in (ALPHA_GRID, ALPHA_GRID_WIDE):
         grid = alphas.reshape((-1,) + (1,) * len(shape))
         if m_first is None:
-            m = moment_about_confluence(af, aero, grid, speed, cd0) * np.ones((1,) + shape)
+            m = moment(grid)  # the kernel's coefficients have the batch shape: (grid,) + shape
             m_first = m
         else:  # the wide grid holds the first one: only its other angles are new
-            outside = grid[_WIDE_OUTSIDE]
-            m_out = moment_about_confluence(af, aero, outside, speed, cd0) * np.ones((1,) + shape)
+            m_out = moment(grid[_WIDE_OUTSIDE])
             m = np.concatenate([m_out[:_WIDE_BELOW], m_first, m_out[_WIDE_BELOW:]])
         down = (m[:-1] > 0.0) & (m[1:] <= 0.0)
-        mid = 0.5 * (grid[:-1] + grid[1:]) * np.ones((1,) + shape)
-        score = np.where(down, np.abs(mid), np.inf)
+        mid = _ABS_MID[0 if alphas is ALPHA_GRID else 1].reshape((-1,) + (1,) * len(shape))
+        score = np.where(down, mid, np.inf)
         k = np.argmin(score, axis=0)
-        found = np.isfinite(np.min(score, axis=0))
+        found = down.any(axis=0)
         if np.all(found):
             break
     idx = np.indices(shape)
@@ -229,35 +379,37 @@ def equilibrium(af: Airframe, aero: AeroModel, speed, iterations: int = 40) -> E
     hi = alphas[k + 1]
     f_lo = m[(k,) + tuple(idx)]
     f_hi = m[(k + 1,) + tuple(idx)]
-    # Illinois iterations on all brackets at once; x is the running root estimate
-    side = np.zeros(shape)
-    x = 0.5 * (lo + hi)
+    # Illinois iterations on all brackets at once; x is the running root estimate. ``was_pos``
+    # / ``was_neg``: the sign of the previous iterate's moment (neither before the first)
+    was_pos = was_neg = np.zeros(shape, bool)
+    half, one, eps = np.array(0.5), np.array(1.0), np.array(1e-12)
+    unfound = ~found
+    x = half * (lo + hi)
     for _ in range(iterations):
-        same = f_hi == f_lo
-        secant = (lo * f_hi - hi * f_lo) / np.where(same, 1.0, f_hi - f_lo)
-        x = np.where(same, 0.5 * (lo + hi), secant)
-        fx = moment_about_confluence(af, aero, x, speed, cd0) * np.ones(shape)
+        df = f_hi - f_lo
+        same = df == 0.0
+        secant = (lo * f_hi - hi * f_lo) / np.where(same, one, df)
+        x = np.where(same, half * (lo + hi), secant) if same.any() else secant
+        fx = moment(x)
         pos = fx > 0.0
         lo = np.where(pos, x, lo)
-        f_lo = np.where(pos, fx, np.where(side == -1, 0.5 * f_lo, f_lo))
+        f_lo = np.where(pos, fx, np.where(was_neg, half * f_lo, f_lo))
         hi = np.where(pos, hi, x)
-        f_hi = np.where(pos, np.where(side == 1, 0.5 * f_hi, f_hi), fx)
-        side = np.where(pos, 1, -1)
-        tiny = np.abs(fx) <= 1e-12 * (1.0 + np.abs(f_lo) + np.abs(f_hi))
+        f_hi = np.where(pos, np.where(was_pos, half * f_hi, f_hi), fx)
+        was_pos, was_neg = pos, ~pos
+        # in a bracket lo < hi, f_lo > 0 >= f_hi, so |hi - lo| = hi - lo and |f_lo| + |f_hi| =
+        # f_lo - f_hi (columns without one stop on ``unfound``)
+        tiny = np.abs(fx) <= eps * ((one + f_lo) - f_hi)
         # columns without a stable root take the least-|moment| grid angle below: they have no
         # bracket to converge, so they must not keep the others iterating to the limit
-        if np.all((np.abs(hi - lo) < 1e-12) | tiny | ~found):
+        if np.all((hi - lo < eps) | tiny | unfound):
             break
-    alpha = x
+    alpha = x + 0.0  # a level trim is +0.0, not -0.0 (shown as "-0.0 deg")
     # where no stable root: the grid angle with the least |moment|
-    kmin = np.argmin(np.abs(m), axis=0)
-    alpha = np.where(found, alpha, alphas[kmin])
-    h = 1e-5
-    slope = (
-        moment_about_confluence(af, aero, alpha + h, speed, cd0)
-        - moment_about_confluence(af, aero, alpha - h, speed, cd0)
-    ) / (2 * h)
-    return Equilibrium(alpha=alpha, moment_slope=slope * np.ones(shape), found=found)
+    if not found.all():
+        kmin = np.argmin(np.abs(m), axis=0)
+        alpha = np.where(found, alpha, alphas[kmin])
+    return Equilibrium(alpha=alpha, moment_slope=central_difference(moment, alpha), found=found)
 
 
 def moment_coefficient(af: Airframe, aero: AeroModel, alpha, speed):

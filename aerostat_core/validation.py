@@ -169,35 +169,39 @@ def check_number(
     ...
     aerostat_core.validation.InputError: Requirement.payload_mass = -1 kg is outside the valid range (0, 500] kg
     """
-    u = f" {unit}" if unit else ""
-    rng = _range_text(lo, hi, unit, lo_open, hi_open)
-    info = dict(owner=owner, field=field, value=value, lo=lo, hi=hi, unit=unit, label=label)
-    info.update(lo_open=lo_open, hi_open=hi_open)
-
+    # the message parts are built only on failure: valid inputs (the common case, checked
+    # for every field of every dataclass built) pay for the comparisons alone
     def fail(shown: str, reason: str, too_small: bool = False) -> InputError:
         reason += reason_suffix
         return InputError(
             f"{owner}.{field} = {shown} {reason}", reason=reason, context=reason_suffix,
-            too_small=too_small, **info,
+            too_small=too_small, owner=owner, field=field, value=value, lo=lo, hi=hi,
+            unit=unit, label=label, lo_open=lo_open, hi_open=hi_open,
         )
 
+    def rng() -> str:
+        return _range_text(lo, hi, unit, lo_open, hi_open)
+
+    def u() -> str:
+        return f" {unit}" if unit else ""
+
     if isinstance(value, bool) or not isinstance(value, Real):
-        raise fail(shown_value(value), f"is not a number; valid range {rng}")
+        raise fail(shown_value(value), f"is not a number; valid range {rng()}")
     try:
         v = float(value)
     except OverflowError:  # an integer too large for a float
         v = math.inf
     if not math.isfinite(v):
-        raise fail(shown_value(value), f"is not finite; valid range {rng}")
+        raise fail(shown_value(value), f"is not finite; valid range {rng()}")
     below = v <= lo if lo_open else v < lo
     above = v >= hi if hi_open else v > hi
     if below or above:
-        raise fail(f"{v:g}{u}", f"is outside the valid range {rng}")
+        raise fail(f"{v:g}{u()}", f"is outside the valid range {rng()}")
     if lo_open and lo == 0 and hi > 0 and v < POSITIVE_FLOOR * hi:
         raise fail(
-            f"{v:g}{u}",
-            f"is too small to compute with (at least {POSITIVE_FLOOR * hi:g}{u}); "
-            f"valid range {rng}",
+            f"{v:g}{u()}",
+            f"is too small to compute with (at least {POSITIVE_FLOOR * hi:g}{u()}); "
+            f"valid range {rng()}",
             too_small=True,
         )
     _store_back(field, value, v)

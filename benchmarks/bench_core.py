@@ -12,6 +12,7 @@ import os
 import platform
 import statistics
 import time
+from dataclasses import replace
 
 os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 
@@ -21,8 +22,9 @@ import numpy as np  # noqa: E402
 from aerostat_core import design, size_volume, thesis_baseline  # noqa: E402
 from aerostat_core.airframe import build_airframe  # noqa: E402
 from aerostat_core.constraints import constraint_state  # noqa: E402
-from aerostat_core.inputs import Requirement  # noqa: E402
+from aerostat_core.inputs import Requirement, WindProfile  # noqa: E402
 from aerostat_core.performance import evaluate  # noqa: E402
+from aerostat_core.presets import rules_configuration  # noqa: E402
 
 
 def median_time(fn, repeats: int) -> float:
@@ -62,9 +64,13 @@ def main() -> None:
     practice = Requirement(payload_mass=10, altitude=300)
     t = median_time(lambda: design(practice), 30)
     print(f"design(Requirement(10 kg, 300 m)), practice rules:       median {t * 1e3:.2f} ms")
+    sheared = replace(rules_configuration("practice"), wind_profile=WindProfile("power"))
+    t = median_time(lambda: design(practice, sheared), 20)
+    print(f"design(), practice rules, power-law wind (height passes): median {t * 1e3:.2f} ms")
     for label, fn in (("design, given volume", lambda: design(req, cfg)),
                       ("design, sized (thesis rules)", lambda: design(req, sized_cfg)),
-                      ("design(), sized (practice default)", lambda: design(practice))):
+                      ("design(), sized (practice default)", lambda: design(practice)),
+                      ("design(), power-law wind", lambda: design(practice, sheared))):
         print(f"  CPU time, {label + ':':36s} median {median_cpu(fn, 30) * 1e3:.2f} ms")
     rng = np.random.default_rng(0)
     n = 10_000

@@ -1,0 +1,182 @@
+"""The engine's fast paths give the numbers of the plain formulas they replace.
+
+The tether march steps a complex stacked state and the trim root-finder evaluates an
+alpha-expanded moment (both for speed: numpy's per-call overhead dominates on the usual small
+arrays). Here they are checked against the plain definitions over hypothesis-drawn inputs:
+the Heun march on separate arrays with :func:`aerostat_core.tether._line_load`
+(``_march_plain``, which wide batches run), and
+:func:`aerostat_core.statics.moment_about_confluence` / ``aerodynamic_moment``.
+"""
+
+from dataclasses import replace
+
+import numpy as np
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from aerostat_core import HullSpec, TetherSpec, design, thesis_baseline
+from aerostat_core.shapes import SHAPE_INFO
+from aerostat_core.statics import (
+    MomentKernel,
+    aerodynamic_moment,
+    axial_drag_coefficient,
+    equilibrium,
+    moment_about_confluence,
+    weathervane_slope,
+)
+from aerostat_core.tether import _WIDE, _march_plain, march
+
+
+@settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(
+    n=st.integers(1, 7),
+    segments=st.integers(1, 60),
+    length=st.floats(10.0, 2000.0),
+    diameter=st.floats(1e-3, 0.03),
+    cdn=st.floats(0.01, 2.0),
+    cdt=st.floats(0.0, 0.05),
+    ea=st.one_of(st.just(np.inf), st.floats(1e4, 1e8)),
+    w=st.floats(0.0, 5.0),
+    rho=st.floats(0.3, 1.3),
+    u_top=st.floats(-40.0, 40.0),
+    shear=st.floats(0.0, 0.5),
+    seed=st.integers(0, 2**16),
+)
+def test_march_is_the_plain_heun_scheme(
+    n, segments, length, diameter, cdn, cdt, ea, w, rho, u_top, shear, seed
+):
+    rng = np.random.default_rng(seed)
+    tx0 = rng.uniform(-50.0, 2000.0, n)
+    tz0 = rng.uniform(-100.0, 5000.0, n)
+    spec = TetherSpec("t", 0.02, diameter, cdn, cdt, 1e4, ea)
+    heights = np.linspace(length, 0.0, segments + 1)[:, None] * np.ones(n)
+    speed = u_top * rng.uniform(0.5, 1.0, n)
+
+    def wind(z):
+        return speed * (np.maximum(z, 1.0) / length) ** shear
+
+    got = march(tx0, tz0, length, spec, rho, wind, heights, w, segments)
+    ref = _march_plain(tx0, tz0, length, spec, rho, wind, heights, w, segments, (n,))
+    # the same floats to rounding (|T| is hypot; e is T times 1/|T|), over a whole line: on the
+    # scale of the tension for T_x, T_z and of the line length for the offsets
+    t_scale = np.max(np.abs(ref[:2])) + 1e-300
+    for a, b, scale in zip(got, ref, (t_scale, t_scale, length, length)):
+        assert a.shape == b.shape == (segments + 1, n)
+        assert np.max(np.abs(a - b)) <= 1e-11 * scale
+
+
+def test_march_keeps_the_batch_shape():
+    spec = TetherSpec("t", 0.02, 0.005, 1.0, 0.01, 1e4, 1e6)
+    heights = np.linspace(300.0, 0.0, 11).reshape(11, 1, 1) * np.ones((1, 2, 3))
+    tx, tz, x, z = march(
+        np.full((2, 3), 80.0),
+        900.0,
+        300.0,
+        spec,
+        1.1,
+        lambda zz: 10.0 * np.ones_like(zz),
+        heights,
+        0.2,
+        10,
+    )
+    assert tx.shape == tz.shape == x.shape == z.shape == (11, 2, 3)
+    assert np.all(x[0] == 0.0) and np.all(z[-1] < -250.0)
+
+
+@pytest.mark.parametrize("shape", list(SHAPE_INFO))
+@settings(max_examples=10, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(
+    alpha_deg=st.lists(st.floats(-85.0, 85.0), min_size=1, max_size=6),
+    speed=st.floats(0.0, 60.0),
+    given_cd0=st.booleans(),
+)
+def test_moment_kernel_is_the_moment_of_the_loads(shape, alpha_deg, speed, given_cd0):
+    req, cfg = thesis_baseline()
+    aero = replace(cfg.aero, hull_axial_drag=0.03) if given_cd0 else cfg.aero
+    cfg = replace(cfg, hull=HullSpec(shape=shape, volume=170.0), aero=aero)
+    af = _airframe(req, cfg)
+    alpha = np.radians(np.asarray(alpha_deg))
+    cd0 = axial_drag_coefficient(af, aero, speed)
+    kernel = MomentKernel(af, aero, speed, cd0)
+    # rounding of terms of the size of buoyancy x length and q V^(2/3) x length, which cancel
+    # near a trim: a few ulp of those
+    q = 0.5 * af.air_density * speed**2
+    scale = float((af.buoyancy + q * af.hull.reference_area) * af.hull.length)
+    ref = moment_about_confluence(af, aero, alpha, speed, cd0)
+    assert np.max(np.abs(kernel(alpha) - ref)) <= 1e-14 * (np.max(np.abs(ref)) + scale)
+    about_cv = kernel.about(af.hull.xi_cb)
+    ref = aerodynamic_moment(af, aero, alpha, speed, af.hull.xi_cb, cd0)
+    assert np.max(np.abs(about_cv(alpha) - ref)) <= 1e-14 * (np.max(np.abs(ref)) + scale)
+
+
+_AIRFRAMES = {}
+
+
+def _airframe(req, cfg):
+    key = (cfg.hull.shape, cfg.aero.hull_axial_drag)
+    if key not in _AIRFRAMES:
+        _AIRFRAMES[key] = design(req, cfg).airframe
+    return _AIRFRAMES[key]
+
+
+@pytest.mark.parametrize("shape", ["npl", "lotte", "sphere", "helikite"])
+def test_trim_is_a_root_of_the_plain_moment(shape):
+    """The root-finder on the kernel trims where the plain moment is zero (to its 1e-12 rad
+    bracket), with the plain moment's slope there; the weathervane slope likewise."""
+    req, cfg = thesis_baseline()
+    cfg = replace(cfg, hull=HullSpec(shape=shape, volume=170.0))
+    af = _airframe(req, cfg)
+    speed = np.linspace(0.0, 40.0, 17)
+    eq = equilibrium(af, cfg.aero, speed)
+    assert eq.found.all()
+    h = 1e-9
+    lo = moment_about_confluence(af, cfg.aero, eq.alpha - h, speed)
+    hi = moment_about_confluence(af, cfg.aero, eq.alpha + h, speed)
+    assert np.all(lo >= 0.0) and np.all(hi <= 0.0)  # a falling zero crossing within 1e-9 rad
+    d = 1e-5
+    slope = (
+        moment_about_confluence(af, cfg.aero, eq.alpha + d, speed)
+        - moment_about_confluence(af, cfg.aero, eq.alpha - d, speed)
+    ) / (2 * d)
+    np.testing.assert_allclose(eq.moment_slope, slope, rtol=1e-9, atol=1e-6)
+    wv = weathervane_slope(af, cfg.aero, eq.alpha, speed)
+    ref = (
+        aerodynamic_moment(af, cfg.aero, eq.alpha + d, speed, af.hull.xi_cb)
+        - aerodynamic_moment(af, cfg.aero, eq.alpha - d, speed, af.hull.xi_cb)
+    ) / (2 * d)
+    np.testing.assert_allclose(wv, ref, rtol=1e-9, atol=1e-6)
+
+
+def test_a_wide_batch_marches_as_its_columns():
+    """Past _WIDE columns the march runs the plain form: the same numbers as narrow batches."""
+    rng = np.random.default_rng(3)
+    n = _WIDE + 5
+    spec = TetherSpec("t", 0.02, 0.005, 1.0, 0.01, 1e4, 1e6)
+    tx0, tz0 = rng.uniform(10, 400, n), rng.uniform(200, 2000, n)
+    heights = np.linspace(500.0, 0.0, 41)[:, None] * np.ones(n)
+    speed = rng.uniform(0, 30, n)
+
+    def wind(z):
+        return speed * (np.maximum(z, 1.0) / 500.0) ** 0.14
+
+    wide = march(tx0, tz0, 500.0, spec, 1.1, wind, heights, 0.15, 40)
+    cols = slice(0, 7)
+
+    def wind_cols(z):
+        return speed[cols] * (np.maximum(z, 1.0) / 500.0) ** 0.14
+
+    narrow = march(tx0[cols], tz0[cols], 500.0, spec, 1.1, wind_cols, heights[:, cols], 0.15, 40)
+    for a, b in zip(wide, narrow):
+        np.testing.assert_allclose(a[:, cols], b, rtol=1e-12, atol=1e-9)
+
+
+@pytest.mark.parametrize("shape", ["sphere", "oblate", "helikite"])
+def test_a_bluff_hull_trims_level(shape):
+    """A drag-only hull's tether acts at its centre: it trims level (alpha = 0 to the
+    root-finder's 1e-12 rad) at every wind, with the pendulum's restoring slope."""
+    req, cfg = thesis_baseline()
+    af = _airframe(req, replace(cfg, hull=HullSpec(shape=shape, volume=170.0)))
+    eq = equilibrium(af, cfg.aero, np.linspace(0.0, 20.0, 5))
+    assert eq.found.all() and np.all(np.abs(eq.alpha) <= 1e-12)
+    assert np.all(eq.moment_slope < 0.0)
