@@ -7,8 +7,9 @@ takes, so a request is measured in *units*::
 
 where "cases" counts the designs the request evaluates (saved cases compared, points of a
 sensitivity sweep or map, evaluations of an optimisation). On the 2-core reference machine one
-unit costs about 10-20 us (the thesis baseline, 50 segments x 22 speeds, designs in about
-0.025 s; a 2000-segment design in 0.45 s), so :data:`MAX_UNITS` keeps a request to a few seconds
+unit costs about 1.5-6 us (the thesis baseline, 50 segments x 22 speeds, designs in about
+6 ms of CPU; a 2000-segment design in 0.06 s; measured 2026-12 with benchmarks/bench_core.py
+and a 2000-segment run), so :data:`MAX_UNITS` keeps a request to a few seconds
 of CPU. Every library entry point checks its request with one call of :func:`check`; the app
 catches :class:`BudgetError` like any other input error and shows its message, which says what
 to reduce.
