@@ -129,6 +129,15 @@ def _f(x: Any) -> float:
     return float(np.asarray(x, dtype=float).reshape(-1)[0])
 
 
+def _ro(a: Any, dtype: Any) -> np.ndarray:
+    """A read-only view of ``a`` as ``dtype``: the report is shared by every session through the
+    app's cache (app_ui/cache.py), so a page that wrote into an array would change it for all
+    of them; the design's own array stays as it is."""
+    v = np.asarray(a, dtype).view()
+    v.flags.writeable = False
+    return v
+
+
 def hull_outline(a1: float, a2: float, b: float, n: int = 121, shape: str = "npl"
                  ) -> tuple[np.ndarray, np.ndarray]:
     """Stations xi [m] (nose to tail, denser at both ends) and radii r(xi) [m] of the profile
@@ -216,13 +225,13 @@ def _design_wind_profile(d: Design) -> TetherProfile:
     if hasattr(d, "tether_profile"):
         x, z = d.tether_profile(wind)
         return TetherProfile(
-            x=np.asarray(x, float).reshape(-1), z=np.asarray(z, float).reshape(-1), wind=wind
+            x=_ro(x, float).reshape(-1), z=_ro(z, float).reshape(-1), wind=wind
         )
-    ws = np.asarray(d.performance.wind_speed, float)  # engines without Design.tether_profile
+    ws = _ro(d.performance.wind_speed, float)  # engines without Design.tether_profile
     j = int(np.argmin(np.abs(ws - wind)))
     return TetherProfile(
-        x=np.asarray(d.tether_x, float)[:, j],
-        z=np.asarray(d.tether_z, float)[:, j],
+        x=_ro(d.tether_x, float)[:, j],
+        z=_ro(d.tether_z, float)[:, j],
         wind=float(ws[j]),
     )
 
@@ -262,28 +271,28 @@ def design_report(d: Design) -> DesignReport:
         mass_rows=d.mass_rows(),
         performance_rows=prow,
         perf=PerformanceCurves(
-            wind_speed=np.asarray(p.wind_speed, float),
-            alpha_eq=np.asarray(p.alpha_eq, float),
-            dynamic_lift=np.asarray(p.dynamic_lift, float),
-            drag=np.asarray(p.drag, float),
-            blow_by=np.asarray(p.blow_by, float),
-            flying_height=np.asarray(p.flying_height, float),
-            tension_top=np.asarray(p.tension_top, float),
-            tension_winch=np.asarray(p.tension_winch, float),
-            safety_factor=np.asarray(p.safety_factor, float),
-            limited=np.asarray(p.limited, bool),
+            wind_speed=_ro(p.wind_speed, float),
+            alpha_eq=_ro(p.alpha_eq, float),
+            dynamic_lift=_ro(p.dynamic_lift, float),
+            drag=_ro(p.drag, float),
+            blow_by=_ro(p.blow_by, float),
+            flying_height=_ro(p.flying_height, float),
+            tension_top=_ro(p.tension_top, float),
+            tension_winch=_ro(p.tension_winch, float),
+            safety_factor=_ro(p.safety_factor, float),
+            limited=_ro(p.limited, bool),
             flag_text=tuple(r["flags"] for r in prow),
         ),
         cm=MomentCurve(
-            alpha_deg=np.asarray(d.cm_alpha_deg, float),
-            cm=np.asarray(d.cm, float),
+            alpha_deg=_ro(d.cm_alpha_deg, float),
+            cm=_ro(d.cm, float),
             alpha_eq_deg=float(d.design_point["alpha_eq_deg"]),
             wind=float(req.design_wind if req.design_wind > 0 else 10.0),
         ),
         tether=TetherProfiles(
-            x=np.asarray(d.tether_x, float),
-            z=np.asarray(d.tether_z, float),
-            wind_speed=np.asarray(p.wind_speed, float),
+            x=_ro(d.tether_x, float),
+            z=_ro(d.tether_z, float),
+            wind_speed=_ro(p.wind_speed, float),
             design=_design_wind_profile(d),
         ),
         shape=h.shape,
@@ -295,13 +304,16 @@ def design_report(d: Design) -> DesignReport:
             diameter=_f(h.diameter),
             xi_cb=_f(h.xi_cb),
         ),
-        fins=FinView(outlines=tuple(fin_outlines(d)), arrangement=cfg.fins.arrangement),
+        fins=FinView(
+            outlines=tuple(_ro(o, float) for o in fin_outlines(d)),
+            arrangement=cfg.fins.arrangement,
+        ),
         points=KeyPoints(
             cb=(_f(h.xi_cb), 0.0),
             cg=(_f(af.mass.xi_cg), _f(af.mass.z_cg)),
             c=(_f(af.xi_c), _f(af.z_c)),
         ),
-        confluence_lines=confluence_lines(d),
+        confluence_lines=[_ro(line, float) for line in confluence_lines(d)],
         limits=DesignLimits(
             blow_by_limit=float(req.blow_by_limit),
             design_wind=float(req.design_wind),

@@ -36,6 +36,11 @@ class ReportPart(FrozenMapping):
     """Base of the report's parts: attribute access, a deprecated read-only mapping view and
     :meth:`to_dict` (the plain form of before)."""
 
+    # Parts hold arrays: compare and hash them by identity (a Mapping's dict equality would
+    # compare arrays element-wise and raise "truth value of an array is ambiguous").
+    __eq__ = object.__eq__
+    __hash__ = object.__hash__
+
     def _view(self) -> dict:
         """Legacy key reads: nested parts stay parts (so ``rep["tether"]["design"]["x"]`` and
         ``rep["tether"].design.x`` both read), other values as in :meth:`to_dict`."""
@@ -256,7 +261,7 @@ class DesignLimits(ReportPart):
     stall_deg: float
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class DesignReport(ReportPart):
     """Everything the design page shows, as typed data (the core-to-UI contract).
 

@@ -44,24 +44,42 @@ T = TypeVar("T")
 
 
 class _LRU:
-    """A least-recently-used map shared by every session (thread-safe)."""
+    """A least-recently-used map shared by every session (thread-safe).
+
+    A key being computed has a lock of its own, so a second caller of the same key (another
+    session, or this session's next rerun) waits for the first result instead of computing it
+    again on the same 2 cores, as ``st.cache_data`` did. When the first compute raises, nothing
+    is stored and the waiter computes for itself.
+    """
 
     def __init__(self, size: int) -> None:
         self.size = size
         self._data: OrderedDict = OrderedDict()
         self._lock = threading.Lock()
+        self._computing: dict[Hashable, threading.Lock] = {}
 
     def get(self, key: Hashable, compute: Callable[[], T]) -> T:
         with self._lock:
             if key in self._data:
                 self._data.move_to_end(key)
                 return self._data[key]
-        value = compute()  # outside the lock: other sessions keep going
-        with self._lock:
-            self._data[key] = value
-            while len(self._data) > self.size:
-                self._data.popitem(last=False)
-        return value
+            key_lock = self._computing.setdefault(key, threading.Lock())
+        try:
+            with key_lock:  # outside the store's lock: other keys and sessions keep going
+                with self._lock:
+                    if key in self._data:  # computed by the caller we waited for
+                        self._data.move_to_end(key)
+                        return self._data[key]
+                value = compute()
+                with self._lock:
+                    self._data[key] = value
+                    while len(self._data) > self.size:
+                        self._data.popitem(last=False)
+                return value
+        finally:
+            with self._lock:
+                if self._computing.get(key) is key_lock and not key_lock.locked():
+                    del self._computing[key]
 
     def peek(self, key: Hashable) -> Any:
         """The value held for ``key`` (now the most recently used), or None."""
@@ -122,14 +140,31 @@ def memo_keys(kind: str) -> list:
 
 
 def freeze(value: Any) -> Hashable:
-    """Plain data (dicts, lists, numbers, strings, None) as nested tuples, hashable: a dict
-    becomes its sorted ``(key, value)`` pairs, a list or tuple a tuple."""
+    """Plain data (dicts, lists, numbers, strings, None) as nested tuples, hashable and tagged by
+    kind, so values that compare equal in Python but mean different requests stay apart
+    (``True`` and ``1``, a dict and a list of pairs): a dict becomes ``("dict", sorted (key,
+    value) pairs)``, a list or tuple ``("list", items)``, a bool ``("bool", value)``."""
     if isinstance(value, Mapping):
-        return tuple(sorted((str(k), freeze(v)) for k, v in value.items()))
+        return ("dict", tuple(sorted((str(k), freeze(v)) for k, v in value.items())))
     if isinstance(value, (list, tuple)):
-        return tuple(freeze(v) for v in value)
+        return ("list", tuple(freeze(v) for v in value))
+    if isinstance(value, bool):
+        return ("bool", value)
     hash(value)  # a set or an object without a hash raises TypeError here
     return value
+
+
+def thaw(frozen: Hashable) -> Any:
+    """The plain data of :func:`freeze` (dicts, lists, bools) again: ``thaw(freeze(v)) == v``
+    for plain data whose tuples are lists."""
+    if isinstance(frozen, tuple) and len(frozen) == 2 and frozen[0] in ("dict", "list", "bool"):
+        kind, body = frozen
+        if kind == "dict":
+            return {k: thaw(v) for k, v in body}
+        if kind == "list":
+            return [thaw(v) for v in body]
+        return body
+    return frozen
 
 
 def frozen_inputs(req: Requirement, cfg: Configuration) -> tuple[Requirement, Configuration]:

@@ -44,7 +44,7 @@ def cached_envelope(inputs_json: str) -> Envelope:
 
 def _site(spec: Any, csv_bytes: bytes | None):
     """The site wind of a frozen site spec (:func:`_site_key`)."""
-    spec = dict(spec)
+    spec = cache.thaw(spec)
     if spec["kind"] == "csv":
         return read_wind_csv(csv_bytes or b"", spec["reference_height"], spec["shear_exponent"])
     return WeibullSite(
@@ -66,7 +66,7 @@ def cached_flyable(inputs_json: str, site_json: str, csv_bytes: bytes | None) ->
     def compute() -> dict:
         spec, data = key[2]
         ft = flyable_time(
-            cache.design_of(*key[:2]), _site(spec, data), target_availability=dict(spec)["target"]
+            cache.design_of(*key[:2]), _site(spec, data), target_availability=cache.thaw(spec)["target"]
         )
         return ft.summary()
 

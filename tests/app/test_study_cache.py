@@ -179,15 +179,74 @@ def test_dynamics_store_key_is_the_frozen_request():
         dynamics_view.frozen_request(kb)
     )
     assert frozen[0] == cache.frozen_inputs(req, cfg)
-    assert dict(frozen[1])["speed"] == 10.0 and dict(dict(frozen[1])["gust"]) == {"u": 5, "w": 0}
+    request = cache.thaw(frozen[1])
+    assert request["speed"] == 10.0 and request["gust"] == {"u": 5, "w": 0}
     thesis = dynamics_view.frozen_request(dynamics_view.request_key({**a, "inputs": None}))
     assert thesis[0] is None
 
 
-def test_freeze_makes_plain_data_hashable():
-    assert cache.freeze({"b": [1, {"c": 2}], "a": None}) == (("a", None), ("b", (1, (("c", 2),))))
+def test_freeze_makes_plain_data_hashable_and_keeps_kinds_apart():
+    plain = {"b": [1, {"c": 2}], "a": None, "on": True}
+    frozen = cache.freeze(plain)
+    hash(frozen)
+    assert cache.thaw(frozen) == plain
+    assert cache.freeze({"b": [1], "a": None}) == cache.freeze({"a": None, "b": [1]})  # key order
+    # Equal in Python, different requests: they must not share a cache entry.
+    assert cache.freeze({"a": True}) != cache.freeze({"a": 1})
+    assert cache.freeze({"a": 1}) != cache.freeze([["a", 1]])
+    assert cache.freeze([1, 2]) != cache.freeze({"1": 2})
     with pytest.raises(TypeError):
         cache.freeze({"a": {1, 2}})
+
+
+def test_a_second_caller_of_a_key_being_computed_waits_for_it_instead_of_computing_again():
+    import threading
+    import time
+
+    calls = []
+    started = threading.Event()
+
+    def compute():
+        calls.append(1)
+        started.set()
+        time.sleep(0.2)  # long enough for the second caller to arrive while this runs
+        return object()
+
+    results = []
+    first = threading.Thread(target=lambda: results.append(cache.memo("test_wait", 1, compute)))
+    first.start()
+    started.wait(5)
+    second = cache.memo("test_wait", 1, compute)
+    first.join(5)
+    assert len(calls) == 1 and results == [second]
+
+
+def test_a_waiter_computes_for_itself_when_the_first_compute_fails():
+    import threading
+    import time
+
+    started = threading.Event()
+
+    def failing():
+        started.set()
+        time.sleep(0.1)
+        raise ValueError("rejected request")
+
+    errors = []
+
+    def run_first():
+        try:
+            cache.memo("test_wait_fail", 1, failing)
+        except ValueError as exc:
+            errors.append(str(exc))
+
+    first = threading.Thread(target=run_first)
+    first.start()
+    started.wait(5)
+    assert cache.memo("test_wait_fail", 1, lambda: "computed") == "computed"
+    first.join(5)
+    assert errors == ["rejected request"]
+    assert cache.memo_keys("test_wait_fail") == [1]
 
 
 def test_a_dynamics_request_whose_inputs_no_longer_read_is_not_stored_and_says_why():

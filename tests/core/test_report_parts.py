@@ -365,3 +365,26 @@ def test_the_scanned_keys_are_report_fields():
                FinView, KeyPoints, DesignLimits, DesignSummary, MissionSummary)  # fmt: skip
     names = {f.name for cls in classes for f in fields(cls)}
     assert REPORT_KEYS <= names, sorted(REPORT_KEYS - names)
+
+
+def test_report_arrays_are_read_only_views_and_the_design_keeps_its_own(case):
+    """The app shares one report between sessions: a write into it must fail, not leak."""
+    d, rep = case
+    arrays = [getattr(rep.perf, f.name) for f in fields(rep.perf) if f.name != "flag_text"]
+    arrays += [rep.cm.alpha_deg, rep.cm.cm, rep.tether.x, rep.tether.z, rep.tether.wind_speed]
+    arrays += [rep.tether.design.x, rep.tether.design.z, *rep.fins.outlines, *rep.confluence_lines]
+    for a in arrays:
+        assert not a.flags.writeable
+        with pytest.raises(ValueError, match="read-only"):
+            a[...] = 0.0
+    assert d.performance.blow_by.flags.writeable  # a view: the design's array is untouched
+    np.testing.assert_array_equal(rep.perf.blow_by, d.performance.blow_by)
+
+
+def test_reports_and_array_parts_compare_by_identity_without_raising():
+    d = next(iter(DESIGNS.values()))
+    a, b = design_report(d), design_report(d)
+    assert a == a and a != b  # before: "truth value of an array is ambiguous"
+    assert a.perf == a.perf and a.perf != b.perf and a.tether != b.tether
+    assert a.hull == b.hull and a.limits == b.limits  # scalar parts compare by value
+    assert len({a, b, a}) == 2
