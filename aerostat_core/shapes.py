@@ -118,9 +118,18 @@ def gnvr_profile(x):
     meet with equal radius and slopes within 0.4 % (-0.4446 and -0.4430 in dr/dxi), so the
     join is not exactly C1. Source: docs/methods.md §1.13, S22.
 
+    Parameters
+    ----------
+    x : array_like
+        Station from the nose as a fraction of the hull length, xi/l [-]; values outside
+        [0, 1] are clipped. The published profile is the one at l/d = 3.05; other fineness
+        ratios stretch it along the axis (``SHAPE_INFO["gnvr"]`` gives the range, 2-6,
+        enforced by :func:`check_fineness`).
+
     Returns
     -------
     P, dP/dx : ndarray [-]
+        (r/d)^2 and its derivative with respect to x, each of the shape of ``x``.
     """
     x = np.clip(np.asarray(x, dtype=float), 0.0, 1.0)
     f = GNVR_FINENESS
@@ -148,6 +157,17 @@ def gnvr_volume_fraction(x):
     Nose: (1.25/F) (t - t^3/3 + 2/3) / 4 with t = F x/1.25 - 1. Arc: with v = F x - 1.25,
     int (sqrt(R^2 - v^2) - c)^2 dv = (R^2 + c^2) v - v^3/3 - c (v s + R^2 asin(v/R)),
     s = sqrt(R^2 - v^2). Tail: k F ((x - x2) - (x^2 - x2^2)/2).
+
+    Parameters
+    ----------
+    x : array_like
+        Station xi/l [-], clipped to [0, 1] (validity as :func:`gnvr_profile`).
+
+    Returns
+    -------
+    ndarray [-]
+        Q(x); Q(1) = C_p / 4 = 0.1544. Source: docs/methods.md §1.13, S22 (the integrals of
+        the three pieces of :func:`gnvr_profile`).
     """
     x = np.clip(np.asarray(x, dtype=float), 0.0, 1.0)
     f, a, rr, c = GNVR_FINENESS, GNVR_NOSE, GNVR_ARC_RADIUS, GNVR_ARC_CENTRE
@@ -171,7 +191,22 @@ def gnvr_volume_fraction(x):
 
 
 def profile_function(shape: str, x):
-    """P(x) = (r/d)^2 and dP/dx [-] of a non-NPL shape at stations x = xi/l in [0, 1]."""
+    """P(x) = (r/d)^2 and dP/dx [-] of a non-NPL shape at stations x = xi/l in [0, 1].
+
+    Gertler shapes: P is the published polynomial in x (:func:`profile_coefficients`); GNVR:
+    the piecewise :func:`gnvr_profile`. Source: docs/methods.md §1.13.
+
+    Parameters
+    ----------
+    shape : str
+        A key of :data:`SHAPE_INFO` whose family is "gertler" or "piecewise".
+    x : array_like
+        Station xi/l [-], clipped to [0, 1].
+
+    Returns
+    -------
+    P, dP/dx : ndarray [-]
+    """
     if SHAPE_INFO[shape].family == "piecewise":
         return gnvr_profile(x)
     pp = np.polynomial.Polynomial(profile_coefficients(shape))
@@ -180,7 +215,22 @@ def profile_function(shape: str, x):
 
 
 def profile_volume_fraction(shape: str, x):
-    """Q(x) = int_0^x P dx [-] of a non-NPL shape (V(0..xi) = pi d^2 l Q(xi/l))."""
+    """Q(x) = int_0^x P dx [-] of a non-NPL shape, so that V(0..xi) = pi d^2 l Q(xi/l) [m3].
+
+    Exact for both families: the polynomial's integral (Gertler shapes) or the closed form of
+    each GNVR piece (:func:`gnvr_volume_fraction`). Source: docs/methods.md §1.13.
+
+    Parameters
+    ----------
+    shape : str
+        A key of :data:`SHAPE_INFO` whose family is "gertler" or "piecewise".
+    x : array_like
+        Station xi/l [-], clipped to [0, 1].
+
+    Returns
+    -------
+    ndarray [-]
+    """
     if SHAPE_INFO[shape].family == "piecewise":
         return gnvr_volume_fraction(x)
     q = np.polynomial.Polynomial(profile_coefficients(shape)).integ()

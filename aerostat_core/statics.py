@@ -160,7 +160,14 @@ def aerodynamic_moment(af: Airframe, aero: AeroModel, alpha, speed, xi_ref, cd0=
     return -m + ld.hull_moment
 
 
-def weathervane_slope(af: Airframe, aero: AeroModel, alpha, speed, cd0=None, h: float = 1e-5):
+#: Step of the central differences of the moment in alpha [rad]: truncation error O(h^2) and
+#: rounding O(eps M / h) balance near 1e-5 for moments of 1-1e4 N m (docs/methods.md §1.8).
+DIFFERENCE_STEP = 1e-5
+
+
+def weathervane_slope(
+    af: Airframe, aero: AeroModel, alpha, speed, cd0=None, h: float = DIFFERENCE_STEP
+):
     """d(aerodynamic moment about the centre of volume)/d(alpha) at ``alpha`` [N m/rad]
     (central difference, step ``h`` [rad]); negative = weathervane stable.
 
@@ -172,7 +179,7 @@ def weathervane_slope(af: Airframe, aero: AeroModel, alpha, speed, cd0=None, h: 
     return central_difference(k, np.asarray(alpha, float), h)
 
 
-def central_difference(moment, alpha, h: float = 1e-5):
+def central_difference(moment, alpha, h: float = DIFFERENCE_STEP):
     """Slope of a moment function by central difference: (M(alpha + h) - M(alpha - h)) / 2h.
 
     Parameters
@@ -217,6 +224,26 @@ class MomentKernel:
     where C0, C1 hold buoyancy, weight, the fins' zero-lift drag and a bluff hull's constant
     forces; P1-P4 the Jones & DeLaurier hull terms; F1-F4 the fins' lift and induced drag. The
     same floats as the plain functions to rounding (a few ulp of the largest term).
+
+    Parameters
+    ----------
+    af : Airframe
+        The airframe (scalar or batched arrays).
+    aero : AeroModel
+        Aerodynamic model constants (hull efficiency, cross-flow drag, fin model).
+    speed : array_like
+        Wind speed at the aerostat [m/s], >= 0.
+    cd0 : array_like
+        Volumetric zero-lift drag coefficient of the hull [-].
+    xi_ref : array_like, optional
+        Axis station of the moment reference [m from the nose]; None (default) with
+        ``static=True``: the confluence point.
+    static : bool
+        True: buoyancy and weight included (moment about the confluence point); False: the
+        aerodynamic moment only, about ``(xi_ref, 0)``.
+
+    Calling the kernel: ``kernel(alpha)`` with alpha [rad] of the batch shape (or with leading
+    axes) returns M [N m], positive nose up.
     """
 
     def __init__(self, af: Airframe, aero: AeroModel, speed, cd0, xi_ref=None,
@@ -280,6 +307,8 @@ class MomentKernel:
         self.f = tuple(a * one for a in (dxf * lf, dzf * di, dzf * lf, dxf * di))
 
     def __call__(self, alpha):
+        """M(alpha) [N m], positive nose up, at angles of attack ``alpha`` [rad] (batch shape,
+        optionally with leading axes)."""
         a = np.asarray(alpha, float)
         ca, sa = np.cos(a), np.sin(a)
         if self.fins:

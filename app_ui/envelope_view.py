@@ -20,6 +20,7 @@ import streamlit as st
 from aerostat_core.constraints import BY_NAME
 from aerostat_core.envelope import ENVELOPE_NAMES, Envelope, operating_envelope
 from aerostat_core.html_report import build_report
+from aerostat_core.report import DesignReport
 from aerostat_core.site_wind import MAX_CSV_BYTES, WeibullSite, flyable_time, read_wind_csv
 from aerostat_core.uncertainty import monte_carlo, rule_set_spread
 
@@ -202,7 +203,7 @@ def envelope_figure(env: Envelope) -> go.Figure:
     )
 
 
-def bands_figure(mc: dict, rep: dict) -> go.Figure:
+def bands_figure(mc: dict, rep: DesignReport) -> go.Figure:
     """5-95 % bands of blow-by and tension versus wind, with the design's curves."""
     from plotly.subplots import make_subplots
 
@@ -376,7 +377,7 @@ def _flyable(inputs_json: str) -> None:
     )
 
 
-def _uncertainty(inputs_json: str, rep: dict) -> None:
+def _uncertainty(inputs_json: str, rep: DesignReport) -> None:
     with st.form("mc_form", border=False):
         c = st.columns([1, 1, 1], vertical_alignment="bottom")
         n = c[0].selectbox("Monte Carlo samples", MC_SIZES, index=2, key="mc_n")
@@ -420,7 +421,7 @@ def _text_frame(df: pd.DataFrame) -> pd.DataFrame:
     return df.map(lambda v: f"{v:.4g}" if isinstance(v, float) else v)
 
 
-def render(inputs_json: str, rep: dict) -> None:
+def render(inputs_json: str, rep: DesignReport) -> None:
     """The Envelope tab."""
     env = cached_envelope(inputs_json)
     st.plotly_chart(envelope_figure(env), key="envelope_map")

@@ -28,10 +28,12 @@ st.table(_props.iloc[:, :5])
 st.table(_props.iloc[:, 5:])
 st.caption("Sources. " + " ".join(f"{shape}: {src}." for shape, src in _lib.loc["Source"].items()))
 st.caption(
-    "Gertler profiles from a published parameter table (attributed to Alam & Pant 2017; see docs/methods.md §1.13 for what was checked); k1, k2, k' are "
-    "Lamb's closed forms for the spheroids and the equivalent spheroid for NPL, and a "
-    "potential-flow computation (line singularities, checked against Lamb) for the Gertler "
-    "shapes. Bluff hulls (sphere, oblate, Helikite) carry no fins; their drag is the sphere's "
+    "Wang, Zhiyuan-1 and LOTTE are Gertler profiles from a published parameter table "
+    "(attributed to Alam & Pant 2017); GNVR is its ellipse, circular arc and parabola "
+    "(second-hand constants, cross-checked against two Gertler tables); docs/methods.md §1.13 "
+    "says what was checked for each. k1, k2, k' are Lamb's closed forms for the spheroids and "
+    "the equivalent spheroid for NPL, and a potential-flow computation (line singularities, "
+    "checked against Lamb) for the Gertler shapes and GNVR. Bluff hulls (sphere, oblate, Helikite) carry no fins; their drag is the sphere's "
     "(Achenbach 1972) at the hull Reynolds number."
 )
 

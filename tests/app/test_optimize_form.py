@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import pytest
 
-from aerostat_core.optimize import VARIABLE_INFO, BoundsError, check_bounds
+from aerostat_core.optimize import BOUNDS_REASONS, BoundsError, check_bounds
 from app_ui.optimize_form import bounds_items, bounds_message, parse_ranges
 
 
@@ -44,8 +44,27 @@ def test_the_form_words_the_engine_error_it_catches():
     assert exc.value.reason == "range"
     text = bounds_message(exc.value, {"position": (60.5, 99.0)})
     assert text.endswith("bounds (60.5, 99) leave the valid range [40, 95]")
-    lo, hi = VARIABLE_INFO["position"][2]
-    assert (lo, hi) == (0.4, 0.95)
+
+
+@pytest.mark.parametrize(
+    "bounds, reason",
+    [
+        ({"position": (0.7, 0.6)}, "order"),
+        ({"position": (0.7, 0.7)}, "empty"),
+        ({"position": (0.3, 0.7)}, "range"),
+        ({"position": (float("nan"), 0.7)}, "not finite"),
+    ],
+)
+def test_every_reason_a_typed_box_can_give_is_worded_in_the_boxes_unit(bounds, reason):
+    """A reason the form does not word would fall back to the engine's text, which quotes the fin
+    position as a fraction: every reason two number boxes can produce has the form's words."""
+    with pytest.raises(BoundsError) as exc:
+        check_bounds(bounds)
+    assert exc.value.reason == reason and reason in BOUNDS_REASONS
+    typed = {k: tuple(100.0 * v for v in pair) for k, pair in bounds.items()}
+    text = bounds_message(exc.value, typed)
+    assert text.startswith("Fin position Δl_f [% of hull length]: ")
+    assert str(exc.value) not in text  # the form's own wording, not the engine's message
 
 
 def test_good_bounds_reach_the_engine_in_its_units():
