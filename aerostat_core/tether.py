@@ -296,10 +296,12 @@ def solve_tether(
         new_height = -z[-1]
         if p == passes - 1:  # no next pass to prepare
             break
-        if np.all(np.abs(new_height - height) < tol):
-            break
         g = np.maximum(z - z[-1], 0.0)  # the plain fixed-point update of the node heights
         f = g - heights
+        # converged: the top and every node within tol (an accelerated step can leave the top
+        # closer than the nodes below it, unlike a plain pass)
+        if np.all(np.abs(new_height - height) < tol) and np.all(np.abs(f) < tol):
+            break
         if prev is None:
             heights, height_next = g, new_height
         else:
