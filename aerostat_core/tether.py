@@ -273,11 +273,21 @@ def solve_tether(
     max_passes : int
         Fixed-point passes on the node heights (sheared wind).
     tol : float
-        Height convergence tolerance [m].
+        Height convergence tolerance [m]: the passes stop when the top height and every node
+        height of a march's output are within ``tol`` of the heights it was marched with.
 
     Returns
     -------
     TetherSolution
+
+    Notes
+    -----
+    The fixed point is H = G(H): the node heights H (winch = 0) at which the wind is looked up
+    reproduce themselves through the march G. From a vertical line, plain passes H <- G(H)
+    contract by ~0.03 a pass on a 300 m line (the slowest mode of dG/dH, nearly a scaling of
+    the line); from the third march on, an Anderson step of depth 1 (Walker & Ni, SIAM J.
+    Numer. Anal. 49, 2011) takes the rate to ~0.002-0.02, so ~5 marches instead of ~7. It
+    only recombines the two latest outputs of G, so a converged answer is G's own fixed point.
     """
     s = np.linspace(0.0, length, segments + 1)
     height = np.asarray(length, float)
