@@ -273,11 +273,21 @@ def solve_tether(
     max_passes : int
         Fixed-point passes on the node heights (sheared wind).
     tol : float
-        Height convergence tolerance [m].
+        Height convergence tolerance [m]: the passes stop when the top height and every node
+        height of a march's output are within ``tol`` of the heights it was marched with.
 
     Returns
     -------
     TetherSolution
+
+    Notes
+    -----
+    The fixed point is H = G(H): the node heights H (winch = 0) at which the wind is looked up
+    reproduce themselves through the march G. From a vertical line, plain passes H <- G(H)
+    contract by ~0.03 a pass on a 300 m line (the slowest mode of dG/dH, nearly a scaling of
+    the line); from the third march on, an Anderson step of depth 1 (Walker & Ni, SIAM J.
+    Numer. Anal. 49, 2011) takes the rate to ~0.002-0.02, so ~5 marches instead of ~7. It
+    only recombines the two latest outputs of G, so a converged answer is G's own fixed point.
     """
     s = np.linspace(0.0, length, segments + 1)
     height = np.asarray(length, float)
@@ -286,6 +296,7 @@ def solve_tether(
     heights = (length - s).reshape((-1,) + (1,) * len(shape)) * np.ones((1,) + shape)
     height = np.full(shape, float(length))
     passes = max_passes if sheared else 1
+    prev = None  # (plain update, its residual, top height) of the previous pass
     for p in range(passes):
         tx0, tz0 = top_tension(height)
         tx, tz, x, z = march(
@@ -295,11 +306,31 @@ def solve_tether(
         new_height = -z[-1]
         if p == passes - 1:  # no next pass to prepare
             break
-        heights = np.maximum(z - z[-1], 0.0)
-        done = np.all(np.abs(new_height - height) < tol)
-        height = new_height
-        if done:
+        g = np.maximum(z - z[-1], 0.0)  # the plain fixed-point update of the node heights
+        f = g - heights
+        # converged: the top and every node within tol (an accelerated step can leave the top
+        # closer than the nodes below it, unlike a plain pass)
+        if np.all(np.abs(new_height - height) < tol) and np.all(np.abs(f) < tol):
             break
+        if prev is None:
+            heights, height_next = g, new_height
+        else:
+            # Anderson acceleration of depth 1, per column: the plain update moved back along
+            # the last change of the update, by the secant estimate gamma = c/(c - 1) of the
+            # slowest contraction c from the last two residuals (the fixed point is the plain
+            # iteration's; it takes ~5 marches instead of ~7 on a 300 m line). Safeguards:
+            # gamma kept to c in [-1, 0.5], and the plain update where the top's residual
+            # grew.
+            g_prev, f_prev, top_prev = prev
+            df = f - f_prev
+            den = np.sum(df * df, axis=0)
+            gamma = np.sum(f * df, axis=0) / np.where(den > 0.0, den, 1.0)
+            shrinking = np.abs(f[0]) < np.abs(f_prev[0])
+            gamma = np.where(shrinking & (den > 0.0), np.clip(gamma, -1.0, 0.5), 0.0)
+            heights = np.maximum(g - gamma * (g - g_prev), 0.0)
+            height_next = new_height - gamma * (new_height - top_prev)
+        prev = g, f, new_height
+        height = height_next
     tension = np.hypot(tx, tz)
     elevation = np.arctan2(tz, tx)
     return TetherSolution(

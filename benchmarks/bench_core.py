@@ -48,6 +48,25 @@ def median_cpu(fn, repeats: int) -> float:
     return statistics.median(times)
 
 
+def marches(fn) -> int:
+    """Number of tether marches ``fn()`` runs (each is ~50 steps of ~25 numpy calls: the cost
+    of a sheared-wind height pass)."""
+    from aerostat_core import tether
+
+    plain, count = tether.march, [0]
+
+    def counted(*args, **kwargs):
+        count[0] += 1
+        return plain(*args, **kwargs)
+
+    tether.march = counted
+    try:
+        fn()
+    finally:
+        tether.march = plain
+    return count[0]
+
+
 def main() -> None:
     req, cfg = thesis_baseline()
     sized_cfg = cfg.with_design_variables(volume=None)
@@ -67,6 +86,8 @@ def main() -> None:
     sheared = replace(rules_configuration("practice"), wind_profile=WindProfile("power"))
     t = median_time(lambda: design(practice, sheared), 20)
     print(f"design(), practice rules, power-law wind (height passes): median {t * 1e3:.2f} ms")
+    print(f"  tether marches per design: uniform wind {marches(lambda: design(practice))}, "
+          f"power-law wind {marches(lambda: design(practice, sheared))} (load-independent)")
     for label, fn in (("design, given volume", lambda: design(req, cfg)),
                       ("design, sized (thesis rules)", lambda: design(req, sized_cfg)),
                       ("design(), sized (practice default)", lambda: design(practice)),
