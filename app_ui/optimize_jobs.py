@@ -4,7 +4,9 @@ shared by every session, and the optimisation job (one task per solver, then the
 Every engine call is cached through :func:`app_ui.cache.memo`, the one process-wide store: the
 key is the frozen inputs (resolved Requirement, Configuration) plus the request's other
 parameters as hashable values (bounds as ``((variable, lower, upper), ...)`` in the order of
-the variables, numbers, names), so two sessions with the same request share one computation,
+the variables, numbers, names), one :class:`~typing.NamedTuple` per study (:class:`SensitivityKey`
+...), so every compute reads its key by field name, never by position. A NamedTuple is a tuple
+(hashed and compared by value), so two sessions with the same request share one computation,
 and every stochastic solver is seeded, so a cached result means something. A request the engine
 rejects (``ValueError``) or a cancelled run stores nothing. Results are shared, not copied:
 read-only.
@@ -18,7 +20,7 @@ when they compute: a cached result returns at once, so no bar is ever replayed.
 from __future__ import annotations
 
 from collections.abc import Mapping, MutableMapping, Sequence
-from typing import Any
+from typing import Any, NamedTuple
 
 import streamlit as st
 
@@ -57,6 +59,65 @@ STUDY_RESULTS = 64
 #: Largest number of solver results kept for every session (the cache of :func:`solve_shared`).
 SHARED_RESULTS = 64
 
+#: Design variables {name: value} as a cache key: ((name, value), ...) sorted by name.
+Variables = tuple[tuple[str, float], ...]
+
+# --- the study keys (one per cache kind; each is a tuple, hashable and equal by value) ----------
+
+
+class SensitivityKey(NamedTuple):
+    """Key of the one-at-a-time sweeps ("sensitivity")."""
+
+    requirement: Requirement  # resolved (:func:`app_ui.cache.frozen_inputs`)
+    configuration: Configuration
+    bounds: Bounds  # the sweep range of each variable
+    n_points: int  # points per sweep
+    resize: bool  # hull re-sized to the requirement at every point
+
+
+class MapKey(NamedTuple):
+    """Key of the two-variable map ("sensitivity_map")."""
+
+    requirement: Requirement
+    configuration: Configuration
+    x_variable: str
+    y_variable: str
+    bounds: Bounds
+    n_points: int  # grid points per axis
+    resize: bool
+
+
+class SolveKey(NamedTuple):
+    """Key of one seeded solver run ("solve")."""
+
+    requirement: Requirement
+    configuration: Configuration
+    bounds: Bounds
+    objective: str
+    solver: str
+    level: str  # run level ("quick", "normal")
+    seed: int
+
+
+class ParetoKey(NamedTuple):
+    """Key of the epsilon-constraint front ("pareto")."""
+
+    requirement: Requirement
+    configuration: Configuration
+    bounds: Bounds
+    objective: str
+    limits: tuple[float, ...]  # blow-by limits of the front [m]
+    starts: tuple[Variables, ...]  # starting designs besides the configuration's
+
+
+class ComparisonKey(NamedTuple):
+    """Key of the baseline-versus-optimum comparison ("optimum_comparison")."""
+
+    requirement: Requirement  # the run's requirement, for both designs
+    configuration: Configuration  # the baseline: the design inputs as given
+    optimum: Variables  # the optimum's design variables (the hull sized)
+
+
 # --- cached engine calls --------------------------------------------------------------------------
 
 
@@ -68,11 +129,24 @@ def cached_sensitivity(
     resize: bool,
 ) -> SensitivityResult:
     """:func:`aerostat_core.sensitivity.one_at_a_time` of the inputs (raises ValueError)."""
-    key = (*cache.frozen_inputs(req, cfg), bounds_items(ranges), int(n_points), bool(resize))
+    req_k, cfg_k = cache.frozen_inputs(req, cfg)
+    key = SensitivityKey(
+        requirement=req_k,
+        configuration=cfg_k,
+        bounds=bounds_items(ranges),
+        n_points=int(n_points),
+        resize=bool(resize),
+    )
     return cache.memo(
         "sensitivity",
         key,
-        lambda: one_at_a_time(*key[:2], bounds_dict(key[2]), key[3], key[4]),
+        lambda: one_at_a_time(
+            key.requirement,
+            key.configuration,
+            ranges=bounds_dict(key.bounds),
+            n_points=key.n_points,
+            resize=key.resize,
+        ),
         STUDY_RESULTS,
     )
 
@@ -87,18 +161,28 @@ def cached_map(
     resize: bool,
 ) -> SensitivityMap:
     """:func:`aerostat_core.sensitivity.two_variable_map` of the inputs (raises ValueError)."""
-    key = (
-        *cache.frozen_inputs(req, cfg),
-        str(x_var),
-        str(y_var),
-        bounds_items(ranges),
-        int(n),
-        bool(resize),
+    req_k, cfg_k = cache.frozen_inputs(req, cfg)
+    key = MapKey(
+        requirement=req_k,
+        configuration=cfg_k,
+        x_variable=str(x_var),
+        y_variable=str(y_var),
+        bounds=bounds_items(ranges),
+        n_points=int(n),
+        resize=bool(resize),
     )
     return cache.memo(
         "sensitivity_map",
         key,
-        lambda: two_variable_map(*key[:4], bounds_dict(key[4]), key[5], key[6]),
+        lambda: two_variable_map(
+            key.requirement,
+            key.configuration,
+            x_variable=key.x_variable,
+            y_variable=key.y_variable,
+            ranges=bounds_dict(key.bounds),
+            n=key.n_points,
+            resize=key.resize,
+        ),
         STUDY_RESULTS,
     )
 
@@ -119,18 +203,22 @@ def solve_shared(
     names the solver) only when the run has to compute; a request any session has run before
     returns at once. A run interrupted from ``progress`` (Cancel) stores nothing.
     """
-    key = (
-        *cache.frozen_inputs(req, cfg),
-        bounds_items(bounds),
-        str(objective),
-        str(solver),
-        str(level),
-        int(seed),
+    req_k, cfg_k = cache.frozen_inputs(req, cfg)
+    key = SolveKey(
+        requirement=req_k,
+        configuration=cfg_k,
+        bounds=bounds_items(bounds),
+        objective=str(objective),
+        solver=str(solver),
+        level=str(level),
+        seed=int(seed),
     )
 
     def compute() -> OptimizationResult:
-        problem = OptimizationProblem(*key[:2], bounds_dict(key[2]), objective)
-        return solve(problem, solver, level, int(seed), progress=progress)
+        problem = OptimizationProblem(
+            key.requirement, key.configuration, bounds_dict(key.bounds), key.objective
+        )
+        return solve(problem, key.solver, key.level, key.seed, progress=progress)
 
     return cache.memo("solve", key, compute, SHARED_RESULTS)
 
@@ -148,7 +236,7 @@ def cached_solve(
     return solve_shared(req, cfg, bounds, objective, solver, level, seed)
 
 
-def _x_items(x: Mapping[str, float]) -> tuple[tuple[str, float], ...]:
+def _x_items(x: Mapping[str, float]) -> Variables:
     """Design variables {name: value} as hashable items, sorted by name."""
     return tuple(sorted((str(k), float(v)) for k, v in x.items()))
 
@@ -163,22 +251,25 @@ def cached_pareto(
 ) -> ParetoFront:
     """Epsilon-constraint front (:func:`aerostat_core.optimize.pareto_front`), started from
     ``starts`` (design-variable dicts; raises ValueError)."""
-    key = (
-        *cache.frozen_inputs(req, cfg),
-        bounds_items(bounds),
-        str(objective),
-        tuple(float(v) for v in limits),
-        tuple(_x_items(x) for x in starts),
+    req_k, cfg_k = cache.frozen_inputs(req, cfg)
+    key = ParetoKey(
+        requirement=req_k,
+        configuration=cfg_k,
+        bounds=bounds_items(bounds),
+        objective=str(objective),
+        limits=tuple(float(v) for v in limits),
+        starts=tuple(_x_items(x) for x in starts),
     )
     return cache.memo(
         "pareto",
         key,
         lambda: pareto_front(
-            *key[:2],
-            bounds_dict(key[2]),
-            list(key[4]),
-            objective=objective,
-            starts=[dict(x) for x in key[5]],
+            key.requirement,
+            key.configuration,
+            bounds=bounds_dict(key.bounds),
+            limits=list(key.limits),
+            objective=key.objective,
+            starts=[dict(x) for x in key.starts],
         ),
         STUDY_RESULTS,
     )
@@ -190,13 +281,15 @@ def cached_comparison(
     """Baseline (the design inputs ``cfg_base`` as given) versus optimum (variables ``x``, sized)
     under the run's requirement ``req``: change rows, thesis rows and performance curves of
     both."""
-    key = (*cache.frozen_inputs(req, cfg_base), _x_items(x))
+    req_k, cfg_k = cache.frozen_inputs(req, cfg_base)
+    key = ComparisonKey(requirement=req_k, configuration=cfg_k, optimum=_x_items(x))
 
     def compute() -> dict[str, Any]:
-        req_k, base = key[:2]
         # each design once, from the shared cache, for both the change rows and the curves
-        d_base = cache.design_of(req_k, base)
-        d_opt = cache.design_of(req_k, optimum_configuration(base, dict(key[2])))
+        d_base = cache.design_of(key.requirement, key.configuration)
+        d_opt = cache.design_of(
+            key.requirement, optimum_configuration(key.configuration, dict(key.optimum))
+        )
         rows = design_change_rows(d_base, d_opt)
         b, o = curves_of(d_base), curves_of(d_opt)
         return {

@@ -80,13 +80,12 @@ def test_sensitivity_is_keyed_by_the_frozen_inputs_and_the_bounds(monkeypatch):
     optimize_jobs.cached_sensitivity(*_inputs(11.37), {"position": (0.6, 0.71)}, 7, True)
     assert len(calls) == 3
     key = next(k for k in cache.memo_keys("sensitivity") if k[0].payload_mass == 11.37)
-    req, cfg, bounds, n, resize = key
+    assert isinstance(key, optimize_jobs.SensitivityKey)
+    req, cfg = key.requirement, key.configuration
     assert isinstance(req, Requirement) and isinstance(cfg, Configuration)
     assert req == req.resolved()  # the limits as applied
-    assert bounds == (("fineness_ratio", 2.5, 4.0), ("position", 0.6, 0.7)) and (n, resize) == (
-        7,
-        True,
-    )
+    assert key.bounds == (("fineness_ratio", 2.5, 4.0), ("position", 0.6, 0.7))
+    assert (key.n_points, key.resize) == (7, True)
     assert not any(
         isinstance(part, str) and "{" in part for k in cache.memo_keys("sensitivity") for part in k
     )
@@ -256,3 +255,158 @@ def test_a_dynamics_request_whose_inputs_no_longer_read_is_not_stored_and_says_w
     assert dynamics_view.stored(key) is None
     with pytest.raises(ValueError, match="payload_mass"):
         dynamics_view.run_cached(key)
+
+
+# --- every study key of the Sensitivity and Optimise pages is a NamedTuple read by name ---------
+
+_BOUNDS = {"position": (0.6, 0.7), "fineness_ratio": (2.5, 4.0)}
+
+
+def _run_studies(monkeypatch, payload: float) -> dict[str, dict]:
+    """Every cached study of :mod:`app_ui.optimize_jobs` once, on fake engines that record the
+    arguments by the engine's parameter names: {cache kind: arguments}."""
+    seen: dict[str, dict] = {}
+
+    def one_at_a_time(req, cfg, ranges, n_points, resize):
+        seen["sensitivity"] = dict(
+            req=req, cfg=cfg, ranges=ranges, n_points=n_points, resize=resize
+        )
+        return object()
+
+    def two_variable_map(req, cfg, x_variable, y_variable, ranges, n, resize):
+        seen["sensitivity_map"] = dict(
+            req=req, x_variable=x_variable, y_variable=y_variable, ranges=ranges, n=n, resize=resize
+        )
+        return object()
+
+    def solve(problem, solver, level, seed, progress=None):
+        seen["solve"] = dict(
+            req=problem.requirement,
+            objective=problem.objective,
+            solver=solver,
+            level=level,
+            seed=seed,
+        )
+        return object()
+
+    def pareto_front(req, cfg, bounds, limits, objective, starts):
+        seen["pareto"] = dict(
+            req=req, bounds=bounds, limits=limits, objective=objective, starts=starts
+        )
+        return object()
+
+    designs = []
+    monkeypatch.setattr(optimize_jobs, "one_at_a_time", one_at_a_time)
+    monkeypatch.setattr(optimize_jobs, "two_variable_map", two_variable_map)
+    monkeypatch.setattr(optimize_jobs, "solve", solve)
+    monkeypatch.setattr(optimize_jobs, "pareto_front", pareto_front)
+    monkeypatch.setattr(optimize_jobs, "optimum_configuration", lambda base, x: ("optimum", x))
+    monkeypatch.setattr(cache, "design_of", lambda req, cfg: designs.append(cfg) or cfg)
+    monkeypatch.setattr(optimize_jobs, "design_change_rows", lambda b, o: [b, o])
+    monkeypatch.setattr(optimize_jobs, "thesis_comparison_rows", lambda rows: rows)
+    monkeypatch.setattr(optimize_jobs, "curves_of", lambda d: d)
+    monkeypatch.setattr(optimize_jobs, "performance_comparison_rows", lambda b, o: [])
+
+    req, cfg = _inputs(payload)
+    optimize_jobs.cached_sensitivity(req, cfg, _BOUNDS, 7, False)
+    optimize_jobs.cached_map(req, cfg, "position", "fineness_ratio", _BOUNDS, 9, True)
+    optimize_jobs.cached_solve(req, cfg, _BOUNDS, "volume", "de", "normal", 3)
+    optimize_jobs.cached_pareto(req, cfg, _BOUNDS, "volume", [40, 60.5], [{"position": 0.65}])
+    optimize_jobs.cached_comparison(req, cfg, {"position": 0.65, "fineness_ratio": 3.0})
+    seen["optimum_comparison"] = dict(designs=designs)
+    return seen
+
+
+#: Cache kind -> (key type, the fields after requirement and configuration).
+STUDY_KEYS = {
+    "sensitivity": (optimize_jobs.SensitivityKey, ("bounds", "n_points", "resize")),
+    "sensitivity_map": (
+        optimize_jobs.MapKey,
+        ("x_variable", "y_variable", "bounds", "n_points", "resize"),
+    ),
+    "solve": (optimize_jobs.SolveKey, ("bounds", "objective", "solver", "level", "seed")),
+    "pareto": (optimize_jobs.ParetoKey, ("bounds", "objective", "limits", "starts")),
+    "optimum_comparison": (optimize_jobs.ComparisonKey, ("optimum",)),
+}
+
+
+def test_each_study_key_is_a_named_tuple_whose_values_reach_the_engine_by_name(monkeypatch):
+    seen = _run_studies(monkeypatch, 11.61)
+    assert set(seen) == set(STUDY_KEYS)
+    for kind, (key_type, rest) in STUDY_KEYS.items():
+        assert issubclass(key_type, tuple)
+        assert key_type._fields == ("requirement", "configuration", *rest)
+        (key,) = [k for k in cache.memo_keys(kind) if k.requirement.payload_mass == 11.61]
+        assert type(key) is key_type, kind
+        assert isinstance(key.requirement, Requirement) and key.requirement.resolved() == (
+            key.requirement
+        )
+        assert isinstance(key.configuration, Configuration)
+        hash(key)
+    bounds = {"fineness_ratio": (2.5, 4.0), "position": (0.6, 0.7)}
+    assert seen["sensitivity"]["ranges"] == bounds
+    assert (seen["sensitivity"]["n_points"], seen["sensitivity"]["resize"]) == (7, False)
+    m = seen["sensitivity_map"]
+    assert (m["x_variable"], m["y_variable"], m["n"], m["resize"]) == (
+        "position",
+        "fineness_ratio",
+        9,
+        True,
+    )
+    s = seen["solve"]
+    assert (s["objective"], s["solver"], s["level"], s["seed"]) == ("volume", "de", "normal", 3)
+    p = seen["pareto"]
+    assert (p["bounds"], p["limits"], p["objective"]) == (bounds, [40.0, 60.5], "volume")
+    assert p["starts"] == [{"position": 0.65}]
+    base, optimum = seen["optimum_comparison"]["designs"]
+    assert isinstance(base, Configuration)
+    assert optimum == ("optimum", {"fineness_ratio": 3.0, "position": 0.65})
+
+
+def test_a_study_key_built_in_another_field_order_hits_only_when_every_value_is_equal(
+    monkeypatch,
+):
+    _run_studies(monkeypatch, 11.67)
+    for kind, (key_type, rest) in STUDY_KEYS.items():
+        (key,) = [k for k in cache.memo_keys(kind) if k.requirement.payload_mass == 11.67]
+        held = cache.peek(kind, key)
+        assert held is not None
+        # The same values by keyword, the fields named in reverse order and the inputs rebuilt.
+        req, cfg = cache.frozen_inputs(*_inputs(11.67))
+        values = {**key._asdict(), "requirement": req, "configuration": cfg}
+        rebuilt = key_type(**dict(reversed(values.items())))
+        assert rebuilt == key and rebuilt is not key
+        assert cache.memo(kind, rebuilt, lambda: pytest.fail("a hit must not compute")) is held
+        # One field differing (the last, whatever it is) misses.
+        last = rest[-1]
+        value = getattr(key, last)
+        other = (
+            not value
+            if isinstance(value, bool)
+            else value + 1
+            if isinstance(value, int)
+            else value + "x"
+            if isinstance(value, str)
+            else value[:-1]
+        )
+        assert cache.peek(kind, key._replace(**{last: other})) is None, kind
+    # Two fields of one type swapped: a different request, a different entry.
+    (m,) = [k for k in cache.memo_keys("sensitivity_map") if k.requirement.payload_mass == 11.67]
+    swapped = m._replace(x_variable=m.y_variable, y_variable=m.x_variable)
+    assert swapped != m and cache.peek("sensitivity_map", swapped) is None
+
+
+def test_no_study_key_is_read_by_position():
+    """The computes of :mod:`app_ui.optimize_jobs` read ``key.bounds`` etc., never ``key[2]``."""
+    import ast
+    import inspect
+
+    tree = ast.parse(inspect.getsource(optimize_jobs))
+    found = [
+        ast.unparse(node)
+        for node in ast.walk(tree)
+        if isinstance(node, ast.Subscript)
+        and isinstance(node.value, ast.Name)
+        and node.value.id == "key"
+    ]
+    assert found == []
