@@ -32,6 +32,7 @@ import numpy as np
 from .airframe import build_airframe
 from .constraints import BY_NAME, CONSTRAINTS, NAMES, ConstraintState, constraint_state
 from .inputs import Configuration, Requirement
+from .tether import interpolated_heights
 
 #: Volume search range [m3].
 VOLUME_MIN, VOLUME_MAX = 2.0, 2.0e4
@@ -74,8 +75,33 @@ class SizingResult:
     message: np.ndarray
 
 
-def _state(req, cfg, volume, f, dsf, pos) -> ConstraintState:
-    return constraint_state(req, cfg, build_airframe(req, cfg, volume, f, dsf, pos))
+def _state(req, cfg, volume, f, dsf, pos, heights_hint=None) -> ConstraintState:
+    return constraint_state(req, cfg, build_airframe(req, cfg, volume, f, dsf, pos),
+                            heights_hint)
+
+
+def _bracket_hint(st, lo_k, refine, j_grid):
+    """Warm start of the lattice points' tether height passes (sheared wind; docs/methods.md
+    §1.9): a callable ``(T_x, T_z) -> heights`` that interpolates the grid's converged lines at
+    grid[k-1], grid[k] and grid[k+1] (per wind; quadratic) in the top elevation
+    (:func:`aerostat_core.tether.interpolated_heights`); where ``refine`` is False (the points
+    are the grid volume ``j_grid``) through that grid point's line and two neighbours', so the
+    hint is its own line. Only a start: a poor one (a bracket where the line changes, as
+    where the trim jumps to another branch) costs passes, not accuracy. The points above
+    the bracket, not below, because the line below a first feasible point is more often on
+    another branch (smaller hulls trim at larger angles; grid[k-2] is often slack)."""
+    t = st.evaluation.tether
+    shape = np.shape(lo_k)
+    lo = np.minimum(np.where(refine, lo_k, j_grid), _GRID.size - 3)
+    idx = np.stack([lo, lo + 1, lo + 2]).reshape((1, 3, 1, 1) + shape)  # (nodes, K, wind, point)
+
+    def known(a):  # (nodes, 2 winds, grid) + batch -> (nodes, 3, 2 winds, 1) + batch
+        a = np.broadcast_to(a, a.shape[:3] + shape)[:, None, :, :]
+        return np.take_along_axis(a, idx, axis=3)
+
+    el, z = known(t.elevation), known(t.z)
+    length = float(np.asarray(st.evaluation.airframe.tether_length).reshape(-1)[0])
+    return lambda tx, tz: interpolated_heights(tx, tz, el, z, length)
 
 
 def _infeasible_reason(st, met, shape, skip=None):
@@ -353,7 +379,9 @@ def size_volume(req: Requirement, cfg: Configuration, fineness_ratio=None, area_
         j = centre + np.arange(-m // 2, m // 2).reshape((-1,) + (1,) * len(shape))
         j = np.clip(j, 0, steps)
         vs = np.where(refine, np.exp(x_lo + span * j / steps), volume)
-        cst = _state(req, cfg, vs, f, dsf, pos)
+        hint = (None if cfg.wind_profile.kind == "uniform"
+                else _bracket_hint(st, lo_k, refine, j_grid))
+        cst = _state(req, cfg, vs, f, dsf, pos, hint)
         cok = np.broadcast_to(cst.feasible, vs.shape)
         valid = refine & ~cok[0] & cok[-1]
         first = np.argmax(cok, axis=0)
