@@ -293,7 +293,8 @@ def _columns(parts, batch: tuple) -> np.ndarray:
     return out
 
 
-def constraint_state(req: Requirement, cfg: Configuration, af: Airframe) -> ConstraintState:
+def constraint_state(req: Requirement, cfg: Configuration, af: Airframe,
+                     heights_hint=None) -> ConstraintState:
     """Evaluate the whole table for an airframe batch (one trim + tether solve at two winds).
 
     Parameters
@@ -303,6 +304,11 @@ def constraint_state(req: Requirement, cfg: Configuration, af: Airframe) -> Cons
     cfg : Configuration
     af : Airframe
         Any batch shape S.
+    heights_hint : array_like, optional
+        Tether node heights [m] of shape (nodes, 2, ...) (the [design, survival] wind axis
+        second) to warm-start the sheared-wind height passes from
+        (:func:`aerostat_core.performance.evaluate`); the answer is the same within their
+        tolerance.
 
     Returns
     -------
@@ -312,7 +318,7 @@ def constraint_state(req: Requirement, cfg: Configuration, af: Airframe) -> Cons
     req = req.resolved()
     shape = np.shape(af.hull.volume)
     speeds = np.array([req.design_wind, req.survival_wind], float).reshape((2,) + (1,) * len(shape))
-    ev = evaluate(req, cfg, af, speeds)
+    ev = evaluate(req, cfg, af, speeds, heights_hint)
     wq = wind_quantities(req, cfg, ev)
     sq = static_quantities(req, af, cfg)
     full = (2,) + np.broadcast_shapes(shape, np.shape(ev.tether.blow_by)[1:])

@@ -3,6 +3,7 @@
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Mapping
 from dataclasses import dataclass, fields
 
@@ -26,6 +27,7 @@ from .performance import (
 )
 from .presets import rules_configuration
 from .sizing import SizingResult, map_arrays, size_volume
+from .tether import interpolated_heights
 
 
 def _f(x) -> float:
@@ -355,7 +357,16 @@ def design(req: Requirement | None = None, cfg: Configuration | None = None) -> 
         af = build_airframe(req, cfg, volume)
         state = constraint_state(req, cfg, af)
     speeds = wind_speeds(req)
-    ev = evaluate(req, cfg, af, speeds)
+    hint = None
+    if cfg.wind_profile.kind != "uniform":
+        # warm start of the sweep's height passes (docs/methods.md §1.9): the table's lines at
+        # the design and survival winds (and the vertical line at rest), interpolated per
+        # speed in the top angle; the converged sweep is the same from any start
+        known = state.evaluation.tether
+        el, zk = (np.reshape(a, (a.shape[0], 2)) for a in (known.elevation, known.z))
+        hint = functools.partial(interpolated_heights, elevation=el, z=zk,
+                                 length=af.tether_length, vertical=True)
+    ev = evaluate(req, cfg, af, speeds, heights_hint=hint)
     table = performance_table(ev, wind_flags(req, cfg, ev, state))
     at_winds = state.evaluation  # [design, survival] wind: the design point is its first row
     # its flags are the table's own design-wind rows (only that first row is kept)

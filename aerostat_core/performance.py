@@ -63,11 +63,17 @@ class Evaluation:
     weathervane_slope: np.ndarray
 
 
-def evaluate(req: Requirement, cfg: Configuration, af: Airframe, speed) -> Evaluation:
+def evaluate(req: Requirement, cfg: Configuration, af: Airframe, speed,
+             heights_hint=None) -> Evaluation:
     """Trim the aerostat and solve the tether at wind speed(s) ``speed`` [m/s] at the hull.
 
     Force balance on the aerostat at the confluence point (docs/methods.md §1.9):
     T_x = D, T_z = F_B + L_dyn - W_a; then the tether march down to the winch.
+
+    ``heights_hint`` (optional, sheared wind only): node heights above the winch [m], shape
+    (nodes, ...) broadcast to the batch, to start the tether's height passes from
+    (:func:`aerostat_core.tether.solve_tether`): a warm start that changes the number of
+    passes, not the answer beyond their 1e-6 m tolerance.
     """
     speed = np.asarray(speed, float)
     cd0 = axial_drag_coefficient(af, cfg.aero, speed)
@@ -87,6 +93,7 @@ def evaluate(req: Requirement, cfg: Configuration, af: Airframe, speed) -> Evalu
         af.tether_weight_per_length,
         cfg.tether_segments,
         sheared=profile.kind != "uniform",
+        heights_hint=heights_hint,
     )
     tmax = np.max(teth.tension, axis=0)
     sf = spec.breaking_strength / np.maximum(tmax, 1e-9)

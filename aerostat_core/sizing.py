@@ -32,6 +32,7 @@ import numpy as np
 from .airframe import build_airframe
 from .constraints import BY_NAME, CONSTRAINTS, NAMES, ConstraintState, constraint_state
 from .inputs import Configuration, Requirement
+from .tether import interpolated_heights
 
 #: Volume search range [m3].
 VOLUME_MIN, VOLUME_MAX = 2.0, 2.0e4
@@ -74,8 +75,38 @@ class SizingResult:
     message: np.ndarray
 
 
-def _state(req, cfg, volume, f, dsf, pos) -> ConstraintState:
-    return constraint_state(req, cfg, build_airframe(req, cfg, volume, f, dsf, pos))
+def _state(req, cfg, volume, f, dsf, pos, heights_hint=None) -> ConstraintState:
+    return constraint_state(req, cfg, build_airframe(req, cfg, volume, f, dsf, pos),
+                            heights_hint)
+
+
+def _lines_hint(cfg, st, first, pad: int = 0):
+    """Warm start of the tether height passes of a finer set of volumes (sheared wind;
+    docs/methods.md §1.9), from a state ``st`` evaluated at a set of volumes (the axis after
+    the wind axis of its tether arrays): a callable ``(T_x, T_z) -> heights`` that
+    interpolates its converged lines at volumes ``first``, ``first + 1`` and ``first + 2``
+    (int array of the batch shape; per wind, quadratic) in the top elevation
+    (:func:`aerostat_core.tether.interpolated_heights`); ``pad`` trailing axes are added for
+    the new volumes' batch. None in a uniform wind (one march is exact).
+
+    Only a start: a poor hint (a bracket where the line changes, as where the trim jumps
+    to another branch) costs passes, not accuracy. The lines above a bracket's lower end,
+    not below, because the line below a first feasible volume is more often on another
+    branch (smaller hulls trim at larger angles; two grid points below is often slack)."""
+    if cfg.wind_profile.kind == "uniform":
+        return None
+    t = st.evaluation.tether
+    shape = np.shape(first)
+    idx = np.stack([first, first + 1, first + 2]).reshape((1, 3, 1, 1) + shape)
+
+    def known(a):  # (nodes, 2 winds, volumes) + batch -> (nodes, 3, 2 winds, 1) + batch
+        a = np.broadcast_to(a, a.shape[:3] + shape)[:, None, :, :]
+        k = np.take_along_axis(a, idx, axis=3)
+        return k.reshape(k.shape + (1,) * pad)
+
+    el, z = known(t.elevation), known(t.z)
+    length = float(np.asarray(st.evaluation.airframe.tether_length).reshape(-1)[0])
+    return lambda tx, tz: interpolated_heights(tx, tz, el, z, length)
 
 
 def _infeasible_reason(st, met, shape, skip=None):
@@ -257,20 +288,24 @@ def _predicted_fraction(st, lo_k, met):
     return np.where(broken, 0.5 * (a + b), -np.inf).max(axis=-1)
 
 
-def _nested_rounds(req, cfg, lo, hi, f, dsf, pos, rounds):
+def _nested_rounds(req, cfg, lo, hi, f, dsf, pos, rounds, hint=None):
     """Nested rounds of 8 interior points on brackets [lo, hi] (1-D batch): the volume, the
-    state there and which constraints are met at the last infeasible volume below it."""
+    state there and which constraints are met at the last infeasible volume below it.
+    ``hint``: the first round's tether warm start (:func:`_lines_hint`); each later round
+    starts from the round before it."""
     t = np.linspace(0.0, 1.0, _REFINE + 2)[1:-1].reshape(-1, 1)
     idx = np.arange(lo.size)
     for _ in range(rounds):
         vr = np.exp(np.log(lo) + (np.log(hi) - np.log(lo)) * t)
-        oks = np.broadcast_to(_state(req, cfg, vr, f, dsf, pos).feasible, vr.shape)
+        rst = _state(req, cfg, vr, f, dsf, pos, hint)
+        oks = np.broadcast_to(rst.feasible, vr.shape)
         first = np.where(oks.any(axis=0), np.argmax(oks, axis=0), vr.shape[0])
         last = vr.shape[0] - 1
         hi = np.where(first <= last, vr[np.minimum(first, last), idx], hi)
         lo = np.where(first > 0, vr[np.maximum(first - 1, 0), idx], lo)
+        hint = _lines_hint(cfg, rst, np.clip(first - 1, 0, _REFINE - 3))
     pair = np.stack([lo, hi])
-    pst = _state(req, cfg, pair, f, dsf, pos)
+    pst = _state(req, cfg, pair, f, dsf, pos, hint)
     met = np.broadcast_to(pst.met, pair.shape + (len(NAMES),))[0]
     return hi, _take_state(pst, np.ones(lo.shape, int), 2), met
 
@@ -353,7 +388,9 @@ def size_volume(req: Requirement, cfg: Configuration, fineness_ratio=None, area_
         j = centre + np.arange(-m // 2, m // 2).reshape((-1,) + (1,) * len(shape))
         j = np.clip(j, 0, steps)
         vs = np.where(refine, np.exp(x_lo + span * j / steps), volume)
-        cst = _state(req, cfg, vs, f, dsf, pos)
+        # the cluster's tether passes start from the grid's lines around the bracket
+        first_line = np.minimum(np.where(refine, lo_k, j_grid), n_grid - 3)
+        cst = _state(req, cfg, vs, f, dsf, pos, _lines_hint(cfg, st, first_line))
         cok = np.broadcast_to(cst.feasible, vs.shape)
         valid = refine & ~cok[0] & cok[-1]
         first = np.argmax(cok, axis=0)
@@ -370,7 +407,8 @@ def size_volume(req: Requirement, cfg: Configuration, fineness_ratio=None, area_
         if fall.any():  # the nested rounds on those brackets, then [lo, hi] evaluated once
             if not shape:  # one design
                 v_sub, st_sub, met_sub = _nested_rounds(
-                    req, cfg, *(np.reshape(a, 1) for a in (lo, hi, f, dsf, pos)), rounds)
+                    req, cfg, *(np.reshape(a, 1) for a in (lo, hi, f, dsf, pos)), rounds,
+                    _lines_hint(cfg, st, np.minimum(lo_k, n_grid - 3), pad=1))
                 volume, lo_met = v_sub[0], met_sub[0]
                 final = _take_state(st_sub, np.array(0), 1)
             else:

@@ -86,8 +86,10 @@ def main() -> None:
     sheared = replace(rules_configuration("practice"), wind_profile=WindProfile("power"))
     t = median_time(lambda: design(practice, sheared), 20)
     print(f"design(), practice rules, power-law wind (height passes): median {t * 1e3:.2f} ms")
+    log_wind = replace(sheared, wind_profile=WindProfile("log"))
     print(f"  tether marches per design: uniform wind {marches(lambda: design(practice))}, "
-          f"power-law wind {marches(lambda: design(practice, sheared))} (load-independent)")
+          f"power-law wind {marches(lambda: design(practice, sheared))}, "
+          f"log wind {marches(lambda: design(practice, log_wind))} (load-independent)")
     for label, fn in (("design, given volume", lambda: design(req, cfg)),
                       ("design, sized (thesis rules)", lambda: design(req, sized_cfg)),
                       ("design(), sized (practice default)", lambda: design(practice)),
