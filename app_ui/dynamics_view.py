@@ -6,8 +6,9 @@ module validates the page's form into a request (plain data, kept as JSON text),
 :func:`run_cached` and draws the plain result.
 
 Caching: results live in the app's one process-wide store (:func:`app_ui.cache.memo`), keyed
-by the request as frozen values (the design inputs as the frozen Requirement and Configuration,
-the rest as nested tuples: :func:`frozen_request`); the session keeps the request's JSON text.
+by the request as frozen values (a :class:`DynamicsKey`, read by field name: the design inputs as
+the frozen Requirement and Configuration, the rest as nested tuples: :func:`frozen_request`); the
+session keeps the request's JSON text.
 The store is filled by :func:`run_cached`, never inside an ``st.cache_data`` function, so the
 page's progress bar is drawn by the page itself and a replay (a second click, coming back to the
 page, a second session hitting the same case) never re-runs a UI element (no
@@ -23,13 +24,14 @@ from __future__ import annotations
 import functools
 import json
 import math
-from collections.abc import Callable, Mapping
-from typing import Any
+from collections.abc import Callable, Hashable, Mapping
+from typing import Any, NamedTuple
 
 import numpy as np
 import plotly.graph_objects as go
 import streamlit as st
 
+from aerostat_core import Configuration, Requirement
 from aerostat_core.dynamics.linearize import linearize
 from aerostat_core.dynamics.options import SolverOptions
 from aerostat_core.dynamics.results import SIGNALS, limit_flags, response_metrics
@@ -224,16 +226,35 @@ def request_key(req: Mapping[str, Any]) -> str:
     return json.dumps(req, sort_keys=True, separators=(",", ":"))
 
 
+class DynamicsKey(NamedTuple):
+    """Key of one simulation ("dynamics"): the request as frozen values."""
+
+    requirement: Requirement | None  # resolved (:func:`app_ui.cache.frozen_inputs`); None: thesis
+    configuration: Configuration | None  # None for the thesis design
+    request: Hashable  # every other part (scenario, speed, gust, ...; :func:`app_ui.cache.freeze`)
+
+
+class ThesisKey(NamedTuple):
+    """Key of the live thesis comparison ("dynamics_thesis")."""
+
+    seed: int  # seed of the turbulence scenario
+
+
 @functools.lru_cache(maxsize=64)
-def frozen_request(key: str) -> tuple:
+def frozen_request(key: str) -> DynamicsKey:
     """The store key of a request's JSON text (:func:`request_key`), parsed once per text: the
     design inputs as the frozen (resolved Requirement, Configuration) of
-    :func:`app_ui.cache.frozen_inputs` (None for the thesis design), every other part as
+    :func:`app_ui.cache.frozen_inputs` (None, None for the thesis design), every other part as
     hashable nested tuples (:func:`app_ui.cache.freeze`). Raises ``ValueError`` for bad inputs."""
     req = json.loads(key)
     inputs = req.get("inputs")
     frozen = None if inputs is None else cache.frozen_inputs(*inputs_from_dict(inputs))
-    return frozen, cache.freeze({k: v for k, v in req.items() if k != "inputs"})
+    req_k, cfg_k = frozen or (None, None)
+    return DynamicsKey(
+        requirement=req_k,
+        configuration=cfg_k,
+        request=cache.freeze({k: v for k, v in req.items() if k != "inputs"}),
+    )
 
 
 def run(req: Mapping[str, Any], progress: Callable[[float], None] | None = None) -> dict:
@@ -395,7 +416,8 @@ def thesis_comparison(seed: int = 1) -> dict:
     """The thesis comparison computed live (no UI element inside; shared by every session,
     read-only): table rows, the settings, and the time histories of pitch and hull velocities
     per scenario (plain data)."""
-    return cache.memo("dynamics_thesis", (int(seed),), lambda: _thesis_comparison(int(seed)), 4)
+    key = ThesisKey(seed=int(seed))
+    return cache.memo("dynamics_thesis", key, lambda: _thesis_comparison(key.seed), 4)
 
 
 def _thesis_comparison(seed: int) -> dict:

@@ -4,19 +4,22 @@ flyable time at a site, Monte Carlo bands with the rule-set spread, and the HTML
 Physics lives in :mod:`aerostat_core.envelope`, :mod:`aerostat_core.site_wind`,
 :mod:`aerostat_core.uncertainty` and :mod:`aerostat_core.html_report`; this module caches their
 results (:func:`app_ui.cache.memo`, keyed by the frozen inputs, the site as frozen values and the
-sample size and seed; shared by every session, read-only) and draws them.
+sample size and seed, one :class:`~typing.NamedTuple` per study (:class:`FlyableKey` ...), so every
+compute reads its key by field name; shared by every session, read-only) and draws them.
 """
 
 from __future__ import annotations
 
 import json
-from typing import Any
+from collections.abc import Hashable
+from typing import Any, NamedTuple
 
 import numpy as np
 import pandas as pd
 import plotly.graph_objects as go
 import streamlit as st
 
+from aerostat_core import Configuration, Requirement
 from aerostat_core.constraints import BY_NAME
 from aerostat_core.envelope import ENVELOPE_NAMES, Envelope, operating_envelope
 from aerostat_core.html_report import build_report
@@ -37,37 +40,98 @@ _MD = str.maketrans({ch: "\\" + ch for ch in "\\`*_{}[]()#+-.!|<>$~"})
 MC_SIZES = (1000, 5000, 10000, 20000)
 
 
+# --- the study keys (one per cache kind; each is a tuple, hashable and equal by value) ----------
+
+
+class EnvelopeKey(NamedTuple):
+    """Key of the operating envelope ("envelope")."""
+
+    requirement: Requirement  # resolved (:func:`app_ui.cache.frozen_inputs`)
+    configuration: Configuration
+
+
+class SiteKey(NamedTuple):
+    """The site wind of the session as frozen values (part of the flyable and report keys)."""
+
+    spec: Hashable  # the site form's spec {kind, shape, scale, ...} (:func:`app_ui.cache.freeze`)
+    csv: bytes | None  # the hourly wind CSV file's bytes (None for a Weibull site)
+
+
+class FlyableKey(NamedTuple):
+    """Key of the flyable time at a site ("flyable")."""
+
+    requirement: Requirement  # resolved
+    configuration: Configuration
+    site: SiteKey
+
+
+class MonteCarloKey(NamedTuple):
+    """Key of the Monte Carlo bands ("monte_carlo")."""
+
+    requirement: Requirement  # resolved
+    configuration: Configuration
+    n_samples: int
+    seed: int
+
+
+class SpreadKey(NamedTuple):
+    """Key of the rule-set spread ("rules_spread")."""
+
+    requirement: Requirement  # as given: each rule set fills in its own limits
+    seed: int
+
+
+class ReportKey(NamedTuple):
+    """Key of the HTML design report ("report_html")."""
+
+    requirement: Requirement  # as given: the report resolves it under every rule set
+    configuration: Configuration
+    site: SiteKey | None  # None: the default Weibull site
+    n_samples: int  # Monte Carlo samples (0 leaves the uncertainty out)
+    seed: int
+
+
+# --- cached engine calls --------------------------------------------------------------------------
+
+
 def cached_envelope(inputs_json: str) -> Envelope:
     """:func:`operating_envelope` of the design of ``inputs_json`` (default axes)."""
-    key = cache.inputs_of(inputs_json)
-    return cache.memo("envelope", key, lambda: operating_envelope(cache.design_of(*key)), 32)
+    key = EnvelopeKey(*cache.inputs_of(inputs_json))
+    return cache.memo(
+        "envelope",
+        key,
+        lambda: operating_envelope(cache.design_of(key.requirement, key.configuration)),
+        32,
+    )
 
 
-def _site(spec: Any, csv_bytes: bytes | None):
-    """The site wind of a frozen site spec (:func:`_site_key`)."""
-    spec = cache.thaw(spec)
+def _site(site: SiteKey):
+    """The site wind of a frozen site (:func:`_site_key`)."""
+    spec = cache.thaw(site.spec)
     if spec["kind"] == "csv":
-        return read_wind_csv(csv_bytes or b"", spec["reference_height"], spec["shear_exponent"])
+        return read_wind_csv(site.csv or b"", spec["reference_height"], spec["shear_exponent"])
     return WeibullSite(
         spec["shape"], spec["scale"], spec["reference_height"], spec["shear_exponent"]
     )
 
 
-def _site_key(site_json: str | None, csv_bytes: bytes | None) -> tuple | None:
+def _site_key(site_json: str | None, csv_bytes: bytes | None) -> SiteKey | None:
     """The site of the session (JSON text of the spec, the CSV file's bytes) as frozen values."""
     if site_json is None:
         return None
-    return cache.freeze(json.loads(site_json)), csv_bytes
+    return SiteKey(spec=cache.freeze(json.loads(site_json)), csv=csv_bytes)
 
 
 def cached_flyable(inputs_json: str, site_json: str, csv_bytes: bytes | None) -> dict:
     """:func:`flyable_time` summary for the design and the site (raises ValueError)."""
-    key = (*cache.inputs_of(inputs_json), _site_key(site_json, csv_bytes))
+    req_k, cfg_k = cache.inputs_of(inputs_json)
+    key = FlyableKey(requirement=req_k, configuration=cfg_k, site=_site_key(site_json, csv_bytes))
 
     def compute() -> dict:
-        spec, data = key[2]
         ft = flyable_time(
-            cache.design_of(*key[:2]), _site(spec, data), target_availability=cache.thaw(spec)["target"]
+            cache.design_of(key.requirement, key.configuration),
+            _site(key.site),
+            target_availability=cache.thaw(key.site.spec)["target"],
         )
         return ft.summary()
 
@@ -76,10 +140,13 @@ def cached_flyable(inputs_json: str, site_json: str, csv_bytes: bytes | None) ->
 
 def cached_monte_carlo(inputs_json: str, n: int, seed: int):
     """:func:`monte_carlo` of the design (bands and probabilities)."""
-    key = (*cache.inputs_of(inputs_json), int(n), int(seed))
+    req_k, cfg_k = cache.inputs_of(inputs_json)
+    key = MonteCarloKey(requirement=req_k, configuration=cfg_k, n_samples=int(n), seed=int(seed))
 
     def compute() -> dict:
-        mc = monte_carlo(cache.design_of(*key[:2]), key[2], key[3])
+        mc = monte_carlo(
+            cache.design_of(key.requirement, key.configuration), n=key.n_samples, seed=key.seed
+        )
         return {
             "summary": mc.summary(),
             "speeds": mc.speeds,
@@ -103,8 +170,13 @@ def cached_rules_spread(inputs_json: str, seed: int) -> list[dict]:
     """:func:`rule_set_spread` of the mission of ``inputs_json`` (the requirement as given:
     each rule set fills in its own limits)."""
     req, _ = cache.given_inputs(inputs_json)
-    key = (req, int(seed))
-    return cache.memo("rules_spread", key, lambda: rule_set_spread(req, n=2000, seed=key[1]), 16)
+    key = SpreadKey(requirement=req, seed=int(seed))
+    return cache.memo(
+        "rules_spread",
+        key,
+        lambda: rule_set_spread(key.requirement, n=2000, seed=key.seed),
+        16,
+    )
 
 
 def cached_report_html(
@@ -116,16 +188,22 @@ def cached_report_html(
 ) -> bytes:
     """The HTML design report with the tab's site wind and Monte Carlo (defaults: the default
     Weibull site, 2000 samples)."""
-    key = (*cache.given_inputs(inputs_json), _site_key(site_json, csv_bytes), int(n), int(seed))
+    req, cfg = cache.given_inputs(inputs_json)
+    key = ReportKey(
+        requirement=req,
+        configuration=cfg,
+        site=_site_key(site_json, csv_bytes),
+        n_samples=int(n),
+        seed=int(seed),
+    )
 
     def compute() -> bytes:
-        req, cfg, site, n_mc, s = key
         return build_report(
-            cache.design_of(req, cfg),
-            None if site is None else _site(*site),
-            n_monte_carlo=n_mc,
-            seed=s,
-            base_requirement=req,
+            cache.design_of(key.requirement, key.configuration),
+            None if key.site is None else _site(key.site),
+            n_monte_carlo=key.n_samples,
+            seed=key.seed,
+            base_requirement=key.requirement,
         ).encode("utf-8")
 
     return cache.memo("report_html", key, compute, 8)

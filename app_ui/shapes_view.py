@@ -2,20 +2,22 @@
 
 Everything numeric comes from :mod:`aerostat_core.shapes`, :mod:`aerostat_core.shape_comparison`,
 :mod:`aerostat_core.shape_optimize` and :mod:`aerostat_core.export`; this module only caches
-(:func:`app_ui.cache.memo`, keyed by the frozen inputs and the study's parameters; shared by
-every session, read-only), tabulates and plots.
+(:func:`app_ui.cache.memo`, keyed by the frozen inputs and the study's parameters, one
+:class:`~typing.NamedTuple` per study (:class:`ShapeStudyKey` ...), so every compute reads its key
+by field name; shared by every session, read-only), tabulates and plots.
 """
 
 from __future__ import annotations
 
 from collections.abc import Mapping
-from typing import Any
+from typing import Any, NamedTuple
 
 import numpy as np
 import pandas as pd
 import plotly.graph_objects as go
 import streamlit as st
 
+from aerostat_core import Configuration, Requirement
 from aerostat_core.export import design_stl, gore_csv, gore_dxf, gore_pattern, gore_svg
 from aerostat_core.fields import column_label
 from aerostat_core.shape_comparison import (
@@ -37,6 +39,38 @@ from .widgets import plain
 
 _COLOURS = {k: PALETTE[i] for i, k in enumerate(TABLE_SHAPES)}
 WIND_AXIS = "Wind speed at the aerostat [m/s]"
+
+
+# --- the study keys (one per cache kind; each is a tuple, hashable and equal by value) ----------
+class LibraryKey(NamedTuple):
+    """Key of the shape library table ("shape_library")."""
+
+    volume: float  # hull volume every shape is sized to, at its standard l/d [m3]
+
+
+class ShapeStudyKey(NamedTuple):
+    """Key of the per-shape optima ("shape_study")."""
+
+    requirement: Requirement  # resolved (:func:`app_ui.cache.frozen_inputs`)
+    configuration: Configuration
+    objective: str  # the quantity minimised for every shape
+
+
+class SweepsKey(NamedTuple):
+    """Key of the fineness-ratio sweep of every shape ("shape_sweeps")."""
+
+    requirement: Requirement  # resolved
+    configuration: Configuration
+    n_points: int  # l/d points per shape
+
+
+class ExportKey(NamedTuple):
+    """Key of the geometry export files ("exports")."""
+
+    requirement: Requirement  # resolved
+    configuration: Configuration
+    n_gores: int  # identical gores the hull is cut from
+    seam_mm: float  # seam allowance outside every pattern [mm]
 
 
 # --- cached engine calls -----------------------------------------------------------------------
@@ -65,26 +99,32 @@ def cached_comparisons() -> dict[str, Any]:
 
 def cached_library(volume: float = 100.0) -> list[dict]:
     """:func:`aerostat_core.shape_comparison.shape_dimensions_rows` at ``volume`` [m3]."""
-    key = (float(volume),)
-    return cache.memo("shape_library", key, lambda: shape_dimensions_rows(key[0]), 4)
+    key = LibraryKey(volume=float(volume))
+    return cache.memo("shape_library", key, lambda: shape_dimensions_rows(key.volume), 4)
 
 
 def cached_shape_study(inputs_json: str, objective: str) -> list[dict]:
     """Rows of :func:`aerostat_core.shape_optimize.optimize_shapes` (SLSQP, quick) for the
     inputs."""
-    key = (*cache.inputs_of(inputs_json), str(objective))
+    req_k, cfg_k = cache.inputs_of(inputs_json)
+    key = ShapeStudyKey(requirement=req_k, configuration=cfg_k, objective=str(objective))
     return cache.memo(
-        "shape_study", key, lambda: optimize_shapes(*key[:2], objective=key[2]).rows(), 32
+        "shape_study",
+        key,
+        lambda: optimize_shapes(key.requirement, key.configuration, objective=key.objective).rows(),
+        32,
     )
 
 
 def cached_sweeps(inputs_json: str, n_points: int = 15) -> dict[str, dict[str, list]]:
     """:func:`aerostat_core.shape_optimize.fineness_sweeps` as plain lists."""
-    key = (*cache.inputs_of(inputs_json), int(n_points))
+    req_k, cfg_k = cache.inputs_of(inputs_json)
+    key = SweepsKey(requirement=req_k, configuration=cfg_k, n_points=int(n_points))
 
     def compute() -> dict[str, dict[str, list]]:
         out = {}
-        for s, sw in fineness_sweeps(*key[:2], n_points=key[2]).items():
+        sweeps = fineness_sweeps(key.requirement, key.configuration, n_points=key.n_points)
+        for s, sw in sweeps.items():
             out[s] = {
                 "f": sw.fineness_ratio.tolist(),
                 "mass": sw.total_mass.tolist(),
@@ -98,11 +138,14 @@ def cached_sweeps(inputs_json: str, n_points: int = 15) -> dict[str, dict[str, l
 
 def cached_exports(inputs_json: str, n_gores: int, seam_mm: float) -> dict[str, bytes]:
     """STL, DXF, SVG and CSV bytes of the design of the inputs."""
-    key = (*cache.inputs_of(inputs_json), int(n_gores), float(seam_mm))
+    req_k, cfg_k = cache.inputs_of(inputs_json)
+    key = ExportKey(
+        requirement=req_k, configuration=cfg_k, n_gores=int(n_gores), seam_mm=float(seam_mm)
+    )
 
     def compute() -> dict[str, bytes]:
-        d = cache.design_of(*key[:2])  # the design the page already made
-        p = gore_pattern(d, key[2], key[3] / 1000.0)
+        d = cache.design_of(key.requirement, key.configuration)  # the design the page made
+        p = gore_pattern(d, n_gores=key.n_gores, seam_allowance=key.seam_mm / 1000.0)
         return {
             "stl": design_stl(d),
             "dxf": gore_dxf(p),

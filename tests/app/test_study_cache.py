@@ -177,11 +177,14 @@ def test_dynamics_store_key_is_the_frozen_request():
     assert frozen == dynamics_view.frozen_request(kb) and hash(frozen) == hash(
         dynamics_view.frozen_request(kb)
     )
-    assert frozen[0] == cache.frozen_inputs(req, cfg)
-    request = cache.thaw(frozen[1])
+    assert isinstance(frozen, dynamics_view.DynamicsKey)
+    assert (frozen.requirement, frozen.configuration) == cache.frozen_inputs(req, cfg)
+    request = cache.thaw(frozen.request)
     assert request["speed"] == 10.0 and request["gust"] == {"u": 5, "w": 0}
+    assert "inputs" not in request  # the inputs are the frozen fields, not JSON in the request
     thesis = dynamics_view.frozen_request(dynamics_view.request_key({**a, "inputs": None}))
-    assert thesis[0] is None
+    assert thesis.requirement is None and thesis.configuration is None
+    assert thesis.request == frozen.request and thesis != frozen
 
 
 def test_freeze_makes_plain_data_hashable_and_keeps_kinds_apart():
@@ -396,17 +399,322 @@ def test_a_study_key_built_in_another_field_order_hits_only_when_every_value_is_
     assert swapped != m and cache.peek("sensitivity_map", swapped) is None
 
 
+# --- the Envelope, Shapes and Dynamics study keys: NamedTuples read by name as well ----------
+
+_SITE = {
+    "kind": "weibull",
+    "shape": 2.2,
+    "scale": 6.5,
+    "reference_height": 10.0,
+    "shear_exponent": 0.14,
+    "target": 0.9,
+}
+_CSV_SITE = {**_SITE, "kind": "csv", "reference_height": 12.0, "shear_exponent": 0.2}
+_CSV = b"timestamp,speed\n2020-01-01T00:00,5.0\n"
+
+
+def _run_page_studies(monkeypatch, payload: float) -> dict[str, dict]:
+    """Every cached study of :mod:`app_ui.envelope_view`, :mod:`app_ui.shapes_view` and
+    :mod:`app_ui.dynamics_view` once, on fake engines that record the arguments by the engine's
+    parameter names: {cache kind: arguments}. The library volume is ``payload`` m3 and the
+    thesis seed ``round(100 * payload)``, so every key of the run can be found again."""
+    seen: dict[str, dict] = {}
+
+    def record(kind, result=None, **kwargs):
+        seen[kind] = kwargs
+        return object() if result is None else result
+
+    monkeypatch.setattr(cache, "design_of", lambda req, cfg: ("design", req, cfg))
+    e, s, d = envelope_view, shapes_view, dynamics_view
+    monkeypatch.setattr(e, "operating_envelope", lambda d: record("envelope", d=d))
+    monkeypatch.setattr(
+        e,
+        "flyable_time",
+        lambda d, site, target_availability: record(
+            "flyable", _Summary(), d=d, site=site, target_availability=target_availability
+        ),
+    )
+    monkeypatch.setattr(
+        e,
+        "monte_carlo",
+        lambda d, n, seed: record("monte_carlo", _MonteCarlo(), d=d, n=n, seed=seed),
+    )
+    monkeypatch.setattr(
+        e, "rule_set_spread", lambda req, n, seed: record("rules_spread", req=req, n=n, seed=seed)
+    )
+    monkeypatch.setattr(
+        e,
+        "read_wind_csv",
+        lambda data, reference_height, shear_exponent: (
+            "csv",
+            data,
+            reference_height,
+            shear_exponent,
+        ),
+    )
+
+    def build_report(d, site, n_monte_carlo, seed, base_requirement):
+        return record(
+            "report_html",
+            "html",
+            d=d,
+            site=site,
+            n_monte_carlo=n_monte_carlo,
+            seed=seed,
+            base_requirement=base_requirement,
+        )
+
+    monkeypatch.setattr(e, "build_report", build_report)
+    monkeypatch.setattr(
+        s, "shape_dimensions_rows", lambda volume: record("shape_library", volume=volume)
+    )
+    monkeypatch.setattr(
+        s,
+        "optimize_shapes",
+        lambda req, cfg, objective: record(
+            "shape_study", _Rows(), req=req, cfg=cfg, objective=objective
+        ),
+    )
+    monkeypatch.setattr(
+        s,
+        "fineness_sweeps",
+        lambda req, cfg, n_points: record("shape_sweeps", {}, req=req, cfg=cfg, n_points=n_points),
+    )
+    monkeypatch.setattr(
+        s,
+        "gore_pattern",
+        lambda d, n_gores, seam_allowance: record(
+            "exports", _Pattern(), d=d, n_gores=n_gores, seam_allowance=seam_allowance
+        ),
+    )
+    for name in ("design_stl", "gore_dxf", "gore_svg"):
+        monkeypatch.setattr(s, name, lambda p: b"")
+    monkeypatch.setattr(s, "gore_csv", lambda p: "")
+    monkeypatch.setattr(d, "run", lambda req, progress=None: record("dynamics", req=req))
+    monkeypatch.setattr(d, "_thesis_comparison", lambda seed: record("dynamics_thesis", seed=seed))
+
+    req, cfg = _inputs(payload)
+    text = inputs_key(inputs_to_dict(req, cfg))
+    site_json = json.dumps(_SITE, sort_keys=True)
+    e.cached_envelope(text)
+    e.cached_flyable(text, site_json, None)
+    e.cached_monte_carlo(text, 5000, 17)
+    e.cached_rules_spread(text, 23)
+    e.cached_report_html(text, json.dumps(_CSV_SITE, sort_keys=True), _CSV, 3000, 29)
+    s.cached_library(payload)
+    s.cached_shape_study(text, "volume")
+    s.cached_sweeps(text, 11)
+    s.cached_exports(text, 14, 25.0)
+    request = {"source": "Current design", "inputs": inputs_to_dict(req, cfg), "speed": 9.0}
+    d.run_cached(d.request_key(request))
+    d.thesis_comparison(round(100 * payload))
+    return seen
+
+
+class _Summary:
+    def summary(self):
+        return {}
+
+
+class _MonteCarlo(_Summary):
+    speeds = blow_by = tension = specs = ()
+
+
+class _Pattern:
+    pattern_area = hull_area = 1.0
+
+
+#: Cache kind -> (key type, its fields, whether its requirement is resolved (False: as given,
+#: each rule set fills in its own limits; None: no requirement)).
+PAGE_STUDY_KEYS = {
+    "envelope": (envelope_view.EnvelopeKey, ("requirement", "configuration"), True),
+    "flyable": (envelope_view.FlyableKey, ("requirement", "configuration", "site"), True),
+    "monte_carlo": (
+        envelope_view.MonteCarloKey,
+        ("requirement", "configuration", "n_samples", "seed"),
+        True,
+    ),
+    "rules_spread": (envelope_view.SpreadKey, ("requirement", "seed"), False),
+    "report_html": (
+        envelope_view.ReportKey,
+        ("requirement", "configuration", "site", "n_samples", "seed"),
+        False,
+    ),
+    "shape_library": (shapes_view.LibraryKey, ("volume",), None),
+    "shape_study": (shapes_view.ShapeStudyKey, ("requirement", "configuration", "objective"), True),
+    "shape_sweeps": (shapes_view.SweepsKey, ("requirement", "configuration", "n_points"), True),
+    "exports": (
+        shapes_view.ExportKey,
+        ("requirement", "configuration", "n_gores", "seam_mm"),
+        True,
+    ),
+    "dynamics": (dynamics_view.DynamicsKey, ("requirement", "configuration", "request"), True),
+    "dynamics_thesis": (dynamics_view.ThesisKey, ("seed",), None),
+}
+
+
+def _page_key(kind: str, payload: float):
+    """The one key of ``kind`` that :func:`_run_page_studies` (``payload``) stored."""
+    resolved = PAGE_STUDY_KEYS[kind][2]
+    if resolved is None:
+        field, value = (
+            ("volume", payload) if kind == "shape_library" else ("seed", round(100 * payload))
+        )
+        found = [k for k in cache.memo_keys(kind) if getattr(k, field) == value]
+    else:
+        found = [k for k in cache.memo_keys(kind) if k.requirement.payload_mass == payload]
+    (key,) = found
+    return key
+
+
+def _parts(value):
+    """Every value nested in a key (tuples opened)."""
+    if isinstance(value, tuple):
+        for v in value:
+            yield from _parts(v)
+    else:
+        yield value
+
+
+def test_each_page_study_key_is_a_named_tuple_whose_values_reach_the_engine_by_name(monkeypatch):
+    seen = _run_page_studies(monkeypatch, 11.73)
+    assert set(seen) == set(PAGE_STUDY_KEYS)
+    req, cfg = _inputs(11.73)
+    for kind, (key_type, fields, resolved) in PAGE_STUDY_KEYS.items():
+        assert issubclass(key_type, tuple) and key_type._fields == fields, kind
+        key = _page_key(kind, 11.73)
+        assert type(key) is key_type, kind
+        hash(key)
+        if resolved is not None:
+            assert isinstance(key.requirement, Requirement), kind
+            assert key.requirement == (req.resolved() if resolved else req), kind
+        if "configuration" in fields:
+            assert isinstance(key.configuration, Configuration) and key.configuration == cfg
+        # frozen values only: never the JSON text of the inputs, the site or the request
+        assert not any(isinstance(v, str) and v.lstrip()[:1] in "{[" for v in _parts(key)), kind
+    resolved_design = ("design", req.resolved(), cfg)
+    given_design = ("design", req, cfg)
+    assert seen["envelope"] == {"d": resolved_design}
+    fly = seen["flyable"]
+    assert fly["d"] == resolved_design and fly["target_availability"] == 0.9
+    site = fly["site"]
+    assert (site.shape, site.scale, site.reference_height, site.shear_exponent) == (
+        2.2,
+        6.5,
+        10.0,
+        0.14,
+    )
+    assert seen["monte_carlo"] == {"d": resolved_design, "n": 5000, "seed": 17}
+    assert seen["rules_spread"] == {"req": req, "n": 2000, "seed": 23}
+    assert seen["report_html"] == {
+        "d": given_design,
+        "site": ("csv", _CSV, 12.0, 0.2),
+        "n_monte_carlo": 3000,
+        "seed": 29,
+        "base_requirement": req,
+    }
+    report = _page_key("report_html", 11.73)
+    assert type(report.site) is envelope_view.SiteKey and report.site.csv == _CSV
+    assert cache.thaw(report.site.spec) == _CSV_SITE
+    assert seen["shape_library"] == {"volume": 11.73}
+    assert seen["shape_study"] == {"req": req.resolved(), "cfg": cfg, "objective": "volume"}
+    assert seen["shape_sweeps"] == {"req": req.resolved(), "cfg": cfg, "n_points": 11}
+    assert seen["exports"] == {"d": resolved_design, "n_gores": 14, "seam_allowance": 0.025}
+    assert seen["dynamics"]["req"]["speed"] == 9.0
+    assert cache.thaw(_page_key("dynamics", 11.73).request) == {
+        "source": "Current design",
+        "speed": 9.0,
+    }
+    assert seen["dynamics_thesis"] == {"seed": 1173}
+
+
+def _other(value):
+    """A value of the same kind as ``value`` that differs from it."""
+    if isinstance(value, bool):
+        return not value
+    if isinstance(value, (int, float)):
+        return value + 1
+    if isinstance(value, str):
+        return value + "x"
+    if isinstance(value, Configuration):  # another hull
+        return replace(
+            value, hull=replace(value.hull, fineness_ratio=value.hull.fineness_ratio + 0.1)
+        )
+    return value[:-1]
+
+
+def test_a_page_study_key_built_in_another_field_order_hits_only_when_every_value_is_equal(
+    monkeypatch,
+):
+    _run_page_studies(monkeypatch, 11.79)
+    for kind, (key_type, fields, resolved) in PAGE_STUDY_KEYS.items():
+        key = _page_key(kind, 11.79)
+        held = cache.peek(kind, key)
+        assert held is not None, kind
+        # The same values by keyword, the fields named in reverse order and the inputs rebuilt.
+        values = key._asdict()
+        if resolved is not None:
+            req, cfg = _inputs(11.79)
+            values["requirement"] = req.resolved() if resolved else req
+            if "configuration" in values:
+                values["configuration"] = cfg
+        rebuilt = key_type(**dict(reversed(values.items())))
+        assert rebuilt == key and rebuilt is not key
+        assert cache.memo(kind, rebuilt, lambda: pytest.fail("a hit must not compute")) is held
+        # One field differing (the last, whatever it is) misses.
+        last = fields[-1]
+        assert cache.peek(kind, key._replace(**{last: _other(getattr(key, last))})) is None, kind
+    # Two fields of one type swapped (samples and seed): a different request, a different entry.
+    mc = _page_key("monte_carlo", 11.79)
+    swapped = mc._replace(n_samples=mc.seed, seed=mc.n_samples)
+    assert swapped != mc and cache.peek("monte_carlo", swapped) is None
+    # The same site with another CSV file is another request.
+    fly = _page_key("flyable", 11.79)
+    assert cache.peek("flyable", fly._replace(site=fly.site._replace(csv=b"x"))) is None
+
+
+def _memo_modules():
+    """Every module of app_ui/ that caches a study through :func:`app_ui.cache.memo` (the store
+    itself aside)."""
+    import importlib
+    import pathlib
+
+    root = pathlib.Path(cache.__file__).parent
+    return [
+        importlib.import_module(f"app_ui.{path.stem}")
+        for path in sorted(root.glob("*.py"))
+        if path.stem != "cache" and "cache.memo(" in path.read_text(encoding="utf-8")
+    ]
+
+
 def test_no_study_key_is_read_by_position():
-    """The computes of :mod:`app_ui.optimize_jobs` read ``key.bounds`` etc., never ``key[2]``."""
+    """The computes of every study read ``key.bounds``, ``key.seed`` etc., never ``key[2]``,
+    ``*key`` or ``a, b = key``."""
     import ast
     import inspect
 
-    tree = ast.parse(inspect.getsource(optimize_jobs))
-    found = [
-        ast.unparse(node)
-        for node in ast.walk(tree)
-        if isinstance(node, ast.Subscript)
-        and isinstance(node.value, ast.Name)
-        and node.value.id == "key"
-    ]
-    assert found == []
+    modules = _memo_modules()
+    names = {m.__name__ for m in modules}
+    assert {
+        "app_ui.optimize_jobs",
+        "app_ui.envelope_view",
+        "app_ui.shapes_view",
+        "app_ui.dynamics_view",
+    } <= names
+
+    def is_key(node) -> bool:
+        return isinstance(node, ast.Name) and node.id == "key"
+
+    for module in modules:
+        tree = ast.parse(inspect.getsource(module))
+        found = [
+            ast.unparse(node)
+            for node in ast.walk(tree)
+            if (isinstance(node, (ast.Subscript, ast.Starred)) and is_key(node.value))
+            or (
+                isinstance(node, ast.Assign)
+                and is_key(node.value)
+                and any(isinstance(t, (ast.Tuple, ast.List)) for t in node.targets)
+            )
+        ]
+        assert found == [], module.__name__
