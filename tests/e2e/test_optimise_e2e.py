@@ -55,9 +55,13 @@ def test_sensitivity_then_quick_optimisation(thesis_page: Page, console_errors: 
     assert all(r["feasible"] == "True" for r in rows)
 
     page.get_by_role("textbox", name="Case name").fill("optimum e2e")
+    # commit the name (its own rerun) before the click, as a user's Tab would: on a loaded
+    # machine the click's rerun can otherwise start after the 200 ms settle of wait_for_rerun
+    page.get_by_role("textbox", name="Case name").press("Tab")
+    wait_for_rerun(page, timeout=RUN_TIMEOUT_MS)
     page.get_by_role("button", name="Save optimum as case").click()
-    wait_for_rerun(page)
-    expect(page.get_by_text("Saved case “optimum e2e”")).to_be_visible()
+    wait_for_rerun(page, timeout=RUN_TIMEOUT_MS)
+    expect(page.get_by_text("Saved case “optimum e2e”")).to_be_visible(timeout=RUN_TIMEOUT_MS)
     page.get_by_role(
         "heading", name="Solver comparison (thesis Table 4.12)"
     ).scroll_into_view_if_needed()
