@@ -8,6 +8,7 @@ A body point (xi, z) sits at X = xi cos a + z sin a, Z = -xi sin a + z cos a fro
 from __future__ import annotations
 
 import copy
+import functools
 from dataclasses import dataclass
 
 import numpy as np
@@ -316,6 +317,22 @@ class MomentKernel:
         self.c1 = (c1 - dxf * d0) * one
         self.f = tuple(a * one for a in (dxf * lf, dzf * di, dzf * lf, dxf * di))
 
+    def on_grid(self, grid: int):
+        """M [N m] on a fixed angle grid, shape (angles,) + ``.shape``: ``grid`` 0 is
+        ``ALPHA_GRID``, 1 the angles of ``ALPHA_GRID_WIDE`` outside it. The expansion of
+        ``__call__`` is linear in its coefficients, so on fixed angles it is the product of a
+        cached basis (the angle functions, :func:`_grid_basis`) with the coefficients: one
+        small matrix product instead of ~25 array operations on (angles x batch) elements.
+        The same M to rounding (sums in another order: a few ulp of the largest term)."""
+        coef = [self.c0, self.c1]
+        if self.fins:
+            coef += self.f
+        if self.p is not None:
+            coef += self.p
+        basis = _grid_basis(grid, float(self.stall), self.fins, self.p is not None)
+        c = np.stack(coef).reshape(len(coef), -1)
+        return (basis @ c).reshape((basis.shape[0],) + self.shape)
+
     def __call__(self, alpha):
         """M(alpha) [N m], positive nose up, at angles of attack ``alpha`` [rad] (batch shape,
         optionally with leading axes)."""
@@ -346,6 +363,27 @@ assert np.array_equal(ALPHA_GRID_WIDE[~_WIDE_OUTSIDE], ALPHA_GRID)
 #: |midpoint| of each grid interval (the bracket nearest alpha = 0 wins), usual and wide grid.
 _ABS_MID = tuple(np.abs(0.5 * (a[:-1] + a[1:])) for a in (ALPHA_GRID, ALPHA_GRID_WIDE))
 _DIAG4 = (np.arange(4), np.arange(4))
+
+
+@functools.lru_cache(maxsize=64)
+def _grid_basis(grid: int, stall: float, fins: bool, hull: bool) -> np.ndarray:
+    """Angle functions of :meth:`MomentKernel.__call__` on grid ``grid`` (0: ALPHA_GRID, 1: the
+    wide grid's outer angles), one column per coefficient (c0, c1, [f1-f4], [p1-p4]).
+
+    Cached (read-only) on the grid, the fin stall angle [rad] and which terms the kernel has:
+    the only inputs of these functions, shared by every trim of the same aerodynamic model."""
+    a = ALPHA_GRID if grid == 0 else ALPHA_GRID_WIDE[_WIDE_OUTSIDE]
+    ca, sa = np.cos(a), np.sin(a)
+    cols = [ca, sa]
+    if fins:
+        c = np.minimum(np.maximum(a, -stall), stall)
+        cols += [-ca * c, ca * c * c, -sa * c, -sa * c * c]
+    if hull:
+        s2, hv = np.sin(a * 2.0), a * 0.5
+        cols += [s2 * np.cos(hv), sa * np.abs(sa), -s2 * np.sin(hv), ca * ca]
+    basis = np.stack(cols, axis=-1)
+    basis.flags.writeable = False
+    return basis
 
 
 @dataclass(frozen=True)
@@ -389,11 +427,34 @@ _WARM_STEPS = np.array([-2e-5, -1e-6, 1e-6, 2e-5])
 _WINDOW = np.arange(4)
 
 
-def _warm_bracket(moment, alphas, m, k, idx):
+@functools.lru_cache(maxsize=64)
+def _window_starts(grid: int, kinks_deg: tuple) -> np.ndarray:
+    """First index of the 4-point interpolation window for each grid interval k (grid 0:
+    ALPHA_GRID, 1: ALPHA_GRID_WIDE): k-1 (k-1..k+2 around the interval), moved to k (k..k+3)
+    or k-2 (k-2..k+1) where a kink of M at a grid angle (MomentKernel.kinks_deg) would fall
+    inside the window, so that M is smooth over it; shifted inside the grid at its ends. A
+    kink inside the interval itself or off the grid leaves the estimate poor and the bracket
+    falls back (_warm_bracket). Cached (read-only) on the grid and the kinks: every trim of one
+    aerodynamic model shares them."""
+    alphas = ALPHA_GRID if grid == 0 else ALPHA_GRID_WIDE
+    k = np.arange(len(alphas) - 1)
+    j = k - 1
+    start = float(np.degrees(alphas[0]))
+    for kink in kinks_deg:
+        p = kink - start  # the kink's grid position (on a grid angle: an integer)
+        if abs(p - round(p)) < 1e-9:
+            p = round(p)
+            j = np.where(p <= k, np.maximum(j, p), np.where(p >= k + 1, np.minimum(j, p - 3), j))
+    j = np.clip(j, 0, len(alphas) - 4)
+    j.flags.writeable = False
+    return j
+
+
+def _warm_bracket(moment, grid, m, k, idx):
     """Bracket [lo, hi] (M(lo) > 0 >= M(hi)) of each column's root, shrunk from the grid
-    interval k around a first estimate x0: the inverse cubic (Lagrange in M) through the grid
-    values k-1..k+2 (the window shifted inside the grid at its ends), or the secant where
-    that estimate is not finite or leaves the interval (M not monotone there).
+    interval k (grid 0: ALPHA_GRID, 1: ALPHA_GRID_WIDE; grid values ``m``) around a first
+    estimate x0: the inverse cubic (Lagrange in M) through four grid values around the
+    interval (:func:`_window_starts`), clipped to the interval (M not monotone there).
 
     One kernel call on x0 + _WARM_STEPS cuts the interval to the first sign change along
     (lo, x0 - 2e-5, x0 - 1e-6, x0 + 1e-6, x0 + 2e-5, hi) (points clipped to the interval):
@@ -402,29 +463,20 @@ def _warm_bracket(moment, alphas, m, k, idx):
     smooth). Either way a bracket inside the same grid interval, so the root found (of an
     interval holding one root) and the choice of root are those of the plain 1-degree start.
     """
+    alphas = ALPHA_GRID if grid == 0 else ALPHA_GRID_WIDE
     lo, hi = alphas[k], alphas[k + 1]
     f_lo, f_hi = m[(k,) + idx], m[(k + 1,) + idx]
-    # the window k-1..k+2, moved (to k..k+3 or k-2..k+1) off a kink of M at a grid angle
-    # (MomentKernel.kinks_deg) so that M is smooth over it; a kink inside the interval itself
-    # leaves the estimate poor and the bracket falls back (below)
-    j = k - 1
-    start = np.degrees(alphas[0])
-    for kink in moment.kinks_deg:
-        p = kink - start  # the kink's grid position (a grid angle: an integer)
-        if abs(p - round(p)) < 1e-9:
-            p = round(p)
-            j = np.where(p <= k, np.maximum(j, p), np.where(p >= k + 1, np.minimum(j, p - 3), j))
     lead = (1,) * len(idx)
-    win = np.clip(j, 0, len(alphas) - 4) + _WINDOW.reshape((4,) + lead)
+    win = _window_starts(grid, moment.kinks_deg)[k] + _WINDOW.reshape((4,) + lead)
     y = m[(win,) + idx]  # (4,) + shape
     with np.errstate(divide="ignore", invalid="ignore"):
         ratio = y[None] / (y[None] - y[:, None])  # [i, j] = -y_j / (y_i - y_j)
         ratio[_DIAG4] = 1.0
         x0 = np.sum(alphas[win] * np.prod(ratio, axis=1), axis=0)
-        secant = (lo * f_hi - hi * f_lo) / (f_hi - f_lo)
-    x0 = np.where((x0 > lo) & (x0 < hi), x0, secant)
-    x0 = np.where((x0 >= lo) & (x0 <= hi), x0, 0.5 * (lo + hi))
-    inner = np.minimum(np.maximum(x0 + _WARM_STEPS.reshape((4,) + lead), lo), hi)
+    # outside the interval: its nearer end; NaN (equal grid values): lo (fmax/fmin drop NaN).
+    # The bracket then narrows little and Illinois takes its usual iterations
+    x0 = np.fmin(np.fmax(x0, lo), hi)
+    inner = np.fmin(np.fmax(x0 + _WARM_STEPS.reshape((4,) + lead), lo), hi)
     pts = np.concatenate((lo[None], inner, hi[None]))
     f = np.concatenate((f_lo[None], moment(inner), f_hi[None]))
     pos = f > 0.0
@@ -452,12 +504,11 @@ def trim_equilibrium(moment: MomentKernel, iterations: int = 40) -> Equilibrium:
     shape = moment.shape
     m_first = None
     for alphas in (ALPHA_GRID, ALPHA_GRID_WIDE):
-        grid = alphas.reshape((-1,) + (1,) * len(shape))
         if m_first is None:
-            m = moment(grid)  # the kernel's coefficients have the batch shape: (grid,) + shape
+            m = moment.on_grid(0)  # (grid,) + shape
             m_first = m
         else:  # the wide grid holds the first one: only its other angles are new
-            m_out = moment(grid[_WIDE_OUTSIDE])
+            m_out = moment.on_grid(1)
             m = np.concatenate([m_out[:_WIDE_BELOW], m_first, m_out[_WIDE_BELOW:]])
         down = (m[:-1] > 0.0) & (m[1:] <= 0.0)
         mid = _ABS_MID[0 if alphas is ALPHA_GRID else 1].reshape((-1,) + (1,) * len(shape))
@@ -467,7 +518,8 @@ def trim_equilibrium(moment: MomentKernel, iterations: int = 40) -> Equilibrium:
         if np.all(found):
             break
     idx = tuple(np.indices(shape))
-    lo, f_lo, hi, f_hi, spread = _warm_bracket(moment, alphas, m, k, idx)
+    grid = 0 if alphas is ALPHA_GRID else 1
+    lo, f_lo, hi, f_hi, spread = _warm_bracket(moment, grid, m, k, idx)
     # Illinois iterations on all brackets at once; x is the running root estimate. ``was_pos``
     # / ``was_neg``: the sign of the previous iterate's moment (neither before the first)
     was_pos = was_neg = np.zeros(shape, bool)

@@ -114,6 +114,34 @@ def test_moment_kernel_is_the_moment_of_the_loads(shape, alpha_deg, speed, given
     assert np.max(np.abs(about_cv(alpha) - ref)) <= 1e-14 * (np.max(np.abs(ref)) + scale)
 
 
+@pytest.mark.parametrize("shape", list(SHAPE_INFO))
+@settings(max_examples=8, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(
+    speeds=st.lists(st.floats(0.0, 60.0), min_size=1, max_size=4),
+    stall=st.floats(5.0, 40.0),
+    static=st.booleans(),
+)
+def test_moment_on_the_grids_is_the_kernel(shape, speeds, stall, static):
+    """The grid form (a cached basis of the grid angles times the coefficients) gives the
+    kernel's moment on ALPHA_GRID and on the wide grid's outer angles, to rounding."""
+    req, cfg = thesis_baseline()
+    aero = replace(cfg.aero, fin_stall_angle_deg=stall)
+    cfg = replace(cfg, hull=HullSpec(shape=shape, volume=170.0))
+    af = _airframe(req, cfg)
+    speed = np.asarray(speeds)
+    kernel = MomentKernel(af, aero, speed, axial_drag_coefficient(af, aero, speed))
+    if not static:
+        kernel = kernel.about(af.hull.xi_cb)
+    q = 0.5 * af.air_density * speed**2
+    scale = np.max((af.buoyancy + q * af.hull.reference_area) * af.hull.length)
+    outer = ALPHA_GRID_WIDE[(ALPHA_GRID_WIDE < ALPHA_GRID[0]) | (ALPHA_GRID_WIDE > ALPHA_GRID[-1])]
+    for grid, angles in ((0, ALPHA_GRID), (1, outer)):
+        ref = kernel(angles[:, None])
+        got = kernel.on_grid(grid)
+        assert got.shape == ref.shape == (len(angles), len(speed))
+        assert np.max(np.abs(got - ref)) <= 1e-14 * (np.max(np.abs(ref)) + scale)
+
+
 _AIRFRAMES = {}
 
 
