@@ -8,6 +8,7 @@ the Heun march on separate arrays with :func:`aerostat_core.tether._line_load`
 :func:`aerostat_core.statics.moment_about_confluence` / ``aerodynamic_moment``.
 """
 
+import dataclasses
 from dataclasses import replace
 
 import numpy as np
@@ -140,6 +141,57 @@ def test_moment_on_the_grids_is_the_kernel(shape, speeds, stall, static):
         got = kernel.on_grid(grid)
         assert got.shape == ref.shape == (len(angles), len(speed))
         assert np.max(np.abs(got - ref)) <= 1e-14 * (np.max(np.abs(ref)) + scale)
+
+
+def _assert_same_fields(got, ref, path, rtol):
+    """Every array field of two dataclasses (recursing into dataclasses, dicts and tuples)
+    equal to ``rtol`` of the field's largest magnitude."""
+    if dataclasses.is_dataclass(ref):
+        for f in dataclasses.fields(ref):
+            _assert_same_fields(
+                getattr(got, f.name), getattr(ref, f.name), f"{path}.{f.name}", rtol
+            )
+    elif isinstance(ref, dict):
+        assert got.keys() == ref.keys()
+        for k in ref:
+            _assert_same_fields(got[k], ref[k], f"{path}[{k}]", rtol)
+    elif isinstance(ref, tuple):
+        assert len(got) == len(ref)
+        for i, (g, r) in enumerate(zip(got, ref)):
+            _assert_same_fields(g, r, f"{path}[{i}]", rtol)
+    elif isinstance(ref, (str, int, type(None))) and not isinstance(ref, bool):
+        assert got == ref, path
+    else:
+        g, r = np.asarray(got, float), np.asarray(ref, float)
+        assert g.shape == r.shape, path
+        np.testing.assert_allclose(
+            g, r, rtol=0, atol=rtol * (np.max(np.abs(r)) + 1e-300), err_msg=path
+        )
+
+
+@settings(max_examples=30, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(
+    shape=st.sampled_from(list(SHAPE_INFO)),
+    volumes=st.lists(st.floats(1.0, 5000.0), min_size=1, max_size=4),
+    fraction=st.floats(0.0, 1.0),
+    area_change=st.floats(-50.0, 100.0),
+    position=st.floats(0.55, 0.8),
+    cutoff=st.sampled_from(["fin", "tail"]),
+)
+def test_scaled_airframe_is_the_plain_one(shape, volumes, fraction, area_change, position, cutoff):
+    """A scalar fineness ratio and fin variables take the unit-volume geometry scaled by
+    V^(1/3) (cached quadratures); the same airframe as the direct computation, which a
+    batch of per-design fineness ratios runs, to rounding."""
+    req, cfg = thesis_baseline()
+    lo, hi = SHAPE_INFO[shape].fineness_range
+    f = lo + fraction * (hi - lo)
+    cfg = replace(
+        cfg, hull=HullSpec(shape=shape, fineness_ratio=f), aero=replace(cfg.aero, cutoff=cutoff)
+    )
+    v = np.asarray(volumes)
+    scaled = build_airframe(req, cfg, v, f, area_change, position)
+    plain = build_airframe(req, cfg, v, np.full(v.shape, f), area_change, position)
+    _assert_same_fields(scaled, plain, "airframe", 1e-12)
 
 
 _AIRFRAMES = {}
