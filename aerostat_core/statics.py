@@ -421,8 +421,9 @@ def equilibrium(af: Airframe, aero: AeroModel, speed, iterations: int = 40) -> E
 
 #: Half-widths of the brackets tried around the interpolated root [rad]: the inverse cubic
 #: through four 1-degree grid values is within 1e-6 rad of a smooth root in ~99 % of trims
-#: (median 5e-8), so x0 -+ 1e-6 usually holds it and x0 -+ 2e-5 nearly always; from a bracket
-#: that tight Illinois needs 2-3 iterations to 1e-12 rad (9-10 from the 1-degree interval).
+#: (median 5e-8), so x0 -+ 1e-6 usually holds it and x0 -+ 2e-5 nearly always. The inverse
+#: cubic through these four points is then the root to rounding: Illinois starts there and
+#: usually stops after that one iteration (~5 from the 1-degree interval).
 _WARM_STEPS = np.array([-2e-5, -1e-6, 1e-6, 2e-5])
 _WINDOW = np.arange(4)
 
@@ -477,12 +478,21 @@ def _warm_bracket(moment, grid, m, k, idx):
     # The bracket then narrows little and Illinois takes its usual iterations
     x0 = np.fmin(np.fmax(x0, lo), hi)
     inner = np.fmin(np.fmax(x0 + _WARM_STEPS.reshape((4,) + lead), lo), hi)
+    f_in = moment(inner)
     pts = np.concatenate((lo[None], inner, hi[None]))
-    f = np.concatenate((f_lo[None], moment(inner), f_hi[None]))
+    f = np.concatenate((f_lo[None], f_in, f_hi[None]))
     pos = f > 0.0
     i = np.argmax(pos[:-1] & ~pos[1:], axis=0)  # the first sign change (f_lo > 0 >= f_hi)
     lo_w, hi_w, f_lo_w, f_hi_w = (a[(r,) + idx] for a in (pts, f) for r in (i, i + 1))
-    return lo_w, f_lo_w, hi_w, f_hi_w, (1.0 + f_lo) - f_hi
+    # first iterate: the inverse cubic through the four new points (all within 2e-5 rad of
+    # the root when the estimate was good: exact to rounding where M is smooth there), where
+    # it is finite and inside the new bracket; else Illinois starts with its secant
+    with np.errstate(divide="ignore", invalid="ignore"):
+        ratio = f_in[None] / (f_in[None] - f_in[:, None])
+        ratio[_DIAG4] = 1.0
+        x1 = np.sum(inner * np.prod(ratio, axis=1), axis=0)
+    x1 = np.where((x1 >= lo_w) & (x1 <= hi_w), x1, np.nan)  # NaN: not used
+    return lo_w, f_lo_w, hi_w, f_hi_w, (1.0 + f_lo) - f_hi, x1
 
 
 def trim_equilibrium(moment: MomentKernel, iterations: int = 40) -> Equilibrium:
@@ -519,7 +529,7 @@ def trim_equilibrium(moment: MomentKernel, iterations: int = 40) -> Equilibrium:
             break
     idx = tuple(np.indices(shape))
     grid = 0 if alphas is ALPHA_GRID else 1
-    lo, f_lo, hi, f_hi, spread = _warm_bracket(moment, grid, m, k, idx)
+    lo, f_lo, hi, f_hi, spread, first = _warm_bracket(moment, grid, m, k, idx)
     # Illinois iterations on all brackets at once; x is the running root estimate. ``was_pos``
     # / ``was_neg``: the sign of the previous iterate's moment (neither before the first)
     was_pos = was_neg = np.zeros(shape, bool)
@@ -532,11 +542,13 @@ def trim_equilibrium(moment: MomentKernel, iterations: int = 40) -> Equilibrium:
     tol = eps * spread
     unfound = ~found
     x = half * (lo + hi)
-    for _ in range(iterations):
+    for it in range(iterations):
         df = f_hi - f_lo
         same = df == 0.0
         secant = (lo * f_hi - hi * f_lo) / np.where(same, one, df)
         x = np.where(same, half * (lo + hi), secant) if same.any() else secant
+        if it == 0:  # the warm start's interpolated root, where it has one
+            x = np.where(np.isnan(first), x, first)
         fx = moment(x)
         pos = fx > 0.0
         lo = np.where(pos, x, lo)
