@@ -457,12 +457,16 @@ def _warm_bracket(moment, grid, m, k, idx):
     estimate x0: the inverse cubic (Lagrange in M) through four grid values around the
     interval (:func:`_window_starts`), clipped to the interval (M not monotone there).
 
-    One kernel call on x0 + _WARM_STEPS cuts the interval to the first sign change along
-    (lo, x0 - 2e-5, x0 - 1e-6, x0 + 1e-6, x0 + 2e-5, hi) (points clipped to the interval):
-    2e-6 rad wide when the estimate is good, else a wider part of the grid interval that still
-    brackets (a kink of M inside the interval: the fin stall, where M is only piecewise
-    smooth). Either way a bracket inside the same grid interval, so the root found (of an
-    interval holding one root) and the choice of root are those of the plain 1-degree start.
+    One kernel call on x0 + _WARM_STEPS (points clipped to the interval) gives the first
+    iterate x1, the inverse cubic through them, and the points from which
+    :func:`_shrunk_bracket` cuts the interval to the first sign change along
+    (lo, x0 - 2e-5, x0 - 1e-6, x0 + 1e-6, x0 + 2e-5, hi): 2e-6 rad wide when the estimate is
+    good, else a wider part of the grid interval that still brackets (a kink of M inside the
+    interval: the fin stall, where M is only piecewise smooth). Either way inside the same
+    grid interval, so the root found (of an interval holding one root) and the choice of root
+    are those of the plain 1-degree start.
+
+    Returns (the points, x1, the grid interval's 1 + f_lo - f_hi).
     """
     alphas = ALPHA_GRID if grid == 0 else ALPHA_GRID_WIDE
     lo, hi = alphas[k], alphas[k + 1]
@@ -479,20 +483,27 @@ def _warm_bracket(moment, grid, m, k, idx):
     x0 = np.fmin(np.fmax(x0, lo), hi)
     inner = np.fmin(np.fmax(x0 + _WARM_STEPS.reshape((4,) + lead), lo), hi)
     f_in = moment(inner)
+    # the inverse cubic through the four new points (all within 2e-5 rad of the root when the
+    # estimate was good: the root to rounding where M is smooth there), NaN where it is not
+    # finite or leaves the interval
+    with np.errstate(divide="ignore", invalid="ignore"):
+        ratio = f_in[None] / (f_in[None] - f_in[:, None])
+        ratio[_DIAG4] = 1.0
+        x1 = np.sum(inner * np.prod(ratio, axis=1), axis=0)
+    x1 = np.where((x1 >= lo) & (x1 <= hi), x1, np.nan)
+    return (lo, f_lo, hi, f_hi, inner, f_in), x1, (1.0 + f_lo) - f_hi
+
+
+def _shrunk_bracket(points, idx):
+    """The first sign change along (lo, inner points, hi) of :func:`_warm_bracket`'s points:
+    (lo, f_lo, hi, f_hi) of the narrowest bracket they give (M(lo) > 0 >= M(hi))."""
+    lo, f_lo, hi, f_hi, inner, f_in = points
     pts = np.concatenate((lo[None], inner, hi[None]))
     f = np.concatenate((f_lo[None], f_in, f_hi[None]))
     pos = f > 0.0
     i = np.argmax(pos[:-1] & ~pos[1:], axis=0)  # the first sign change (f_lo > 0 >= f_hi)
     lo_w, hi_w, f_lo_w, f_hi_w = (a[(r,) + idx] for a in (pts, f) for r in (i, i + 1))
-    # first iterate: the inverse cubic through the four new points (all within 2e-5 rad of
-    # the root when the estimate was good: exact to rounding where M is smooth there), where
-    # it is finite and inside the new bracket; else Illinois starts with its secant
-    with np.errstate(divide="ignore", invalid="ignore"):
-        ratio = f_in[None] / (f_in[None] - f_in[:, None])
-        ratio[_DIAG4] = 1.0
-        x1 = np.sum(inner * np.prod(ratio, axis=1), axis=0)
-    x1 = np.where((x1 >= lo_w) & (x1 <= hi_w), x1, np.nan)  # NaN: not used
-    return lo_w, f_lo_w, hi_w, f_hi_w, (1.0 + f_lo) - f_hi, x1
+    return lo_w, f_lo_w, hi_w, f_hi_w
 
 
 def trim_equilibrium(moment: MomentKernel, iterations: int = 40) -> Equilibrium:
@@ -529,7 +540,7 @@ def trim_equilibrium(moment: MomentKernel, iterations: int = 40) -> Equilibrium:
             break
     idx = tuple(np.indices(shape))
     grid = 0 if alphas is ALPHA_GRID else 1
-    lo, f_lo, hi, f_hi, spread, first = _warm_bracket(moment, grid, m, k, idx)
+    points, first, spread = _warm_bracket(moment, grid, m, k, idx)
     # Illinois iterations on all brackets at once; x is the running root estimate. ``was_pos``
     # / ``was_neg``: the sign of the previous iterate's moment (neither before the first)
     was_pos = was_neg = np.zeros(shape, bool)
@@ -541,8 +552,17 @@ def trim_equilibrium(moment: MomentKernel, iterations: int = 40) -> Equilibrium:
     # buoyancy moment, and iterate until hi - lo < 1e-12)
     tol = eps * spread
     unfound = ~found
-    x = half * (lo + hi)
-    for it in range(iterations):
+    # the warm start's root, where every column with a bracket has one and it is tiny: done
+    # (columns without one take their grid angle below)
+    done = False
+    if np.all(~np.isnan(first) | unfound):
+        x = first
+        done = bool(np.all((np.abs(moment(x)) <= tol) | unfound))
+    if not done:
+        lo, f_lo, hi, f_hi = _shrunk_bracket(points, idx)
+        first = np.where((first >= lo) & (first <= hi), first, np.nan)
+        x = half * (lo + hi)
+    for it in range(0 if done else iterations):
         df = f_hi - f_lo
         same = df == 0.0
         secant = (lo * f_hi - hi * f_lo) / np.where(same, one, df)
