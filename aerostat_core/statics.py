@@ -293,7 +293,12 @@ class MomentKernel:
         return k
 
     def _about(self, xi_ref, static):
-        af, one = self.af, np.ones(self.shape)
+        af, shape = self.af, self.shape
+        one = np.ones(shape)
+
+        def full(a):  # every coefficient has the batch shape (on_grid stacks them)
+            return a if np.shape(a) == shape else a * one
+
         xr = af.xi_c if xi_ref is None else xi_ref
         zr = af.z_c if xi_ref is None else 0.0
         dxm, dzm = af.xi_m - xr, -zr
@@ -305,7 +310,7 @@ class MomentKernel:
             c0 = c1 = 0.0
         if self._hull is not None:
             n1, m1, nc, mc, ax = self._hull
-            self.p = tuple(a * one for a in (m1 - dxm * n1, mc - dxm * nc, dzm * n1, dzm * ax))
+            self.p = tuple(full(a) for a in (m1 - dxm * n1, mc - dxm * nc, dzm * n1, dzm * ax))
         else:
             lift, drag = self._bluff
             c0 = c0 - dxm * lift + dzm * drag
@@ -313,9 +318,9 @@ class MomentKernel:
             self.p = None
         dxf, dzf = af.fins.xi_ac - xr, -zr
         lf, di, d0 = self._fins
-        self.c0 = (c0 + dzf * d0) * one
-        self.c1 = (c1 - dxf * d0) * one
-        self.f = tuple(a * one for a in (dxf * lf, dzf * di, dzf * lf, dxf * di))
+        self.c0 = full(c0 + dzf * d0)
+        self.c1 = full(c1 - dxf * d0)
+        self.f = tuple(full(a) for a in (dxf * lf, dzf * di, dzf * lf, dxf * di))
 
     def on_grid(self, grid: int):
         """M [N m] on a fixed angle grid, shape (angles,) + ``.shape``: ``grid`` 0 is
@@ -362,6 +367,9 @@ _WIDE_OUTSIDE = (ALPHA_GRID_WIDE < ALPHA_GRID[0]) | (ALPHA_GRID_WIDE > ALPHA_GRI
 assert np.array_equal(ALPHA_GRID_WIDE[~_WIDE_OUTSIDE], ALPHA_GRID)
 #: |midpoint| of each grid interval (the bracket nearest alpha = 0 wins), usual and wide grid.
 _ABS_MID = tuple(np.abs(0.5 * (a[:-1] + a[1:])) for a in (ALPHA_GRID, ALPHA_GRID_WIDE))
+#: The grid intervals in order of |midpoint| (stable: of two at the same distance the lower
+#: first), so the first falling crossing in this order is the one nearest alpha = 0.
+_NEAREST_FIRST = tuple(np.argsort(a, kind="stable") for a in _ABS_MID)
 _DIAG4 = (np.arange(4), np.arange(4))
 
 
@@ -532,10 +540,10 @@ def trim_equilibrium(moment: MomentKernel, iterations: int = 40) -> Equilibrium:
             m_out = moment.on_grid(1)
             m = np.concatenate([m_out[:_WIDE_BELOW], m_first, m_out[_WIDE_BELOW:]])
         down = (m[:-1] > 0.0) & (m[1:] <= 0.0)
-        mid = _ABS_MID[0 if alphas is ALPHA_GRID else 1].reshape((-1,) + (1,) * len(shape))
-        score = np.where(down, mid, np.inf)
-        k = np.argmin(score, axis=0)
-        found = down.any(axis=0)
+        order = _NEAREST_FIRST[0 if alphas is ALPHA_GRID else 1]
+        nearest = down[order]
+        k = order[np.argmax(nearest, axis=0)]  # the crossing nearest 0 (0 where none)
+        found = nearest.any(axis=0)
         if np.all(found):
             break
     idx = tuple(np.indices(shape))
