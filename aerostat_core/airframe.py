@@ -99,11 +99,13 @@ assert set(_FIN_POWERS) | {"count", "z_fins"} == {f.name for f in fields(FinGeom
 def _unit_geometry(shape, fineness_ratio, nose_fraction, fin_spec, fin_areal_density,
                    area_change, position, section_lift_slope, cutoff):
     """Hull, fins, J&D integrals (i1, i3, j1, j2) and pitch-inertia integrals (shell [m4], gas
-    [m5], see :func:`aerostat_core.mass.mass_breakdown`) of the hull of unit volume (1 m3).
+    [m5], see :func:`aerostat_core.mass.mass_breakdown`) of the hull of unit volume (1 m3),
+    packed for :func:`_scaled_geometry`: (shape, fin count, groups), each group (p, the
+    fields' (kind, name), their unit values as a read-only column) of one power p of length.
 
     Cached on these (hashable, scalar) inputs: sizing builds the airframe of 24-32 volumes of
     one shape twice per design, and the quadratures (profile, surface moment, inertia) depend
-    on the shape's proportions only. Entries are numpy scalars (immutable)."""
+    on the shape's proportions only."""
     hull = hull_geometry(1.0, fineness_ratio, nose_fraction, shape)
     fins = fin_geometry(hull, fin_spec, fin_areal_density, area_change, position,
                         section_lift_slope)
@@ -112,32 +114,47 @@ def _unit_geometry(shape, fineness_ratio, nose_fraction, fin_spec, fin_areal_den
     xi, r, ws, wv = profile_quadrature(hull)
     shell = np.sum(ws * ((xi - hull.xi_surface) ** 2 + 0.5 * r**2))
     gas = np.sum(wv * ((xi - hull.xi_cb) ** 2 + 0.25 * r**2))
-    return hull, fins, integrals, (shell, gas)
+    entries = [("h", k, getattr(hull, k), p) for k, p in _HULL_POWERS.items()
+               if k not in ("volume", "reference_area")]
+    entries += [("f", k, getattr(fins, k), p) for k, p in _FIN_POWERS.items()]
+    entries += [("z", i, z, 1) for i, z in enumerate(fins.z_fins)]
+    entries += [("i", i, x, p) for i, (x, p) in enumerate(zip(integrals, (2, 3, 2, 3)))]
+    entries += [("m", 0, shell, 4), ("m", 1, gas, 5)]
+    groups = []
+    for p in sorted({e[3] for e in entries}):
+        group = [e for e in entries if e[3] == p]
+        column = np.array([float(e[2]) for e in group]).reshape(-1, 1)
+        column.flags.writeable = False
+        groups.append((p, tuple(e[:2] for e in group), column))
+    return hull.shape, fins.count, tuple(groups)
 
 
 def _scaled_geometry(volume, unit):
     """The unit-volume geometry of :func:`_unit_geometry` scaled to hull volumes ``volume``
-    [m3] (each field times lambda^p, lambda = V^(1/3); the volume and V^(2/3) as
-    :func:`aerostat_core.geometry.hull_geometry` computes them). The same numbers as the
-    direct computation to rounding."""
-    hull, fins, integrals, inertia = unit
+    [m3]: each field times lambda^p, lambda = V^(1/3), one product per power p (the volume
+    and V^(2/3) as :func:`aerostat_core.geometry.hull_geometry` computes them). The same
+    numbers as the direct computation to rounding. Returns (hull, fins, (i1, i3, j1, j2),
+    (shell, gas) inertia integrals)."""
+    shape, count, groups = unit
     v = np.asarray(volume, dtype=float)
     lam = np.cbrt(v)
     one = np.ones_like(lam)
     lam2 = lam * lam
-    power = (one, lam, lam2, lam2 * lam)
-    h = {k: getattr(hull, k) * power[p] for k, p in _HULL_POWERS.items()}
+    lam4 = lam2 * lam2
+    power = (one, lam, lam2, lam2 * lam, lam4, lam4 * lam)
+    out = {"h": {}, "f": {}, "z": {}, "i": {}, "m": {}}
+    lead = (-1,) + (1,) * lam.ndim
+    for p, keys, column in groups:
+        for (kind, key), row in zip(keys, column.reshape(lead) * power[p]):
+            out[kind][key] = row
+    h, z, i, m = out["h"], out["z"], out["i"], out["m"]
     h["volume"] = v * one
     h["reference_area"] = h["volume"] ** (2.0 / 3.0)
-    fn = {k: getattr(fins, k) * power[p] for k, p in _FIN_POWERS.items()}
-    fn["z_fins"] = tuple(z * lam for z in fins.z_fins)
-    i1, i3, j1, j2 = integrals
-    lam4 = lam2 * lam2
     return (
-        HullGeometry(shape=hull.shape, **h),
-        FinGeometry(count=fins.count, **fn),
-        (i1 * lam2, i3 * power[3], j1 * lam2, j2 * power[3]),
-        (inertia[0] * lam4, inertia[1] * lam4 * lam),
+        HullGeometry(shape=shape, **h),
+        FinGeometry(count=count, z_fins=tuple(z[k] for k in range(len(z))), **out["f"]),
+        (i[0], i[1], i[2], i[3]),
+        (m[0], m[1]),
     )
 
 
