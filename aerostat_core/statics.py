@@ -579,7 +579,14 @@ def trim_equilibrium(moment: MomentKernel, iterations: int = 40) -> Equilibrium:
     done = False
     if np.all(~np.isnan(first) | unfound):
         x = first
-        done = bool(np.all((np.abs(moment(x)) <= tol) | unfound))
+        fx = moment(x)
+        done = bool(np.all((np.abs(fx) <= tol) | unfound))
+        if done:  # one secant step from the nearest warm point: the root to rounding
+            inner, f_in = points[4], points[5]
+            j = np.argmin(np.abs(inner - x), axis=0)
+            xa, fa = inner[(j,) + idx], f_in[(j,) + idx]
+            df = fx - fa
+            x = np.where(df != 0.0, x - fx * (x - xa) / np.where(df != 0.0, df, 1.0), x)
     if not done:
         lo, f_lo, hi, f_hi = _shrunk_bracket(points, idx)
         first = np.where((first >= lo) & (first <= hi), first, np.nan)
