@@ -129,6 +129,25 @@ def _unit_geometry(shape, fineness_ratio, nose_fraction, fin_spec, fin_areal_den
     return hull.shape, fins.count, tuple(groups)
 
 
+def _unit_key(cfg, shape, f, area_change, position):
+    """The :func:`_unit_geometry` arguments when every input of the unit geometry is one scalar
+    (a batch of volumes of one shape); None when any is an array (batch overrides, or the
+    uncertainty study's sampled configurations): those take the direct computation."""
+    dsf = cfg.fins.area_change if area_change is None else area_change
+    pos = cfg.fins.position if position is None else position
+    values = (f, cfg.hull.nose_fraction, cfg.fin_fabric.areal_density, dsf, pos,
+              cfg.aero.section_lift_slope)
+    if any(np.ndim(v) != 0 for v in values):
+        return None
+    try:
+        hash(cfg.fins)  # a spec with array fields is not a cache key
+    except TypeError:
+        return None
+    f, nose, density, dsf, pos, slope = (float(v) for v in values)
+    return (shape, 1.0 if shape == "sphere" else f, nose, cfg.fins, density, dsf, pos, slope,
+            cfg.aero.cutoff)
+
+
 def _scaled_geometry(volume, unit):
     """The unit-volume geometry of :func:`_unit_geometry` scaled to hull volumes ``volume``
     [m3]: each field times lambda^p, lambda = V^(1/3), one product per power p (the volume
@@ -199,15 +218,9 @@ def build_airframe(
     f = cfg.hull.fineness_ratio if fineness_ratio is None else np.asarray(fineness_ratio, float)
     check_fineness(shape, f)  # batch overrides too: a shape is only valid over its l/d range
     integrals = inertia = None
-    if np.ndim(f) == 0 and np.ndim(area_change) == 0 and np.ndim(position) == 0:
-        dsf = cfg.fins.area_change if area_change is None else float(area_change)
-        pos = cfg.fins.position if position is None else float(position)
-        unit = _unit_geometry(
-            shape, 1.0 if shape == "sphere" else float(f), float(cfg.hull.nose_fraction), cfg.fins,
-            float(cfg.fin_fabric.areal_density), dsf, pos, float(cfg.aero.section_lift_slope),
-            cfg.aero.cutoff,
-        )
-        hull, fins, integrals, inertia = _scaled_geometry(volume, unit)
+    key = _unit_key(cfg, shape, f, area_change, position)
+    if key is not None:
+        hull, fins, integrals, inertia = _scaled_geometry(volume, _unit_geometry(*key))
     else:
         hull = hull_geometry(volume, f, cfg.hull.nose_fraction, shape)
         fins = fin_geometry(
