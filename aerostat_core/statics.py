@@ -512,6 +512,9 @@ def _warm_bracket(moment, grid, m, k, idx):
         ratio = f_in[None] / (f_in[None] - f_in[:, None])
         ratio[_DIAG4] = 1.0
         x1 = np.sum(inner * np.prod(ratio, axis=1), axis=0)
+    # not finite (points clipped together at an end of the interval: a root on or next to a
+    # grid angle, as a bluff hull's level trim at 0): the grid estimate x0
+    x1 = np.where(np.isnan(x1), x0, x1)
     x1 = np.where((x1 >= lo) & (x1 <= hi), x1, np.nan)
     return (lo, f_lo, hi, f_hi, inner, f_in), x1, (1.0 + f_lo) - f_hi
 
