@@ -6,7 +6,8 @@ single design, a wind sweep and a batch of thousands of designs (optimisation, M
 
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+import functools
+from dataclasses import dataclass, fields, replace
 
 import numpy as np
 
@@ -14,7 +15,7 @@ from . import constants as c
 from .atmosphere import isa
 from .fins import FinGeometry, fin_geometry
 from .gas import gas_density, gross_buoyancy
-from .geometry import HullGeometry, hull_geometry, shape_integrals
+from .geometry import HullGeometry, hull_geometry, profile_quadrature, shape_integrals
 from .helikite import KiteGeometry, kite_geometry
 from .inputs import Configuration, Requirement
 from .mass import MassBreakdown, mass_breakdown
@@ -76,6 +77,106 @@ def _without_fins(fins: FinGeometry, hull: HullGeometry, kite: KiteGeometry | No
     )
 
 
+# Power of length of each geometry field (0: dimensionless). With a scalar fineness ratio,
+# nose fraction and fin variables every hull of a batch of volumes is one shape scaled by
+# lambda = V^(1/3), so its geometry is the unit-volume one times lambda^p (_scaled_geometry).
+_HULL_POWERS = {
+    "volume": 3, "fineness_ratio": 0, "length": 1, "diameter": 1, "a1": 1, "a2": 1, "b": 1,
+    "surface_area": 2, "xi_cb": 1, "xi_surface": 1, "planform_area": 2,
+    "planform_centroid": 1, "reference_area": 2, "k1": 0, "k2": 0, "k_rot": 0,
+}
+_FIN_POWERS = {
+    "root_chord": 1, "tip_chord": 1, "span": 1, "sweep_le": 0, "area_one": 2, "area_total": 2,
+    "lifting_area": 2, "aspect_ratio": 0, "mac": 1, "xi_root_le": 1, "xi_root_te": 1,
+    "xi_ac": 1, "xi_centroid": 1, "y_mac": 1, "lift_slope": 0, "oswald": 0, "fabric_area": 2,
+    "mass": 2,
+}
+assert set(_HULL_POWERS) | {"shape"} == {f.name for f in fields(HullGeometry)}
+assert set(_FIN_POWERS) | {"count", "z_fins"} == {f.name for f in fields(FinGeometry)}
+
+
+@functools.lru_cache(maxsize=256)
+def _unit_geometry(shape, fineness_ratio, nose_fraction, fin_spec, fin_areal_density,
+                   area_change, position, section_lift_slope, cutoff):
+    """Hull, fins, J&D integrals (i1, i3, j1, j2) and pitch-inertia integrals (shell [m4], gas
+    [m5], see :func:`aerostat_core.mass.mass_breakdown`) of the hull of unit volume (1 m3),
+    packed for :func:`_scaled_geometry`: (shape, fin count, groups), each group (p, the
+    fields' (kind, name), their unit values as a read-only column) of one power p of length.
+
+    Cached on these (hashable, scalar) inputs: sizing builds the airframe of 24-32 volumes of
+    one shape twice per design, and the quadratures (profile, surface moment, inertia) depend
+    on the shape's proportions only."""
+    hull = hull_geometry(1.0, fineness_ratio, nose_fraction, shape)
+    fins = fin_geometry(hull, fin_spec, fin_areal_density, area_change, position,
+                        section_lift_slope)
+    lh = fins.xi_root_le if cutoff == "fin" else hull.length
+    integrals = shape_integrals(hull, lh, hull.xi_cb)
+    xi, r, ws, wv = profile_quadrature(hull)
+    shell = np.sum(ws * ((xi - hull.xi_surface) ** 2 + 0.5 * r**2))
+    gas = np.sum(wv * ((xi - hull.xi_cb) ** 2 + 0.25 * r**2))
+    entries = [("h", k, getattr(hull, k), p) for k, p in _HULL_POWERS.items()
+               if k not in ("volume", "reference_area")]
+    entries += [("f", k, getattr(fins, k), p) for k, p in _FIN_POWERS.items()]
+    entries += [("z", i, z, 1) for i, z in enumerate(fins.z_fins)]
+    entries += [("i", i, x, p) for i, (x, p) in enumerate(zip(integrals, (2, 3, 2, 3)))]
+    entries += [("m", 0, shell, 4), ("m", 1, gas, 5)]
+    groups = []
+    for p in sorted({e[3] for e in entries}):
+        group = [e for e in entries if e[3] == p]
+        column = np.array([float(e[2]) for e in group]).reshape(-1, 1)
+        column.flags.writeable = False
+        groups.append((p, tuple(e[:2] for e in group), column))
+    return hull.shape, fins.count, tuple(groups)
+
+
+def _unit_key(cfg, shape, f, area_change, position):
+    """The :func:`_unit_geometry` arguments when every input of the unit geometry is one scalar
+    (a batch of volumes of one shape); None when any is an array (batch overrides, or the
+    uncertainty study's sampled configurations): those take the direct computation."""
+    dsf = cfg.fins.area_change if area_change is None else area_change
+    pos = cfg.fins.position if position is None else position
+    values = (f, cfg.hull.nose_fraction, cfg.fin_fabric.areal_density, dsf, pos,
+              cfg.aero.section_lift_slope)
+    if any(np.ndim(v) != 0 for v in values):
+        return None
+    try:
+        hash(cfg.fins)  # a spec with array fields is not a cache key
+    except TypeError:
+        return None
+    f, nose, density, dsf, pos, slope = (float(v) for v in values)
+    return (shape, 1.0 if shape == "sphere" else f, nose, cfg.fins, density, dsf, pos, slope,
+            cfg.aero.cutoff)
+
+
+def _scaled_geometry(volume, unit):
+    """The unit-volume geometry of :func:`_unit_geometry` scaled to hull volumes ``volume``
+    [m3]: each field times lambda^p, lambda = V^(1/3), one product per power p (the volume
+    and V^(2/3) as :func:`aerostat_core.geometry.hull_geometry` computes them). The same
+    numbers as the direct computation to rounding. Returns (hull, fins, (i1, i3, j1, j2),
+    (shell, gas) inertia integrals)."""
+    shape, count, groups = unit
+    v = np.asarray(volume, dtype=float)
+    lam = np.cbrt(v)
+    one = np.ones_like(lam)
+    lam2 = lam * lam
+    lam4 = lam2 * lam2
+    power = (one, lam, lam2, lam2 * lam, lam4, lam4 * lam)
+    out = {"h": {}, "f": {}, "z": {}, "i": {}, "m": {}}
+    lead = (-1,) + (1,) * lam.ndim
+    for p, keys, column in groups:
+        for (kind, key), row in zip(keys, column.reshape(lead) * power[p]):
+            out[kind][key] = row
+    h, z, i, m = out["h"], out["z"], out["i"], out["m"]
+    h["volume"] = v * one
+    h["reference_area"] = h["volume"] ** (2.0 / 3.0)
+    return (
+        HullGeometry(shape=shape, **h),
+        FinGeometry(count=count, z_fins=tuple(z[k] for k in range(len(z))), **out["f"]),
+        (i[0], i[1], i[2], i[3]),
+        (m[0], m[1]),
+    )
+
+
 def build_airframe(
     req: Requirement,
     cfg: Configuration,
@@ -116,13 +217,18 @@ def build_airframe(
     info = shape_info(shape)
     f = cfg.hull.fineness_ratio if fineness_ratio is None else np.asarray(fineness_ratio, float)
     check_fineness(shape, f)  # batch overrides too: a shape is only valid over its l/d range
-    hull = hull_geometry(volume, f, cfg.hull.nose_fraction, shape)
+    integrals = inertia = None
+    key = _unit_key(cfg, shape, f, area_change, position)
+    if key is not None:
+        hull, fins, integrals, inertia = _scaled_geometry(volume, _unit_geometry(*key))
+    else:
+        hull = hull_geometry(volume, f, cfg.hull.nose_fraction, shape)
+        fins = fin_geometry(
+            hull, cfg.fins, cfg.fin_fabric.areal_density, area_change, position,
+            cfg.aero.section_lift_slope,
+        )
     atm = isa(req.site_elevation + req.altitude, req.isa_offset)
     rho_gas = gas_density(cfg.gas, atm.pressure, atm.temperature)
-    fins = fin_geometry(
-        hull, cfg.fins, cfg.fin_fabric.areal_density, area_change, position,
-        cfg.aero.section_lift_slope,
-    )
     kite = kite_geometry(hull.volume) if info.kite else None
     if not info.streamlined:
         fins = _without_fins(fins, hull, kite)
@@ -132,6 +238,7 @@ def build_airframe(
         hull, fins, cfg.hull_fabric.areal_density, rho_gas, cfg.misc_mass_ratio,
         req.payload_mass, t.linear_density * tether_length,
         onboard_battery_mass(req, cfg), ballonet_mass(req, cfg, hull.volume),
+        inertia_integrals=inertia,
     )
     fb = gross_buoyancy(atm.density, hull.volume, g)
     w_a = mass.aerostat * g
@@ -143,7 +250,7 @@ def build_airframe(
     z_c = -(hull.b + cfg.confluence.drop_ratio * hull.diameter)
     xi_m = hull.xi_cb
     lh = fins.xi_root_le if cfg.aero.cutoff == "fin" else hull.length
-    i1, i3, j1, j2 = shape_integrals(hull, lh, xi_m)
+    i1, i3, j1, j2 = shape_integrals(hull, lh, xi_m) if integrals is None else integrals
     if not info.streamlined:  # drag-only hull (statics.aero_loads), tether at the centre
         z_c = np.zeros_like(hull.length)
         i1, i3, j1, j2 = (np.zeros_like(hull.length) for _ in range(4))

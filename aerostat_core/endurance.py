@@ -49,8 +49,8 @@ def permeation_time_constant(volume, area, permeability, temperature):
     """
     kappa = float(permeability) * 1e-3  # m3/(m2 day atm)
     rate = kappa * np.asarray(area, float) * np.asarray(temperature, float) / c.STANDARD_TEMPERATURE
-    with np.errstate(divide="ignore"):
-        return np.where(rate > 0, np.asarray(volume, float) / np.where(rate > 0, rate, 1.0), np.inf)
+    flows = rate > 0  # elsewhere the divisor is 1: no division by zero
+    return np.where(flows, np.asarray(volume, float) / np.where(flows, rate, 1.0), np.inf)
 
 
 def purity_after(purity0, days, tau):
@@ -98,13 +98,12 @@ def days_to_top_up(excess_lift, volume, g, rho_air, rho_helium, purity0, tau):
     """
     dl = np.asarray(volume, float) * g * (np.asarray(rho_air) - np.asarray(rho_helium))
     x = np.asarray(excess_lift, float) / np.maximum(dl, 1e-12)
-    frac = np.clip(x / np.asarray(purity0, float), 0.0, 1.0)
+    frac = np.minimum(np.maximum(x / np.asarray(purity0, float), 0.0), 1.0)
     with np.errstate(divide="ignore", invalid="ignore"):
         t = -np.asarray(tau, float) * np.log1p(-frac)
-    t = np.where(frac >= 1.0, np.inf, t)
-    return np.where(
-        np.asarray(excess_lift) <= 0.0, 0.0, np.nan_to_num(t, nan=np.inf, posinf=np.inf)
-    )
+    # frac = 1: the purity could fall to 0 first; NaN (tau = inf: nothing permeates): never
+    t = np.where((frac >= 1.0) | np.isnan(t), np.inf, t)
+    return np.where(np.asarray(excess_lift) <= 0.0, 0.0, t)
 
 
 def helium_top_up(area, permeability, purity, hull_pressure, days):

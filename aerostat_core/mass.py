@@ -43,6 +43,7 @@ def mass_breakdown(
     tether_mass,
     battery_mass: float = 0.0,
     ballonet_mass=0.0,
+    inertia_integrals=None,
 ) -> MassBreakdown:
     """Mass budget of the aerostat.
 
@@ -70,6 +71,9 @@ def mass_breakdown(
         Onboard payload battery [kg], carried with the payload (aerostat_core.mission).
     ballonet_mass : array_like
         Ballonet fabric [kg], at the hull bottom below the centre of buoyancy (halfway down).
+    inertia_integrals : tuple of array_like, optional
+        (int ((xi - xi_s)^2 + r^2/2) dS [m4], int ((xi - xi_cb)^2 + r^2/4) dV [m5]) where the
+        caller has them (aerostat_core.airframe: a scaled unit hull); None: by quadrature.
 
     Notes
     -----
@@ -107,11 +111,17 @@ def mass_breakdown(
     xi_cg = sum(items[k] * positions[k][0] for k in carried) / m_a
     z_cg = sum(items[k] * positions[k][1] for k in carried) / m_a
 
-    xi, r, ws, wv = profile_quadrature(hull)
     sigma = hull_areal_density
-    i_shell = sigma * np.sum(ws * ((xi - hull.xi_surface[..., None]) ** 2 + 0.5 * r**2), axis=-1)
-    rho_g = np.asarray(gas_density, dtype=float)[..., None]
-    i_gas = np.sum(rho_g * wv * ((xi - hull.xi_cb[..., None]) ** 2 + 0.25 * r**2), axis=-1)
+    if inertia_integrals is None:
+        xi, r, ws, wv = profile_quadrature(hull)
+        shell = np.sum(ws * ((xi - hull.xi_surface[..., None]) ** 2 + 0.5 * r**2), axis=-1)
+        i_shell = sigma * shell
+        rho_g = np.asarray(gas_density, dtype=float)[..., None]
+        i_gas = np.sum(rho_g * wv * ((xi - hull.xi_cb[..., None]) ** 2 + 0.25 * r**2), axis=-1)
+    else:
+        shell, gas = inertia_integrals
+        i_shell = sigma * shell
+        i_gas = np.asarray(gas_density, dtype=float) * gas
     # parallel axis to the aerostat CG
     inertia = i_shell + m_hull * ((hull.xi_surface - xi_cg) ** 2 + z_cg**2)
     inertia = inertia + i_gas + m_gas * ((hull.xi_cb - xi_cg) ** 2 + z_cg**2)

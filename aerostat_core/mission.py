@@ -20,6 +20,7 @@ time (inputs imports :class:`MissionSpec` from here).
 
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
 
 import numpy as np
@@ -224,15 +225,25 @@ class BallonetState:
 
 def ballonet_state(req, cfg) -> BallonetState:
     """Ballonet fraction at the operating altitude against the thesis' 500 m rule."""
-    sh = cfg.mission.superheat
-    top = min(req.site_elevation + c.BALLONET_RULE_ALTITUDE, c.ISA_TROPOPAUSE)
-    # site, operating altitude and the 500 m rule altitude in one ISA call
-    a = isa(np.array([req.site_elevation, req.site_elevation + req.altitude, top]), req.isa_offset)
-    p, t = a.pressure, a.temperature
-    f, f_rule = (float(x) for x in ballonet_fraction(p[0], t[0], p[1:], t[1:], sh))
+    f, f_rule = _ballonet_fractions(
+        float(req.site_elevation), float(req.altitude), float(req.isa_offset),
+        float(cfg.mission.superheat),
+    )
     needed = f > f_rule + 1e-12
     mode = cfg.mission.ballonet
     return BallonetState(f, f_rule, needed, mode == "on" or (mode == "auto" and needed))
+
+
+@functools.lru_cache(maxsize=256)
+def _ballonet_fractions(site_elevation, altitude, isa_offset, superheat):
+    """(fraction, rule_fraction) of :func:`ballonet_state` (floats). Cached on its four float
+    inputs: three ISA evaluations that every design report repeats for the same site."""
+    top = min(site_elevation + c.BALLONET_RULE_ALTITUDE, c.ISA_TROPOPAUSE)
+    # site, operating altitude and the 500 m rule altitude in one ISA call
+    a = isa(np.array([site_elevation, site_elevation + altitude, top]), isa_offset)
+    p, t = a.pressure, a.temperature
+    f, f_rule = (float(x) for x in ballonet_fraction(p[0], t[0], p[1:], t[1:], superheat))
+    return f, f_rule
 
 
 def ballonet_mass(req, cfg, hull_volume):
@@ -531,10 +542,8 @@ def mission_report(req, cfg, af, state, sweep_ev, gas_price: float) -> MissionRe
     )
     ev2 = state.evaluation
     sq = structure_quantities(req, cfg, ev2)
-    env = {
-        key: float(np.asarray(v * np.ones(np.shape(sq["hoop"])), float).reshape(2, -1)[0, 0])
-        for key, v in sq.items()
-    }
+    # the design-wind value of each (first element of its broadcast over designs and winds)
+    env = {key: float(np.asarray(v, float).flat[0]) for key, v in sq.items()}
     val = np.asarray(state.value).reshape(-1)
     lim = np.asarray(state.limit).reshape(-1)
     i_s = NAMES.index("survival_envelope_pressure")

@@ -8,6 +8,7 @@ A body point (xi, z) sits at X = xi cos a + z sin a, Z = -xi sin a + z cos a fro
 from __future__ import annotations
 
 import copy
+import functools
 from dataclasses import dataclass
 
 import numpy as np
@@ -197,6 +198,11 @@ def central_difference(moment, alpha, h: float = DIFFERENCE_STEP):
     ndarray
         dM/dalpha [N m/rad].
     """
+    a = np.asarray(alpha, float)
+    if isinstance(moment, MomentKernel) and a.shape == moment.shape:
+        # one kernel call on both angles (a leading axis of 2): the same floats, half the calls
+        pm = moment(np.stack((a + h, a - h)))
+        return (pm[0] - pm[1]) / (2.0 * h)
     return (moment(alpha + h) - moment(alpha - h)) / (2.0 * h)
 
 
@@ -272,6 +278,11 @@ class MomentKernel:
                       q * (aero.fin_zero_lift_drag * fn.area_total))
         self.fins = bool(np.any(fn.lifting_area != 0) or np.any(fn.area_total != 0))
         self.stall = np.array(np.radians(aero.fin_stall_angle_deg))
+        # angles [deg] where M is not smooth: the fin stall clip (M' jumps) and, with a
+        # streamlined hull, alpha = 0 (the cross-flow term's sin a |sin a|: M'' jumps)
+        stall = float(aero.fin_stall_angle_deg)
+        self.kinks_deg = ((-stall, stall) if self.fins else ()) + (
+            (0.0,) if self._hull is not None else ())
         self.two, self.half = np.array(2.0), np.array(0.5)
         self._about(xi_ref, static)
 
@@ -282,7 +293,12 @@ class MomentKernel:
         return k
 
     def _about(self, xi_ref, static):
-        af, one = self.af, np.ones(self.shape)
+        af, shape = self.af, self.shape
+        one = np.ones(shape)
+
+        def full(a):  # every coefficient has the batch shape (on_grid stacks them)
+            return a if np.shape(a) == shape else a * one
+
         xr = af.xi_c if xi_ref is None else xi_ref
         zr = af.z_c if xi_ref is None else 0.0
         dxm, dzm = af.xi_m - xr, -zr
@@ -294,7 +310,7 @@ class MomentKernel:
             c0 = c1 = 0.0
         if self._hull is not None:
             n1, m1, nc, mc, ax = self._hull
-            self.p = tuple(a * one for a in (m1 - dxm * n1, mc - dxm * nc, dzm * n1, dzm * ax))
+            self.p = tuple(full(a) for a in (m1 - dxm * n1, mc - dxm * nc, dzm * n1, dzm * ax))
         else:
             lift, drag = self._bluff
             c0 = c0 - dxm * lift + dzm * drag
@@ -302,9 +318,32 @@ class MomentKernel:
             self.p = None
         dxf, dzf = af.fins.xi_ac - xr, -zr
         lf, di, d0 = self._fins
-        self.c0 = (c0 + dzf * d0) * one
-        self.c1 = (c1 - dxf * d0) * one
-        self.f = tuple(a * one for a in (dxf * lf, dzf * di, dzf * lf, dxf * di))
+        self.c0 = full(c0 + dzf * d0)
+        self.c1 = full(c1 - dxf * d0)
+        self.f = tuple(full(a) for a in (dxf * lf, dzf * di, dzf * lf, dxf * di))
+
+    def on_grid(self, grid: int):
+        """M [N m] on a fixed angle grid, shape (angles,) + ``.shape``: ``grid`` 0 is
+        ``ALPHA_GRID``, 1 the angles of ``ALPHA_GRID_WIDE`` outside it. The expansion of
+        ``__call__`` is linear in its coefficients, so on fixed angles it is the product of a
+        cached basis (the angle functions, :func:`_grid_basis`) with the coefficients: one
+        small matrix product instead of ~25 array operations on (angles x batch) elements.
+        The same M to rounding (sums in another order: a few ulp of the largest term)."""
+        coef = [self.c0, self.c1]
+        if self.fins:
+            coef += self.f
+        if self.p is not None:
+            coef += self.p
+        basis = _grid_basis(grid, float(self.stall), self.fins, self.p is not None)
+        c = np.stack(coef).reshape(len(coef), -1)
+        n = c.shape[1]
+        if n <= _GRID_BLOCK:
+            m = basis @ c
+        else:  # blocks small enough for BLAS to stay on one thread (see _GRID_BLOCK)
+            m = np.empty((basis.shape[0], n))
+            for s in range(0, n, _GRID_BLOCK):
+                np.matmul(basis, c[:, s:s + _GRID_BLOCK], out=m[:, s:s + _GRID_BLOCK])
+        return m.reshape((basis.shape[0],) + self.shape)
 
     def __call__(self, alpha):
         """M(alpha) [N m], positive nose up, at angles of attack ``alpha`` [rad] (batch shape,
@@ -335,6 +374,38 @@ _WIDE_OUTSIDE = (ALPHA_GRID_WIDE < ALPHA_GRID[0]) | (ALPHA_GRID_WIDE > ALPHA_GRI
 assert np.array_equal(ALPHA_GRID_WIDE[~_WIDE_OUTSIDE], ALPHA_GRID)
 #: |midpoint| of each grid interval (the bracket nearest alpha = 0 wins), usual and wide grid.
 _ABS_MID = tuple(np.abs(0.5 * (a[:-1] + a[1:])) for a in (ALPHA_GRID, ALPHA_GRID_WIDE))
+#: The grid intervals in order of |midpoint| (stable: of two at the same distance the lower
+#: first), so the first falling crossing in this order is the one nearest alpha = 0.
+_NEAREST_FIRST = tuple(np.argsort(a, kind="stable") for a in _ABS_MID)
+_DIAG4 = (np.arange(4), np.arange(4))
+
+
+#: Batch columns per grid matrix product: OpenBLAS runs a product of fewer than 4 x 65536
+#: multiply-adds (91 angles x 10 terms x 256 columns is 232,960) on the calling thread; larger
+#: ones start its thread pool, which on a loaded machine (the app's default thread count) made
+#: a 10,000-design batch trim 3-5x slower than the same products in blocks.
+_GRID_BLOCK = 256
+
+
+@functools.lru_cache(maxsize=64)
+def _grid_basis(grid: int, stall: float, fins: bool, hull: bool) -> np.ndarray:
+    """Angle functions of :meth:`MomentKernel.__call__` on grid ``grid`` (0: ALPHA_GRID, 1: the
+    wide grid's outer angles), one column per coefficient (c0, c1, [f1-f4], [p1-p4]).
+
+    Cached (read-only) on the grid, the fin stall angle [rad] and which terms the kernel has:
+    the only inputs of these functions, shared by every trim of the same aerodynamic model."""
+    a = ALPHA_GRID if grid == 0 else ALPHA_GRID_WIDE[_WIDE_OUTSIDE]
+    ca, sa = np.cos(a), np.sin(a)
+    cols = [ca, sa]
+    if fins:
+        c = np.minimum(np.maximum(a, -stall), stall)
+        cols += [-ca * c, ca * c * c, -sa * c, -sa * c * c]
+    if hull:
+        s2, hv = np.sin(a * 2.0), a * 0.5
+        cols += [s2 * np.cos(hv), sa * np.abs(sa), -s2 * np.sin(hv), ca * ca]
+    basis = np.stack(cols, axis=-1)
+    basis.flags.writeable = False
+    return basis
 
 
 @dataclass(frozen=True)
@@ -370,6 +441,96 @@ def equilibrium(af: Airframe, aero: AeroModel, speed, iterations: int = 40) -> E
     return trim_equilibrium(MomentKernel(af, aero, speed, cd0), iterations)
 
 
+#: Half-widths of the brackets tried around the interpolated root [rad]: the inverse cubic
+#: through four 1-degree grid values is within 1e-6 rad of a smooth root in ~99 % of trims
+#: (median 5e-8), so x0 -+ 1e-6 usually holds it and x0 -+ 2e-5 nearly always. The inverse
+#: cubic through these four points is then the root to rounding: Illinois starts there and
+#: usually stops after that one iteration (~5 from the 1-degree interval).
+_WARM_STEPS = np.array([-2e-5, -1e-6, 1e-6, 2e-5])
+_WINDOW = np.arange(4)
+
+
+@functools.lru_cache(maxsize=64)
+def _window_starts(grid: int, kinks_deg: tuple) -> np.ndarray:
+    """First index of the 4-point interpolation window for each grid interval k (grid 0:
+    ALPHA_GRID, 1: ALPHA_GRID_WIDE): k-1 (k-1..k+2 around the interval), moved to k (k..k+3)
+    or k-2 (k-2..k+1) where a kink of M at a grid angle (MomentKernel.kinks_deg) would fall
+    inside the window, so that M is smooth over it; shifted inside the grid at its ends. A
+    kink inside the interval itself or off the grid leaves the estimate poor and the bracket
+    falls back (_warm_bracket). Cached (read-only) on the grid and the kinks: every trim of one
+    aerodynamic model shares them."""
+    alphas = ALPHA_GRID if grid == 0 else ALPHA_GRID_WIDE
+    k = np.arange(len(alphas) - 1)
+    j = k - 1
+    start = float(np.degrees(alphas[0]))
+    for kink in kinks_deg:
+        p = kink - start  # the kink's grid position (on a grid angle: an integer)
+        if abs(p - round(p)) < 1e-9:
+            p = round(p)
+            j = np.where(p <= k, np.maximum(j, p), np.where(p >= k + 1, np.minimum(j, p - 3), j))
+    j = np.clip(j, 0, len(alphas) - 4)
+    j.flags.writeable = False
+    return j
+
+
+def _warm_bracket(moment, grid, m, k, idx):
+    """Bracket [lo, hi] (M(lo) > 0 >= M(hi)) of each column's root, shrunk from the grid
+    interval k (grid 0: ALPHA_GRID, 1: ALPHA_GRID_WIDE; grid values ``m``) around a first
+    estimate x0: the inverse cubic (Lagrange in M) through four grid values around the
+    interval (:func:`_window_starts`), clipped to the interval (M not monotone there).
+
+    One kernel call on x0 + _WARM_STEPS (points clipped to the interval) gives the first
+    iterate x1, the inverse cubic through them, and the points from which
+    :func:`_shrunk_bracket` cuts the interval to the first sign change along
+    (lo, x0 - 2e-5, x0 - 1e-6, x0 + 1e-6, x0 + 2e-5, hi): 2e-6 rad wide when the estimate is
+    good, else a wider part of the grid interval that still brackets (a kink of M inside the
+    interval: the fin stall, where M is only piecewise smooth). Either way inside the same
+    grid interval, so the root found (of an interval holding one root) and the choice of root
+    are those of the plain 1-degree start.
+
+    Returns (the points, x1, the grid interval's 1 + f_lo - f_hi).
+    """
+    alphas = ALPHA_GRID if grid == 0 else ALPHA_GRID_WIDE
+    lo, hi = alphas[k], alphas[k + 1]
+    f_lo, f_hi = m[(k,) + idx], m[(k + 1,) + idx]
+    lead = (1,) * len(idx)
+    win = _window_starts(grid, moment.kinks_deg)[k] + _WINDOW.reshape((4,) + lead)
+    y = m[(win,) + idx]  # (4,) + shape
+    with np.errstate(divide="ignore", invalid="ignore"):
+        ratio = y[None] / (y[None] - y[:, None])  # [i, j] = -y_j / (y_i - y_j)
+        ratio[_DIAG4] = 1.0
+        x0 = np.sum(alphas[win] * np.prod(ratio, axis=1), axis=0)
+    # outside the interval: its nearer end; NaN (equal grid values): lo (fmax/fmin drop NaN).
+    # The bracket then narrows little and Illinois takes its usual iterations
+    x0 = np.fmin(np.fmax(x0, lo), hi)
+    inner = np.fmin(np.fmax(x0 + _WARM_STEPS.reshape((4,) + lead), lo), hi)
+    f_in = moment(inner)
+    # the inverse cubic through the four new points (all within 2e-5 rad of the root when the
+    # estimate was good: the root to rounding where M is smooth there), NaN where it is not
+    # finite or leaves the interval
+    with np.errstate(divide="ignore", invalid="ignore"):
+        ratio = f_in[None] / (f_in[None] - f_in[:, None])
+        ratio[_DIAG4] = 1.0
+        x1 = np.sum(inner * np.prod(ratio, axis=1), axis=0)
+    # not finite (points clipped together at an end of the interval: a root on or next to a
+    # grid angle, as a bluff hull's level trim at 0): the grid estimate x0
+    x1 = np.where(np.isnan(x1), x0, x1)
+    x1 = np.where((x1 >= lo) & (x1 <= hi), x1, np.nan)
+    return (lo, f_lo, hi, f_hi, inner, f_in), x1, (1.0 + f_lo) - f_hi
+
+
+def _shrunk_bracket(points, idx):
+    """The first sign change along (lo, inner points, hi) of :func:`_warm_bracket`'s points:
+    (lo, f_lo, hi, f_hi) of the narrowest bracket they give (M(lo) > 0 >= M(hi))."""
+    lo, f_lo, hi, f_hi, inner, f_in = points
+    pts = np.concatenate((lo[None], inner, hi[None]))
+    f = np.concatenate((f_lo[None], f_in, f_hi[None]))
+    pos = f > 0.0
+    i = np.argmax(pos[:-1] & ~pos[1:], axis=0)  # the first sign change (f_lo > 0 >= f_hi)
+    lo_w, hi_w, f_lo_w, f_hi_w = (a[(r,) + idx] for a in (pts, f) for r in (i, i + 1))
+    return lo_w, f_lo_w, hi_w, f_hi_w
+
+
 def trim_equilibrium(moment: MomentKernel, iterations: int = 40) -> Equilibrium:
     """:func:`equilibrium` on a built :class:`MomentKernel` (the algorithm, grids and
     tolerance are documented there), for callers that reuse the kernel (the weathervane slope
@@ -389,36 +550,57 @@ def trim_equilibrium(moment: MomentKernel, iterations: int = 40) -> Equilibrium:
     shape = moment.shape
     m_first = None
     for alphas in (ALPHA_GRID, ALPHA_GRID_WIDE):
-        grid = alphas.reshape((-1,) + (1,) * len(shape))
         if m_first is None:
-            m = moment(grid)  # the kernel's coefficients have the batch shape: (grid,) + shape
+            m = moment.on_grid(0)  # (grid,) + shape
             m_first = m
         else:  # the wide grid holds the first one: only its other angles are new
-            m_out = moment(grid[_WIDE_OUTSIDE])
+            m_out = moment.on_grid(1)
             m = np.concatenate([m_out[:_WIDE_BELOW], m_first, m_out[_WIDE_BELOW:]])
         down = (m[:-1] > 0.0) & (m[1:] <= 0.0)
-        mid = _ABS_MID[0 if alphas is ALPHA_GRID else 1].reshape((-1,) + (1,) * len(shape))
-        score = np.where(down, mid, np.inf)
-        k = np.argmin(score, axis=0)
-        found = down.any(axis=0)
+        order = _NEAREST_FIRST[0 if alphas is ALPHA_GRID else 1]
+        nearest = down[order]
+        k = order[np.argmax(nearest, axis=0)]  # the crossing nearest 0 (0 where none)
+        found = nearest.any(axis=0)
         if np.all(found):
             break
-    idx = np.indices(shape)
-    lo = alphas[k]
-    hi = alphas[k + 1]
-    f_lo = m[(k,) + tuple(idx)]
-    f_hi = m[(k + 1,) + tuple(idx)]
+    idx = tuple(np.indices(shape))
+    grid = 0 if alphas is ALPHA_GRID else 1
+    points, first, spread = _warm_bracket(moment, grid, m, k, idx)
     # Illinois iterations on all brackets at once; x is the running root estimate. ``was_pos``
     # / ``was_neg``: the sign of the previous iterate's moment (neither before the first)
     was_pos = was_neg = np.zeros(shape, bool)
     half, one, eps = np.array(0.5), np.array(1.0), np.array(1e-12)
+    # |M| small on the scale of the grid interval's moment change (1 + |f_lo| + |f_hi| there,
+    # = 1 + f_lo - f_hi as f_lo > 0 >= f_hi): |fx| <= 1e-12 (1 + |M'| 1 deg) puts x within
+    # 1e-12/|M'| + 2e-14 rad of the root. The scale is the 1-degree bracket's, not the warm
+    # one's (2e-6 rad wide: it would ask |M| below its rounding, ~1e-11 N m at 5e4 N m of
+    # buoyancy moment, and iterate until hi - lo < 1e-12)
+    tol = eps * spread
     unfound = ~found
-    x = half * (lo + hi)
-    for _ in range(iterations):
+    # the warm start's root, where every column with a bracket has one and it is tiny: done
+    # (columns without one take their grid angle below)
+    done = False
+    if np.all(~np.isnan(first) | unfound):
+        x = first
+        fx = moment(x)
+        done = bool(np.all((np.abs(fx) <= tol) | unfound))
+        if done:  # one secant step from the nearest warm point: the root to rounding
+            inner, f_in = points[4], points[5]
+            j = np.argmin(np.abs(inner - x), axis=0)
+            xa, fa = inner[(j,) + idx], f_in[(j,) + idx]
+            df = fx - fa
+            x = np.where(df != 0.0, x - fx * (x - xa) / np.where(df != 0.0, df, 1.0), x)
+    if not done:
+        lo, f_lo, hi, f_hi = _shrunk_bracket(points, idx)
+        first = np.where((first >= lo) & (first <= hi), first, np.nan)
+        x = half * (lo + hi)
+    for it in range(0 if done else iterations):
         df = f_hi - f_lo
         same = df == 0.0
         secant = (lo * f_hi - hi * f_lo) / np.where(same, one, df)
         x = np.where(same, half * (lo + hi), secant) if same.any() else secant
+        if it == 0:  # the warm start's interpolated root, where it has one
+            x = np.where(np.isnan(first), x, first)
         fx = moment(x)
         pos = fx > 0.0
         lo = np.where(pos, x, lo)
@@ -426,9 +608,8 @@ def trim_equilibrium(moment: MomentKernel, iterations: int = 40) -> Equilibrium:
         hi = np.where(pos, hi, x)
         f_hi = np.where(pos, np.where(was_pos, half * f_hi, f_hi), fx)
         was_pos, was_neg = pos, ~pos
-        # in a bracket lo < hi, f_lo > 0 >= f_hi, so |hi - lo| = hi - lo and |f_lo| + |f_hi| =
-        # f_lo - f_hi (columns without one stop on ``unfound``)
-        tiny = np.abs(fx) <= eps * ((one + f_lo) - f_hi)
+        # in a bracket lo < hi, so |hi - lo| = hi - lo (columns without one stop on ``unfound``)
+        tiny = np.abs(fx) <= tol
         # columns without a stable root take the least-|moment| grid angle below: they have no
         # bracket to converge, so they must not keep the others iterating to the limit
         if np.all((hi - lo < eps) | tiny | unfound):

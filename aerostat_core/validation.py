@@ -170,7 +170,17 @@ def check_number(
     aerostat_core.validation.InputError: Requirement.payload_mass = -1 kg is outside the valid range (0, 500] kg
     """
     # the message parts are built only on failure: valid inputs (the common case, checked
-    # for every field of every dataclass built) pay for the comparisons alone
+    # for every field of every dataclass built) pay for the comparisons alone; a valid float
+    # (nothing to convert or store back) returns before any of them
+    if (
+        type(value) is float
+        and (lo < value if lo_open else lo <= value)
+        and (value < hi if hi_open else value <= hi)
+        and math.isfinite(value)
+        and not (lo_open and lo == 0 and hi > 0 and value < POSITIVE_FLOOR * hi)
+    ):
+        return value
+
     def fail(shown: str, reason: str, too_small: bool = False) -> InputError:
         reason += reason_suffix
         return InputError(

@@ -67,6 +67,41 @@ def marches(fn) -> int:
     return count[0]
 
 
+def kernel_calls_per_trim(fn) -> float:
+    """Moment-kernel evaluations (grid products and calls) per trim while ``fn()`` runs, the
+    weathervane slopes excluded (a figure the shared machine's load cannot move)."""
+    from aerostat_core import performance, statics
+
+    counts = {"trims": 0, "calls": 0}
+    plain_trim, plain_call, plain_grid = (
+        statics.trim_equilibrium, statics.MomentKernel.__call__, statics.MomentKernel.on_grid)
+    active = [False]
+
+    def trim(*args, **kwargs):
+        counts["trims"] += 1
+        active[0] = True
+        try:
+            return plain_trim(*args, **kwargs)
+        finally:
+            active[0] = False
+
+    def counted(plain):
+        def call(self, *args):
+            counts["calls"] += active[0]
+            return plain(self, *args)
+        return call
+
+    performance.trim_equilibrium = trim
+    statics.MomentKernel.__call__ = counted(plain_call)
+    statics.MomentKernel.on_grid = counted(plain_grid)
+    try:
+        fn()
+    finally:
+        performance.trim_equilibrium = plain_trim
+        statics.MomentKernel.__call__, statics.MomentKernel.on_grid = plain_call, plain_grid
+    return counts["calls"] / max(counts["trims"], 1)
+
+
 def main() -> None:
     req, cfg = thesis_baseline()
     sized_cfg = cfg.with_design_variables(volume=None)
@@ -90,6 +125,8 @@ def main() -> None:
     print(f"  tether marches per design: uniform wind {marches(lambda: design(practice))}, "
           f"power-law wind {marches(lambda: design(practice, sheared))}, "
           f"log wind {marches(lambda: design(practice, log_wind))} (load-independent)")
+    print(f"  moment-kernel evaluations per trim: {kernel_calls_per_trim(lambda: design(practice)):.1f}"
+          " (grid, warm start, check, slope; load-independent)")
     for label, fn in (("design, given volume", lambda: design(req, cfg)),
                       ("design, sized (thesis rules)", lambda: design(req, sized_cfg)),
                       ("design(), sized (practice default)", lambda: design(practice)),

@@ -8,16 +8,21 @@ the Heun march on separate arrays with :func:`aerostat_core.tether._line_load`
 :func:`aerostat_core.statics.moment_about_confluence` / ``aerodynamic_moment``.
 """
 
+import dataclasses
 from dataclasses import replace
 
 import numpy as np
 import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
+from scipy.optimize import brentq
 
 from aerostat_core import HullSpec, TetherSpec, design, thesis_baseline
+from aerostat_core.airframe import build_airframe
 from aerostat_core.shapes import SHAPE_INFO
 from aerostat_core.statics import (
+    ALPHA_GRID,
+    ALPHA_GRID_WIDE,
     MomentKernel,
     aerodynamic_moment,
     axial_drag_coefficient,
@@ -110,6 +115,85 @@ def test_moment_kernel_is_the_moment_of_the_loads(shape, alpha_deg, speed, given
     assert np.max(np.abs(about_cv(alpha) - ref)) <= 1e-14 * (np.max(np.abs(ref)) + scale)
 
 
+@pytest.mark.parametrize("shape", list(SHAPE_INFO))
+@settings(max_examples=8, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(
+    speeds=st.lists(st.floats(0.0, 60.0), min_size=1, max_size=4),
+    stall=st.floats(5.0, 40.0),
+    static=st.booleans(),
+)
+def test_moment_on_the_grids_is_the_kernel(shape, speeds, stall, static):
+    """The grid form (a cached basis of the grid angles times the coefficients) gives the
+    kernel's moment on ALPHA_GRID and on the wide grid's outer angles, to rounding."""
+    req, cfg = thesis_baseline()
+    aero = replace(cfg.aero, fin_stall_angle_deg=stall)
+    cfg = replace(cfg, hull=HullSpec(shape=shape, volume=170.0))
+    af = _airframe(req, cfg)
+    speed = np.asarray(speeds)
+    kernel = MomentKernel(af, aero, speed, axial_drag_coefficient(af, aero, speed))
+    if not static:
+        kernel = kernel.about(af.hull.xi_cb)
+    q = 0.5 * af.air_density * speed**2
+    scale = np.max((af.buoyancy + q * af.hull.reference_area) * af.hull.length)
+    outer = ALPHA_GRID_WIDE[(ALPHA_GRID_WIDE < ALPHA_GRID[0]) | (ALPHA_GRID_WIDE > ALPHA_GRID[-1])]
+    for grid, angles in ((0, ALPHA_GRID), (1, outer)):
+        ref = kernel(angles[:, None])
+        got = kernel.on_grid(grid)
+        assert got.shape == ref.shape == (len(angles), len(speed))
+        assert np.max(np.abs(got - ref)) <= 1e-14 * (np.max(np.abs(ref)) + scale)
+
+
+def _assert_same_fields(got, ref, path, rtol):
+    """Every array field of two dataclasses (recursing into dataclasses, dicts and tuples)
+    equal to ``rtol`` of the field's largest magnitude."""
+    if dataclasses.is_dataclass(ref):
+        for f in dataclasses.fields(ref):
+            _assert_same_fields(
+                getattr(got, f.name), getattr(ref, f.name), f"{path}.{f.name}", rtol
+            )
+    elif isinstance(ref, dict):
+        assert got.keys() == ref.keys()
+        for k in ref:
+            _assert_same_fields(got[k], ref[k], f"{path}[{k}]", rtol)
+    elif isinstance(ref, tuple):
+        assert len(got) == len(ref)
+        for i, (g, r) in enumerate(zip(got, ref)):
+            _assert_same_fields(g, r, f"{path}[{i}]", rtol)
+    elif isinstance(ref, (str, int, type(None))) and not isinstance(ref, bool):
+        assert got == ref, path
+    else:
+        g, r = np.asarray(got, float), np.asarray(ref, float)
+        assert g.shape == r.shape, path
+        np.testing.assert_allclose(
+            g, r, rtol=0, atol=rtol * (np.max(np.abs(r)) + 1e-300), err_msg=path
+        )
+
+
+@settings(max_examples=30, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(
+    shape=st.sampled_from(list(SHAPE_INFO)),
+    volumes=st.lists(st.floats(1.0, 5000.0), min_size=1, max_size=4),
+    fraction=st.floats(0.0, 1.0),
+    area_change=st.floats(-50.0, 100.0),
+    position=st.floats(0.55, 0.8),
+    cutoff=st.sampled_from(["fin", "tail"]),
+)
+def test_scaled_airframe_is_the_plain_one(shape, volumes, fraction, area_change, position, cutoff):
+    """A scalar fineness ratio and fin variables take the unit-volume geometry scaled by
+    V^(1/3) (cached quadratures); the same airframe as the direct computation, which a
+    batch of per-design fineness ratios runs, to rounding."""
+    req, cfg = thesis_baseline()
+    lo, hi = SHAPE_INFO[shape].fineness_range
+    f = lo + fraction * (hi - lo)
+    cfg = replace(
+        cfg, hull=HullSpec(shape=shape, fineness_ratio=f), aero=replace(cfg.aero, cutoff=cutoff)
+    )
+    v = np.asarray(volumes)
+    scaled = build_airframe(req, cfg, v, f, area_change, position)
+    plain = build_airframe(req, cfg, v, np.full(v.shape, f), area_change, position)
+    _assert_same_fields(scaled, plain, "airframe", 1e-12)
+
+
 _AIRFRAMES = {}
 
 
@@ -146,6 +230,54 @@ def test_trim_is_a_root_of_the_plain_moment(shape):
         - aerodynamic_moment(af, cfg.aero, eq.alpha - d, speed, af.hull.xi_cb)
     ) / (2 * d)
     np.testing.assert_allclose(wv, ref, rtol=1e-9, atol=1e-6)
+
+
+def _plain_trim(af, aero, speed):
+    """Reference trim of one column: the falling zero of the plain moment nearest alpha = 0
+    on the 1-degree grid (then the wide one), refined by Brent's method to 1e-15 rad."""
+
+    def m(a):
+        return float(moment_about_confluence(af, aero, a, speed))
+
+    for grid in (ALPHA_GRID, ALPHA_GRID_WIDE):
+        g = np.array([m(a) for a in grid])
+        down = np.flatnonzero((g[:-1] > 0.0) & (g[1:] <= 0.0))
+        if down.size:
+            k = down[np.argmin(np.abs(grid[down] + grid[down + 1]))]
+            if g[k + 1] == 0.0:
+                return grid[k + 1]
+            return brentq(m, grid[k], grid[k + 1], xtol=1e-15, rtol=1e-15)
+    return None
+
+
+@settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(
+    shape=st.sampled_from(["npl", "gnvr", "wang", "zhiyuan-1", "lotte", "sphere", "helikite"]),
+    volume=st.floats(20.0, 2000.0),
+    stall=st.floats(5.0, 40.0) | st.sampled_from([5.0, 8.0, 12.0, 20.0]),
+    xi_offset=st.floats(-0.2, 0.2),
+    speeds=st.lists(st.floats(0.0, 45.0), min_size=1, max_size=5),
+)
+def test_warm_started_trim_is_the_plain_root(shape, volume, stall, xi_offset, speeds):
+    """The trim (grid bracket, inverse-cubic warm start, Illinois on the shrunk bracket) is
+    the root a plain Brent solve finds in the same grid interval: the same root (within
+    the 1e-12 rad tolerance) and the same choice of root, across the fin stall's kink (stall
+    angles on and off the grid) and for columns whose trims need the wide grid."""
+    req, cfg = thesis_baseline()
+    cfg = replace(
+        cfg,
+        hull=HullSpec(shape=shape, volume=volume),
+        aero=replace(cfg.aero, fin_stall_angle_deg=stall),
+        confluence=replace(cfg.confluence, xi_offset=xi_offset),
+    )
+    af = build_airframe(req, cfg, volume)
+    speed = np.asarray(speeds)
+    eq = equilibrium(af, cfg.aero, speed)
+    for i, u in enumerate(speed):
+        ref = _plain_trim(af, cfg.aero, u)
+        assert bool(eq.found[i]) == (ref is not None)
+        if ref is not None:
+            assert abs(eq.alpha[i] - ref) <= 1e-11
 
 
 def test_a_wide_batch_marches_as_its_columns():
