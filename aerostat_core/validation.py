@@ -123,6 +123,17 @@ def _store_back(field: str, given: object, converted: object) -> None:
         object.__setattr__(obj, field, converted)
 
 
+def _valid(v: float, lo: float, hi: float, lo_open: bool, hi_open: bool) -> bool:
+    """The one definition of a valid number for :func:`check_number`: finite, inside the range
+    (open or closed ends), and for a range open at 0 not below ``POSITIVE_FLOOR`` x ``hi``."""
+    return (
+        math.isfinite(v)
+        and (lo < v if lo_open else lo <= v)
+        and (v < hi if hi_open else v <= hi)
+        and not (lo_open and lo == 0 and hi > 0 and v < POSITIVE_FLOOR * hi)
+    )
+
+
 def check_number(
     owner: str,
     field: str,
@@ -172,13 +183,7 @@ def check_number(
     # the message parts are built only on failure: valid inputs (the common case, checked
     # for every field of every dataclass built) pay for the comparisons alone; a valid float
     # (nothing to convert or store back) returns before any of them
-    if (
-        type(value) is float
-        and (lo < value if lo_open else lo <= value)
-        and (value < hi if hi_open else value <= hi)
-        and math.isfinite(value)
-        and not (lo_open and lo == 0 and hi > 0 and value < POSITIVE_FLOOR * hi)
-    ):
+    if type(value) is float and _valid(value, lo, hi, lo_open, hi_open):
         return value
 
     def fail(shown: str, reason: str, too_small: bool = False) -> InputError:
@@ -201,21 +206,22 @@ def check_number(
         v = float(value)
     except OverflowError:  # an integer too large for a float
         v = math.inf
+    if _valid(v, lo, hi, lo_open, hi_open):
+        _store_back(field, value, v)
+        return v
+    # invalid: say why
     if not math.isfinite(v):
         raise fail(shown_value(value), f"is not finite; valid range {rng()}")
     below = v <= lo if lo_open else v < lo
     above = v >= hi if hi_open else v > hi
     if below or above:
         raise fail(f"{v:g}{u()}", f"is outside the valid range {rng()}")
-    if lo_open and lo == 0 and hi > 0 and v < POSITIVE_FLOOR * hi:
-        raise fail(
-            f"{v:g}{u()}",
-            f"is too small to compute with (at least {POSITIVE_FLOOR * hi:g}{u()}); "
-            f"valid range {rng()}",
-            too_small=True,
-        )
-    _store_back(field, value, v)
-    return v
+    raise fail(  # in range but below the floor of an open-at-zero range
+        f"{v:g}{u()}",
+        f"is too small to compute with (at least {POSITIVE_FLOOR * hi:g}{u()}); "
+        f"valid range {rng()}",
+        too_small=True,
+    )
 
 
 def check_choice(
