@@ -196,23 +196,23 @@ class AeroModel:
     Parameters
     ----------
     hull_efficiency : float
-        eta_k on the inviscid (potential-flow) hull term [-], valid [0, 2].
+        eta_k on the inviscid (potential-flow) hull term [-], valid {range:AeroModel.hull_efficiency}.
     hull_crossflow_drag : float
-        (C_dc)_h, viscous cross-flow drag coefficient [-], valid [0, 2].
+        (C_dc)_h, viscous cross-flow drag coefficient [-], valid {range:AeroModel.hull_crossflow_drag}.
     hull_axial_drag : float or None
-        Zero-alpha hull drag on V^(2/3) [-], valid [0, 1]; ``None`` uses Hoerner's C_DV(f, Re).
+        Zero-alpha hull drag on V^(2/3) [-], valid {range:AeroModel.hull_axial_drag}; ``None`` uses Hoerner's C_DV(f, Re).
     cutoff : {"fin", "tail"}
         Station l_h where the potential-flow term is cut off: the fin root leading edge (thesis
         symbol list "l_h: distance of fin from nose") or the tail, where the NPL profile tapers
         fastest (max -dA/dxi); "tail" gives I1 = 0 and the full Munk moment.
     fin_efficiency : float
-        eta_f on the 3-D fin lift slope [-], valid [0, 1.5].
+        eta_f on the 3-D fin lift slope [-], valid {range:AeroModel.fin_efficiency}.
     section_lift_slope : float
-        Fin section lift slope C_l_alpha [1/rad], valid [1, 7].
+        Fin section lift slope C_l_alpha [1/rad], valid {range:AeroModel.section_lift_slope}.
     fin_zero_lift_drag : float
-        C_D0 of the fins on planform area [-], valid [0, 0.1].
+        C_D0 of the fins on planform area [-], valid {range:AeroModel.fin_zero_lift_drag}.
     fin_stall_angle_deg : float
-        Fin stall angle [deg], valid [5, 40]; the fin lift is held flat beyond it.
+        Fin stall angle [deg], valid {range:AeroModel.fin_stall_angle_deg}; the fin lift is held flat beyond it.
     """
 
     hull_efficiency: float = number(
