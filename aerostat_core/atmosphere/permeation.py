@@ -81,7 +81,7 @@ def purity_after(purity0, days, tau):
     Parameters
     ----------
     purity0 : array_like
-        Purity at the start k_0 [-], valid (0, 1].
+        Purity at the start k_0 [-], valid {range:LiftingGas.purity}.
     days : array_like
         Time since the last top-up t [day], >= 0.
     tau : array_like
@@ -125,7 +125,7 @@ def lift_loss_after(volume, g, rho_air, rho_helium, purity0, days, tau):
     rho_air, rho_helium : array_like
         Density of air and of pure helium at hull conditions [kg/m3].
     purity0 : array_like
-        Purity at the start k_0 [-], valid (0, 1].
+        Purity at the start k_0 [-], valid {range:LiftingGas.purity}.
     days : array_like
         Time since the last top-up [day], >= 0.
     tau : array_like
@@ -181,7 +181,7 @@ def days_to_top_up(excess_lift, volume, g, rho_air, rho_helium, purity0, tau):
     rho_air, rho_helium : array_like
         Density of air and of pure helium at hull conditions [kg/m3].
     purity0 : array_like
-        Purity now [-], valid (0, 1].
+        Purity now [-], valid {range:LiftingGas.purity}.
     tau : array_like
         Time constant [day] (:func:`permeation_time_constant`).
 
@@ -227,7 +227,7 @@ def helium_top_up(area, permeability, purity, hull_pressure, days):
     permeability : float
         Helium permeability kappa [L/(m2 day atm)], >= 0.
     purity : array_like
-        Purity held by the top-ups k [-], valid (0, 1].
+        Purity held by the top-ups k [-], valid {range:LiftingGas.purity}.
     hull_pressure : array_like
         Absolute gas pressure in the hull [Pa].
     days : float
