@@ -366,8 +366,8 @@ def spec_owners(modules: Iterable[ModuleType]) -> dict[str, type]:
 
 def fill_range_docs(modules: Iterable[ModuleType]) -> int:
     """Put the registry's ranges into the docstrings of ``modules``: each
-    ``{range:<Owner>.<field>}`` in the docstring of a module-level function or class defined there is replaced by
-    :func:`range_doc`, so a range is typed once, in the field's spec. ``Owner`` is an input
+    ``{range:<Owner>.<field>}`` in the docstring of a module-level function or class defined
+    there is replaced by :func:`range_doc`, so a range is typed once, in the field's spec. ``Owner`` is an input
     dataclass of any of ``modules`` (the library's face passes every loaded core module, so a
     physics function may name an input class of a package above it without importing it).
 

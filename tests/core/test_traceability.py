@@ -234,7 +234,7 @@ def test_input_classes_take_their_ranges_from_the_registry(package):
             if spec.lo is None or spec.hi is None or spec.kind == "part" or field not in entries:
                 continue
             text = " ".join(entries[field])
-            if "{range:%s.%s}" % (name, field) not in text:
+            if f"{{range:{name}.{field}}}" not in text:
                 typed.append(f"{qual}.{field}: {text.strip()[:80]}")
     assert not typed, "typed instead of {range:...}:\n" + "\n".join(typed)
 
