@@ -27,7 +27,9 @@ def hull_dimensions(volume, fineness_ratio, nose_fraction=0.432):
 
         V = \frac23 \pi b^2 (a_1 + a_2) = \frac{\pi}{6} d^2 l, \quad f = \frac{l}{d}
         \;\Rightarrow\; d = \left(\frac{6V}{\pi f}\right)^{1/3}, \quad l = f d, \quad
-        a_1 = \frac{a_1}{l}\, l, \quad a_2 = l - a_1, \quad b = \frac d2
+        a_1 = \nu\, l, \quad a_2 = l - a_1, \quad b = \frac d2
+
+    with nu = ``nose_fraction``.
 
     Parameters
     ----------
