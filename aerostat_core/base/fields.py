@@ -340,9 +340,9 @@ def range_doc(owner: type, name: str) -> str:
     """The text that replaces ``{range:<Owner>.<name>}`` in a docstring: the field's SI range and
     where it comes from.
 
-    >>> from aerostat_core.model.inputs import Requirement
-    >>> range_doc(Requirement, "payload_mass")
-    '(0, 500] kg (registry: Requirement.payload_mass)'
+    >>> from aerostat_core.atmosphere.gas import LiftingGas
+    >>> range_doc(LiftingGas, "purity")
+    '(0, 1] (registry: LiftingGas.purity)'
     """
     spec = field_spec(owner, name)
     text = spec.si_range_text()

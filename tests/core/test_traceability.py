@@ -291,9 +291,10 @@ def test_fill_range_docs_fills_and_refuses():
     from aerostat_core.atmosphere import gas
     from aerostat_core.geometry import shapes
 
+    vol = fields.field_spec(shapes.HullSpec, "volume")
     assert fields.fill_range_docs([mod, gas, shapes]) == 2
     assert f.__doc__ == ("purity : valid (0, 1] (registry: LiftingGas.purity); "
-                         "volume : [1, 100000] m3 (registry: HullSpec.volume).")
+                         f"volume : [{vol.lo:g}, {vol.hi:g}] m3 (registry: HullSpec.volume).")
     f.__doc__ = "{range:NoSuchClass.x}"
     with pytest.raises(ValueError, match="unknown input class"):
         fields.fill_range_docs([mod])
@@ -307,7 +308,12 @@ def test_fill_range_docs_fills_and_refuses():
 
 def test_filled_text_follows_the_spec():
     spec = fields.field_spec(aerostat_core.Requirement, "payload_mass")
-    assert spec.si_range_text() == "(0, 500] kg"
-    assert fields.range_doc(aerostat_core.Requirement, "payload_mass").startswith(
-        f"({spec.lo:g}, {spec.hi:g}] {spec.unit}")
+    assert spec.lo_open and not spec.hi_open
+    assert spec.si_range_text() == f"({spec.lo:g}, {spec.hi:g}] kg"
+    assert fields.range_doc(aerostat_core.Requirement, "payload_mass") == (
+        f"({spec.lo:g}, {spec.hi:g}] kg (registry: Requirement.payload_mass)")
+    # a fraction shown in % keeps its SI range in a docstring
+    purity = fields.field_spec(aerostat_core.LiftingGas, "purity")
+    assert purity.scale == 100.0 and purity.si_range_text() == "(0, 1]"
+    assert purity.range_text().startswith("(0, 100]")
     assert dataclasses.is_dataclass(aerostat_core.Requirement)
