@@ -46,6 +46,8 @@ def required_pressure(q, rho_air, rho_gas, g, diameter, factor):
 
     Examples
     --------
+    1.2 x 100 Pa + (1.2 - 0.2) x 10 x 4 = 160 Pa (by hand):
+
     >>> round(float(required_pressure(100.0, 1.2, 0.2, 10.0, 4.0, 1.2)), 1)
     160.0
     """
@@ -85,6 +87,8 @@ def membrane_loads(pressure, radius, moment=0.0):
 
     Examples
     --------
+    200 Pa in a 2 m radius: p r = 400 N/m, p r/2 = 200 N/m (by hand):
+
     >>> [float(x) for x in membrane_loads(200.0, 2.0)]
     [400.0, 200.0]
     """

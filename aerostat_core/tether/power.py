@@ -55,6 +55,8 @@ def battery_mass(power, hours, energy_density, depth_of_discharge=1.0):
 
     Examples
     --------
+    100 W for 24 h at 150 Wh/kg and 80 % depth: 2400/(150 x 0.8) = 20 kg (by hand):
+
     >>> float(battery_mass(100.0, 24.0, 150.0, 0.8))
     20.0
     """
@@ -137,6 +139,9 @@ def size_conductors(
 
     Examples
     --------
+    1 kW over 300 m at 400 V with 10 % loss: P_s = 1111.1 W, I = 2.778 A,
+    A = 2 x 1.7241e-8 x 300 x 1111.1/(0.1 x 400^2) = 0.718 mm2 (by hand):
+
     >>> k = size_conductors(1000.0, 300.0, 400.0, 0.1, 5e6, 0.25e-3)
     >>> round(k.area * 1e6, 3), round(k.current, 3)
     (0.718, 2.778)
