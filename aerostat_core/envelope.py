@@ -24,6 +24,8 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
+from aerostat_core import budget
+
 from .airframe import build_airframe
 from .constraints import CONSTRAINTS, static_quantities, wind_quantities
 from .design import Design
@@ -282,6 +284,8 @@ def operating_envelope(
             f"envelope has {n} points, more than the {MAX_POINTS} allowed in one call;"
             " use fewer wind, altitude or payload values"
         )
+    if client is None:  # in this process: the compute budget (a cluster brings its own)
+        budget.check_envelope(d.configuration.tether_segments, n)
     pairs = [(float(h), float(p)) for p in payload for h in altitude]
     blocks = [pairs[i : i + chunk] for i in range(0, len(pairs), chunk)]
     results = map_blocks(

@@ -282,8 +282,15 @@ _BIDI_CONTROLS = frozenset("\u202a\u202b\u202c\u202d\u202e\u2066\u2067\u2068\u20
 
 def check_name(owner: str, field: str, value: object) -> str:
     """Return ``value`` as a stripped string of 1-100 characters, else raise
-    :class:`InputError`. Control characters (Unicode category Cc), lone surrogates (which
-    cannot be encoded as UTF-8) and bidirectional overrides are refused.
+    :class:`InputError`. Only a ``str`` is a name: a number, list or dict (a file's
+    ``"name": {"a": 1}``) is refused, never turned into text. Control characters (Unicode
+    category Cc), lone surrogates (which cannot be encoded as UTF-8) and bidirectional overrides
+    are refused.
+
+    >>> check_name("case", "name", {"a": 1})
+    Traceback (most recent call last):
+    ...
+    aerostat_core.validation.InputError: case.name = {'a': 1} is not text (a dict)
 
     >>> check_name("Fabric", "name", "x" * 101)
     Traceback (most recent call last):
@@ -294,12 +301,18 @@ def check_name(owner: str, field: str, value: object) -> str:
     ...
     aerostat_core.validation.InputError: case.name contains a lone surrogate (U+D83D)
     """
-    text = str(value).strip()
-
     def fail(reason: str) -> InputError:
         return InputError(
             f"{owner}.{field} {reason}", owner=owner, field=field, value=value, reason=reason
         )
+
+    if not isinstance(value, str):
+        reason = f"is not text (a {type(value).__name__})"
+        raise InputError(
+            f"{owner}.{field} = {shown_value(value)} {reason}",
+            owner=owner, field=field, value=value, reason=reason,
+        )
+    text = value.strip()
 
     if not text:
         raise fail("must not be empty")
