@@ -174,6 +174,8 @@ def main(argv: list[str] | None = None) -> int:
             stream.reconfigure(errors="backslashreplace")
     try:
         return _main(argv)
+    except SystemExit as exc:  # argparse: --help (0) or a bad option (2, its line printed)
+        return exc.code if isinstance(exc.code, int) else 0 if exc.code is None else 2
     except BrokenPipeError:
         # the reader went away: point stdout at devnull so the interpreter's flush is silent
         devnull = os.open(os.devnull, os.O_WRONLY)
