@@ -23,7 +23,7 @@ from dataclasses import dataclass, replace
 from typing import Any
 
 from aerostat_core.fields import FieldSpec, PathSpec, all_specs, paths_for
-from aerostat_core.validation import InputError, _range_text
+from aerostat_core.validation import InputError, range_text
 
 #: Longest number text read from the command line [characters].
 MAX_NUMBER_CHARS = 40
@@ -146,7 +146,7 @@ def help_text(p: PathSpec) -> str:
     elif s.kind == "text":
         text = f"{p.label} (a name; a catalogue name also sets its properties)"
     else:
-        rng = _range_text(s.lo, s.hi, "", s.lo_open, s.hi_open) if s.lo is not None else ""
+        rng = range_text(s.lo, s.hi, "", s.lo_open, s.hi_open) if s.lo is not None else ""
         text = f"{p.label} [{_si_unit(s)}], valid {rng}"
         if s.hi_field:
             text += f", at most the {s.hi_field.replace('_', ' ')}"

@@ -108,9 +108,19 @@ class InputError(ValueError):
         return _range_text(self.lo, self.hi, self.unit, self.lo_open, self.hi_open)
 
 
-def _range_text(lo: float, hi: float, unit: str, lo_open: bool, hi_open: bool) -> str:
+def range_text(
+    lo: float, hi: float, unit: str = "", lo_open: bool = False, hi_open: bool = False
+) -> str:
+    """A valid range as the messages write it.
+
+    >>> range_text(0, 500, "kg", lo_open=True)
+    '(0, 500] kg'
+    """
     u = f" {unit}" if unit else ""
     return f"{'(' if lo_open else '['}{lo:g}, {hi:g}{')' if hi_open else ']'}{u}"
+
+
+_range_text = range_text
 
 
 def _store_back(field: str, given: object, converted: object) -> None:
