@@ -31,6 +31,7 @@ from .constraints import CONSTRAINTS, static_quantities, wind_quantities
 from .design import Design
 from .inputs import Configuration, Requirement
 from .performance import evaluate
+from .validation import InputError
 
 #: Constraints mapped by the envelope (the table without the survival-wind row), in table order.
 ENVELOPE_CONSTRAINTS = tuple(c for c in CONSTRAINTS if c.at != "survival")
@@ -222,15 +223,16 @@ class Envelope:
 
 def _grid(name: str, values, lo: float, hi: float, unit: str) -> np.ndarray:
     a = np.asarray(values, float).reshape(-1)
+    info = dict(owner="envelope", field=name, lo=lo, hi=hi, unit=unit)
     if a.size == 0:
-        raise ValueError(
-            f"envelope {name}: no values; give at least one in [{lo:g}, {hi:g}] {unit}"
-        )
+        reason = f"has no values; give at least one in [{lo:g}, {hi:g}] {unit}"
+        raise InputError(f"envelope {name}: no values; give at least one in [{lo:g}, {hi:g}] "
+                         f"{unit}", value=[], reason=reason, **info)
     if not np.all(np.isfinite(a)) or a.min() < lo or a.max() > hi:
         bad = a[~np.isfinite(a) | (a < lo) | (a > hi)][0]
-        raise ValueError(
-            f"envelope {name} = {bad:g} {unit} is outside the valid range [{lo:g}, {hi:g}] {unit}"
-        )
+        reason = f"is outside the valid range [{lo:g}, {hi:g}] {unit}"
+        raise InputError(f"envelope {name} = {bad:g} {unit} {reason}", value=float(bad),
+                         reason=reason, **info)
     return a
 
 
