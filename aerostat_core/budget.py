@@ -159,10 +159,11 @@ def check_optimization(problem: Any, solver: str, settings: Mapping[str, Any]) -
 #: app's largest size, 20 000 samples of the default 10 band speeds at 50 segments (about 2.5 s
 #: of CPU here; 8 700 samples/s measured with benchmarks/bench_envelope.py).
 MAX_MONTE_CARLO_UNITS = 20_000 * 12 * 50
-#: Largest operating envelope in this process [points x tether segments]: 50 000 points at 50
-#: segments (about 3.5 s of CPU here; 10 000 points in 0.7 s measured with
-#: benchmarks/bench_envelope.py); the app's default grid is 61 x 22 points.
-MAX_ENVELOPE_UNITS = 50_000 * 50
+#: Largest operating envelope in this process [points x tether segments]: the app's default grid
+#: (61 winds x 22 altitudes) at the registry's most tether segments (5000), so the app is never
+#: refused; 134 200 points at 50 segments (about 10 s of CPU here at most; 10 000 points at 50
+#: segments in 0.7 s measured with benchmarks/bench_envelope.py).
+MAX_ENVELOPE_UNITS = 61 * 22 * 5000
 
 
 def check_monte_carlo(segments: int, speeds: int, samples: int, what: str = "This Monte Carlo run") -> int:
@@ -198,6 +199,16 @@ def check_monte_carlo(segments: int, speeds: int, samples: int, what: str = "Thi
     )
 
 
+def max_monte_carlo_samples(segments: int, speeds: int) -> int:
+    """The most Monte Carlo samples one process may run for ``segments`` tether segments and
+    ``speeds`` band speeds (:data:`MAX_MONTE_CARLO_UNITS`).
+
+    >>> max_monte_carlo_samples(50, 10), max_monte_carlo_samples(2000, 10)
+    (20000, 500)
+    """
+    return MAX_MONTE_CARLO_UNITS // (int(segments) * (max(int(speeds), 1) + 2))
+
+
 def check_envelope(segments: int, points: int, what: str = "This envelope") -> int:
     """Return the cost of an operating envelope in this process, or raise :class:`BudgetError`
     over :data:`MAX_ENVELOPE_UNITS`, saying how many points fit.
@@ -207,7 +218,7 @@ def check_envelope(segments: int, points: int, what: str = "This envelope") -> i
     >>> check_envelope(50, 2001 * 501)
     Traceback (most recent call last):
     ...
-    aerostat_core.budget.BudgetError: This envelope needs 1,002,501 points x 50 tether segments = 50,125,050 units of work; the limit in one process is 2,500,000. Use at most 50000 points (fewer winds, altitudes or payloads), fewer tether segments, or map it over a Dask cluster.
+    aerostat_core.budget.BudgetError: This envelope needs 1,002,501 points x 50 tether segments = 50,125,050 units of work; the limit in one process is 6,710,000. Use at most 134200 points (fewer winds, altitudes or payloads), fewer tether segments, or map it over a Dask cluster.
     """
     cost = int(segments) * int(points)
     if cost <= MAX_ENVELOPE_UNITS:

@@ -157,8 +157,10 @@ def test_an_envelope_over_the_budget_is_refused_in_the_library_and_the_cli(capsy
     from aerostat_core.envelope import operating_envelope
 
     d = design(Requirement())
-    with pytest.raises(budget.BudgetError, match="at most 50000 points"):
-        operating_envelope(d, wind=[5.0] * 1001, altitude=[300.0] * 51)
+    with pytest.raises(budget.BudgetError, match="at most 134200 points"):
+        operating_envelope(d, wind=[5.0] * 2001, altitude=[300.0] * 101)
+    # the app's default grid at the registry's most tether segments fits
+    assert budget.check_envelope(5000, 61 * 22) <= budget.MAX_ENVELOPE_UNITS
     _fails(["envelope", "--winds", "2001", "--altitudes", "501"], capsys, "--winds")
 
 
