@@ -23,7 +23,7 @@ import numpy as np
 import pytest
 
 from aerostat_core import thesis_baseline
-from aerostat_core.io import design_to_json
+from aerostat_core.model.io import design_to_json
 
 ROOT = Path(__file__).resolve().parents[1]
 README = ROOT / "README.md"

@@ -3,7 +3,7 @@
     aerostat simulate --scenario {steady,varying,gust,turbulence}
         [--design design.json] [--duration S] [--seed N] [--csv out.csv] [--json]
 
-The default design is the thesis optimised design (:func:`aerostat_core.presets.thesis_optimized`)
+The default design is the thesis optimised design (:func:`aerostat_core.model.presets.thesis_optimized`)
 and each scenario has the thesis comparison's settings (:mod:`.thesis`). ``--json`` prints
 settling_time_s, pitch_range_deg [min, max], u_peak_mps, w_peak_mps, pitch_peak_deg (peak
 deviations from the mean over the stated window), tension_range_N [min, max], status, the
@@ -19,7 +19,7 @@ import os
 import sys
 from pathlib import Path
 
-from aerostat_core.cli_options import OptionError, decimal, whole
+from aerostat_core.base.cli_input import OptionError, decimal, whole
 
 #: Largest design file read [bytes].
 MAX_DESIGN_BYTES = 1_000_000
@@ -48,8 +48,8 @@ def add_parser(subparsers) -> argparse.ArgumentParser:
 
 
 def _read_design(path: Path) -> dict:
-    from aerostat_core.commands import read_capped
-    from aerostat_core.io import design_from_json, inputs_to_dict
+    from aerostat_core.base.cli_input import read_capped
+    from aerostat_core.model.io import design_from_json, inputs_to_dict
 
     text = read_capped(path, MAX_DESIGN_BYTES, "--design")
     try:
@@ -60,7 +60,7 @@ def _read_design(path: Path) -> dict:
 
 def run(args: argparse.Namespace) -> int:
     """Run the subcommand; returns the exit code (0 ok, 1 the run stopped early, 2 bad input)."""
-    from aerostat_core.commands import write_output
+    from aerostat_core.base.cli_input import write_output
 
     from .results import limit_flags
     from .scenarios import limits_of, request_header, run_request

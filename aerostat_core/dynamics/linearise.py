@@ -4,7 +4,7 @@ with a ``DeprecationWarning``."""
 
 from importlib import import_module
 
-from ..deprecation import deprecated_aliases
+from aerostat_core.base.deprecation import deprecated_aliases
 
 # the module (``from . import linearize`` is the function: the package keeps it over the module)
 linearize = import_module("aerostat_core.dynamics.linearize")

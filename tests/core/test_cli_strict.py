@@ -19,12 +19,14 @@ from pathlib import Path
 
 import pytest
 
-from aerostat_core import budget, design, thesis_baseline, thesis_optimized
-from aerostat_core.cli import _inputs, _parser, main
-from aerostat_core.cli_options import decimal, input_options, whole
-from aerostat_core.fields import all_specs
-from aerostat_core.io import cases_from_json, design_to_json
-from aerostat_core.validation import InputError, check_name
+from aerostat_core import design, thesis_baseline, thesis_optimized
+from aerostat_core.base.cli_input import decimal, whole
+from aerostat_core.base.validation import InputError, check_name
+from aerostat_core.cli.entry import _inputs, _parser, main
+from aerostat_core.cli.options import input_options
+from aerostat_core.model import budget
+from aerostat_core.model.input_paths import all_specs
+from aerostat_core.model.io import cases_from_json, design_to_json
 
 
 def _fails(argv, capsys, option):
@@ -154,7 +156,7 @@ def test_the_app_largest_monte_carlo_fits_the_budget():
 
 def test_an_envelope_over_the_budget_is_refused_in_the_library_and_the_cli(capsys):
     from aerostat_core import Requirement
-    from aerostat_core.envelope import operating_envelope
+    from aerostat_core.studies.envelope import operating_envelope
 
     d = design(Requirement())
     with pytest.raises(budget.BudgetError, match="at most 134200 points"):
@@ -170,7 +172,7 @@ def test_monte_carlo_n_and_seed_out_of_range_name_the_option(capsys):
 
 
 def test_an_unreachable_dask_scheduler_is_one_line(monkeypatch, capsys):
-    from aerostat_core import scale
+    from aerostat_core.studies import scale
 
     monkeypatch.setattr(scale, "CONNECT_TIMEOUT", 1.0)
     _fails(["design", "--monte-carlo", "100", "--dask", "tcp://127.0.0.1:9"], capsys, "--dask")
@@ -235,7 +237,7 @@ def test_every_design_input_can_be_given(o):
 def test_the_thesis_optimum_can_be_given_on_the_command_line(tmp_path, capsys):
     """Fin area change and position (the thesis' design variables) on the command line give the
     library's thesis optimised design."""
-    from aerostat_core.presets import THESIS_OPTIMUM
+    from aerostat_core.model.presets import THESIS_OPTIMUM
 
     req, cfg = thesis_baseline()
     f = tmp_path / "baseline.json"
@@ -257,7 +259,7 @@ def test_the_thesis_optimum_can_be_given_on_the_command_line(tmp_path, capsys):
 
 
 def test_a_catalogue_name_takes_its_properties():
-    from aerostat_core.materials import FABRICS
+    from aerostat_core.structures.materials import FABRICS
 
     name, fab = list(FABRICS.items())[-1]
     args = _parser().parse_args(["design", "--fin-fabric-name", name,
@@ -304,8 +306,8 @@ def test_the_power_tether_error_is_an_input_error_with_its_field():
     from dataclasses import replace
 
     from aerostat_core import Requirement
-    from aerostat_core.mission import effective_tether
-    from aerostat_core.presets import rules_configuration
+    from aerostat_core.model.mission import effective_tether
+    from aerostat_core.model.presets import rules_configuration
 
     req = Requirement(payload_power=1e5, power_via="tether")
     with pytest.raises(InputError) as err:
@@ -317,7 +319,7 @@ def test_the_power_tether_error_is_an_input_error_with_its_field():
 
 def test_no_traceback_for_an_unexpected_defect(monkeypatch, capsys):
     """A defect in the code (not in the input) is still one line, never a traceback."""
-    import aerostat_core.cli as cli
+    import aerostat_core.cli.entry as cli
 
     def broken(*a, **k):
         raise TypeError("boom")

@@ -8,9 +8,9 @@ import pytest
 from dask.distributed import Client, LocalCluster
 
 from aerostat_core import Requirement, design
-from aerostat_core.envelope import operating_envelope
-from aerostat_core.scale import map_blocks
-from aerostat_core.uncertainty import monte_carlo
+from aerostat_core.studies.envelope import operating_envelope
+from aerostat_core.studies.scale import map_blocks
+from aerostat_core.studies.uncertainty import monte_carlo
 
 
 @pytest.fixture(scope="module")
@@ -70,7 +70,7 @@ def test_a_cluster_that_loses_every_worker_gives_an_error_not_a_hang(monkeypatch
     below fails the test instead of hanging the suite)."""
     import threading
 
-    from aerostat_core import scale
+    from aerostat_core.studies import scale
 
     monkeypatch.setattr(scale, "LOST_AFTER", 2.0)
     monkeypatch.setattr(scale, "POLL", 0.2)
@@ -105,7 +105,7 @@ def test_a_cluster_that_loses_every_worker_gives_an_error_not_a_hang(monkeypatch
 
 def test_map_reduce_folds_as_blocks_arrive_with_a_bounded_window(client):
     """At most ``window`` blocks are in flight: the fold sees every block once, in any order."""
-    from aerostat_core.scale import map_reduce
+    from aerostat_core.studies.scale import map_reduce
 
     seen = []
     total = map_reduce(pow, [(2, k) for k in range(20)],
@@ -119,8 +119,8 @@ def test_the_cli_with_a_local_cluster_runs_past_the_in_process_budget(capsys):
     """--dask lifts the in-process Monte Carlo budget (the cluster supplies the compute)."""
     import json
 
-    from aerostat_core import budget
-    from aerostat_core.cli import main
+    from aerostat_core.cli.entry import main
+    from aerostat_core.model import budget
 
     n = budget.MAX_MONTE_CARLO_UNITS // (50 * 12) + 1
     assert main(["design", "--monte-carlo", str(n), "--json"]) == 2

@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 from aerostat_core import Requirement, design
-from aerostat_core.uncertainty import (
+from aerostat_core.studies.uncertainty import (
     DEFAULT_UNCERTAINTIES,
     UNCERTAINTY_NAMES,
     monte_carlo,
@@ -140,8 +140,8 @@ def test_histogram_reduction_agrees_with_the_exact_percentiles(d):
 
 def test_rule_set_comparison_keeps_the_mission_and_frees_the_limits():
     from aerostat_core import Requirement
-    from aerostat_core.inputs import RULE_FIELDS
-    from aerostat_core.uncertainty import mission_requirement
+    from aerostat_core.model.inputs import RULE_FIELDS
+    from aerostat_core.studies.uncertainty import mission_requirement
 
     req = Requirement(payload_mass=12, altitude=400, site_temperature=30.0, payload_power=50.0,
                       blow_by_limit=20.0).resolved()
@@ -170,7 +170,7 @@ def test_streamed_histograms_hold_memory_flat_in_n(d):
 
 
 def test_above_the_limit_the_blocks_are_streamed_by_default(d, monkeypatch):
-    import aerostat_core.uncertainty as u
+    import aerostat_core.studies.uncertainty as u
 
     monkeypatch.setattr(u, "KEEP_SAMPLES_MAX", 300)
     mc = monte_carlo(d, 400, seed=2, chunk=100, speeds=[8.0])
@@ -181,7 +181,7 @@ def test_above_the_limit_the_blocks_are_streamed_by_default(d, monkeypatch):
 
 
 def test_the_in_process_budget_holds_in_the_library(d):
-    from aerostat_core import budget
+    from aerostat_core.model import budget
 
     with pytest.raises(budget.BudgetError, match="samples"):
         monte_carlo(d, 10**6)
