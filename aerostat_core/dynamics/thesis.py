@@ -183,6 +183,8 @@ def thesis_settings_text(seed: int = 1, duration: float | None = None) -> dict:
     def span(default: float) -> str:
         return f"{default if duration is None else duration:g} s"
 
+    end = 600.0 if duration is None else float(duration)  # the turbulence run's end [s]
+
     return {
         "varying": "10 -> 15 m/s at the aerostat, 5 s linear ramp at t = 20 s, uniform in space "
         f"(Froude-Krylov and added mass of the accelerating air on), {span(150.0)}",
@@ -191,5 +193,5 @@ def thesis_settings_text(seed: int = 1, duration: float | None = None) -> dict:
         "turbulence": "15 m/s at the aerostat (the design wind), power law 1/7, MIL-HDBK-1797 "
         "Dryden u' + w' with W20 from the profile, spatially varying with IEC "
         f"61400-1 coherence, seed {int(seed)}, 20 s fade-in, {span(600.0)} (window "
-        f"{TURBULENCE_SETTLE + 20.0:g}-{span(600.0)})",
+        f"{min(TURBULENCE_SETTLE + 20.0, end):g}-{span(600.0)})",
     }
