@@ -100,7 +100,9 @@ def test_the_console_script_is_the_cli(wheel):
     import importlib
 
     main = getattr(importlib.import_module(module), func)
-    assert main(["design", "--payload", "1_0"]) == 2  # the CLI's own strict number parsing
+    with pytest.raises(SystemExit) as exc:  # the CLI's own strict number parsing
+        main(["design", "--payload", "1_0"])
+    assert exc.value.code == 2
 
 
 def _pins(path: Path) -> dict[str, str]:

@@ -165,15 +165,15 @@ def make_design(req: Requirement, cfg, given: dict | None = None) -> Design:
 
 def main(argv: list[str] | None = None) -> int:
     """Entry point (the ``aerostat`` console script); returns the exit code (0 ok, 1 a
-    simulation stopped early, 2 bad input: one line naming the option). A closed pipe
-    (``| head``) ends quietly; no input ever prints a traceback."""
+    simulation stopped early, 2 bad input: one line naming the option). An option argparse
+    refuses (an unknown choice, a number that is not plain decimal) and ``--help`` exit through
+    ``SystemExit`` as argparse does (code 2, one line; 0). A closed pipe (``| head``) ends
+    quietly; no input ever prints a traceback."""
     for stream in (sys.stdout, sys.stderr):  # a non-UTF-8 terminal: never an encoding error
         if hasattr(stream, "reconfigure"):
             stream.reconfigure(errors="backslashreplace")
     try:
         return _main(argv)
-    except SystemExit as exc:  # argparse: --help (0) or a bad option (2, its line printed)
-        return exc.code if isinstance(exc.code, int) else 0 if exc.code is None else 2
     except BrokenPipeError:
         # the reader went away: point stdout at devnull so the interpreter's flush is silent
         devnull = os.open(os.devnull, os.O_WRONLY)
