@@ -27,6 +27,7 @@ from aerostat_core.base.validation import InputError
 from aerostat_core.model.budget import BudgetError
 from aerostat_core.model.design import Design
 from aerostat_core.model.inputs import Requirement
+from aerostat_core.studies.scale import ClusterLostError
 
 
 def add_design_options(d: argparse.ArgumentParser) -> None:
@@ -209,6 +210,8 @@ def _envelope(args, d: Design, site, client) -> int:
         env = operating_envelope(d, wind, alt, args.payloads, client=client)
     except BudgetError as exc:
         raise OptionError("--winds/--altitudes/--payloads", str(exc)) from None
+    except ClusterLostError as exc:
+        raise OptionError("--dask", str(exc)) from None
     except ValueError as exc:  # an axis outside its range ("envelope wind = 99 m/s ...")
         text = str(exc)
         option = next((o for key, o in (("envelope wind", "--wind-top"),
@@ -264,6 +267,8 @@ def _report(args, req: Requirement, d: Design, site, client) -> int:
         )
     except BudgetError as exc:
         raise OptionError("--monte-carlo", str(exc)) from None
+    except ClusterLostError as exc:
+        raise OptionError("--dask", str(exc)) from None
     write_output("--output", args.output, text)
     if not args.json:
         print(f"report written to {args.output} ({len(text) // 1024} kB)")
