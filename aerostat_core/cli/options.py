@@ -89,7 +89,7 @@ def help_text(p: PathSpec) -> str:
         if s.hi_field:
             text += f", at most the {s.hi_field.replace('_', ' ')}"
         form = s.range_text()
-        if form and (s.scale != 1.0 or (s.shown_unit not in ("-", s.unit))):
+        if form and s.scale != 1.0:  # a percentage or another display unit
             text += f" (the form shows {form})"
     if s.optional:
         text += f"; left out: {s.empty}"
@@ -111,7 +111,7 @@ def add_input_options(parser: argparse.ArgumentParser) -> None:
         elif s.kind == "text":
             kw.update(metavar="NAME")
         else:
-            kw.update(type=decimal, metavar=s.unit.upper().replace("/", "_") or "X")
+            kw.update(type=decimal, metavar="VALUE")
         group.add_argument(o.option, *o.aliases, **kw)
 
 
