@@ -1,6 +1,6 @@
 """``python -m aerostat_core simulate``: a dynamics run for scripts.
 
-    python -m aerostat_core simulate --scenario {steady,varying,gust,turbulence}
+    aerostat simulate --scenario {steady,varying,gust,turbulence}
         [--design design.json] [--duration S] [--seed N] [--csv out.csv] [--json]
 
 The default design is the thesis optimised design (:func:`aerostat_core.model.presets.thesis_optimized`)
@@ -19,6 +19,8 @@ import os
 import sys
 from pathlib import Path
 
+from aerostat_core.base.cli_input import OptionError, decimal, whole
+
 #: Largest design file read [bytes].
 MAX_DESIGN_BYTES = 1_000_000
 
@@ -35,8 +37,10 @@ def add_parser(subparsers) -> argparse.ArgumentParser:
         help="wind scenario (thesis comparison settings)",
     )
     p.add_argument("--design", type=Path, help="JSON design file (default: thesis optimised)")
-    p.add_argument("--duration", type=float, help="simulated time [s] (default per scenario)")
-    p.add_argument("--seed", type=int, default=1, help="turbulence seed [-]")
+    p.add_argument("--duration", type=decimal,
+                   help="simulated time [s], valid (0, 3600] (default per scenario)")
+    p.add_argument("--seed", type=whole, default=1,
+                   help="turbulence seed [-], valid [0, 4294967295] (default 1)")
     p.add_argument("--csv", type=Path, help="write the time histories here")
     p.add_argument("--json", action="store_true", help="print the metrics as JSON")
     p.set_defaults(handler=run)
@@ -44,50 +48,51 @@ def add_parser(subparsers) -> argparse.ArgumentParser:
 
 
 def _read_design(path: Path) -> dict:
+    from aerostat_core.base.cli_input import read_capped
     from aerostat_core.model.io import design_from_json, inputs_to_dict
 
-    if not path.is_file():
-        raise ValueError(f"--design {path}: not a regular file")
-    with path.open("rb") as fh:
-        text = fh.read(MAX_DESIGN_BYTES + 1)
-    if len(text) > MAX_DESIGN_BYTES:
-        raise ValueError(f"--design {path}: larger than {MAX_DESIGN_BYTES} bytes")
-    return inputs_to_dict(*design_from_json(text))
+    text = read_capped(path, MAX_DESIGN_BYTES, "--design")
+    try:
+        return inputs_to_dict(*design_from_json(text))
+    except ValueError as exc:
+        raise OptionError("--design", f"{path}: {exc}") from None
 
 
 def run(args: argparse.Namespace) -> int:
     """Run the subcommand; returns the exit code (0 ok, 1 the run stopped early, 2 bad input)."""
+    from aerostat_core.base.cli_input import write_output
+
     from .results import limit_flags
     from .scenarios import limits_of, request_header, run_request
     from .thesis import metrics, thesis_request, thesis_settings_text
 
     try:
         if args.duration is not None and not 0 < args.duration <= 3600:
-            raise ValueError(
-                f"--duration = {args.duration:g} s is outside the valid range (0, 3600] s"
+            raise OptionError(
+                "--duration", f"{args.duration:g} s is outside the valid range (0, 3600] s"
             )
         if not 0 <= args.seed <= 2**32 - 1:
-            raise ValueError(f"--seed = {args.seed} is outside the valid range [0, 4294967295]")
+            raise OptionError("--seed", f"{args.seed} is outside the valid range [0, 4294967295]")
         req = thesis_request(args.scenario, args.seed, args.duration)
         if args.design is not None:
-            try:
-                req["inputs"] = _read_design(args.design)
-            except OSError as exc:
-                raise ValueError(f"--design {args.design}: {exc.strerror}") from None
+            req["inputs"] = _read_design(args.design)
         res, d = run_request(req)
     except (ValueError, RuntimeError) as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2
     m = metrics(res, req)
     m["scenario"] = args.scenario
-    m["settings"] = thesis_settings_text().get(args.scenario, "steady wind, 10 m/s")
+    # the settings actually used: the seed and duration given, not the thesis defaults
+    m["settings"] = thesis_settings_text(args.seed, args.duration).get(
+        args.scenario, f"steady wind, 10 m/s, {req['duration']:g} s"
+    )
     m["limits"] = limit_flags(res, limits_of(d))
     m["wall_time_s"] = res.stats["wall_time"]
     if args.csv is not None:
         try:
-            args.csv.write_text(res.to_csv(header=request_header(req, res)))
-        except OSError as exc:
-            print(f"error: --csv {args.csv}: {exc.strerror}", file=sys.stderr)
+            write_output("--csv", args.csv, res.to_csv(header=request_header(req, res)))
+        except OptionError as exc:
+            print(f"error: {exc}", file=sys.stderr)
             return 2
     try:
         _print(m, args)

@@ -24,6 +24,8 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
+from aerostat_core.base.validation import InputError
+from aerostat_core.model import budget
 from aerostat_core.model.airframe import build_airframe
 from aerostat_core.model.constraints import CONSTRAINTS, static_quantities, wind_quantities
 from aerostat_core.model.design import Design
@@ -220,15 +222,16 @@ class Envelope:
 
 def _grid(name: str, values, lo: float, hi: float, unit: str) -> np.ndarray:
     a = np.asarray(values, float).reshape(-1)
+    info = dict(owner="envelope", field=name, lo=lo, hi=hi, unit=unit)
     if a.size == 0:
-        raise ValueError(
-            f"envelope {name}: no values; give at least one in [{lo:g}, {hi:g}] {unit}"
-        )
+        reason = f"has no values; give at least one in [{lo:g}, {hi:g}] {unit}"
+        raise InputError(f"envelope {name}: no values; give at least one in [{lo:g}, {hi:g}] "
+                         f"{unit}", value=[], reason=reason, **info)
     if not np.all(np.isfinite(a)) or a.min() < lo or a.max() > hi:
         bad = a[~np.isfinite(a) | (a < lo) | (a > hi)][0]
-        raise ValueError(
-            f"envelope {name} = {bad:g} {unit} is outside the valid range [{lo:g}, {hi:g}] {unit}"
-        )
+        reason = f"is outside the valid range [{lo:g}, {hi:g}] {unit}"
+        raise InputError(f"envelope {name} = {bad:g} {unit} {reason}", value=float(bad),
+                         reason=reason, **info)
     return a
 
 
@@ -282,6 +285,8 @@ def operating_envelope(
             f"envelope has {n} points, more than the {MAX_POINTS} allowed in one call;"
             " use fewer wind, altitude or payload values"
         )
+    if client is None:  # in this process: the compute budget (a cluster brings its own)
+        budget.check_envelope(d.configuration.tether_segments, n)
     pairs = [(float(h), float(p)) for p in payload for h in altitude]
     blocks = [pairs[i : i + chunk] for i in range(0, len(pairs), chunk)]
     results = map_blocks(
