@@ -49,9 +49,11 @@ class Requirement:
     Parameters
     ----------
     payload_mass : float
-        Payload carried below the hull [kg], valid (0, 500].
+        Payload carried below the hull [kg], valid (0, 10000] (the strategic class of thesis
+        Table 2.3 lifts 1,600-3,200 kg; the range leaves room above it).
     altitude : float
-        Floating (operating) altitude above the launch site [m], valid [10, 3000]. The tether
+        Floating (operating) altitude above the launch site [m], valid [10, 5000] (strategic
+        aerostats fly at 3,000-5,500 m above sea level, thesis §2.3.3). The tether
         length is set equal to it (thesis practice); the table reports the altitude loss in wind.
     site_elevation : float
         Base-station elevation above mean sea level [m], valid [-400, 5000]; site + altitude must
@@ -74,9 +76,9 @@ class Requirement:
         tether safety factor must still be ``survival_safety_factor``.
     blow_by_limit : float or None
         Largest acceptable horizontal offset of the confluence point from the winch at the design
-        wind [m], valid (0, altitude].
+        wind [m], valid (0, altitude] (at most 5000).
     altitude_loss_limit : float or None
-        Permissible reduction in altitude at the design wind [m], valid (0, 3000] (a limit above
+        Permissible reduction in altitude at the design wind [m], valid (0, 5000] (a limit above
         the altitude never binds).
     free_lift_fraction : float or None
         Required free lift at rest / gross lift [-], valid [0, 0.8].
@@ -107,10 +109,10 @@ class Requirement:
     """
 
     payload_mass: float = number(
-        10.0, "Payload mass", "kg", 0, 500, lo_open=True, step=1.0, fmt="%.1f",
+        10.0, "Payload mass", "kg", 0, 10000, lo_open=True, step=1.0, fmt="%.1f",
         help="Mass hung below the hull (camera, radio...).")
     altitude: float = number(
-        300.0, "Operating altitude", "m", 10, 3000, step=10.0, fmt="%.0f",
+        300.0, "Operating altitude", "m", 10, 5000, step=10.0, fmt="%.0f",
         help="Height above the launch site; the tether length equals it.")
     site_elevation: float = number(
         0.0, "Site elevation", "m", -400, 5000, display_unit="m above sea level", step=50.0,
@@ -138,13 +140,13 @@ class Requirement:
         help="Wind the tether must survive aloft (practice 20 m/s, the tactical class); at "
         "least the design wind.", source="aerostat_core.rules")
     blow_by_limit: float | None = number(
-        None, "Blow-by limit at the design wind", "m", 0, 3000, lo_open=True,
+        None, "Blow-by limit at the design wind", "m", 0, 5000, lo_open=True,
         hi_field="altitude", empty="rule set", step=5.0, fmt="%.1f",
         help="Largest acceptable downwind offset of the confluence point from the winch "
         "(practice 0.5 x altitude, thesis 0.178 x altitude); at most the altitude.",
         source="aerostat_core.rules")
     altitude_loss_limit: float | None = number(
-        None, "Permissible altitude loss", "m", 0, 3000, lo_open=True, empty="rule set",
+        None, "Permissible altitude loss", "m", 0, 5000, lo_open=True, empty="rule set",
         step=5.0, fmt="%.1f", help="Largest acceptable loss of height at the design wind "
         "(practice 0.15 x altitude, thesis: off).", source="aerostat_core.rules")
     free_lift_fraction: float | None = number(
