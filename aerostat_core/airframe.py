@@ -18,7 +18,7 @@ from .gas import gas_density, gross_buoyancy
 from .geometry import HullGeometry, hull_geometry, profile_quadrature, shape_integrals
 from .helikite import KiteGeometry, kite_geometry
 from .inputs import Configuration, Requirement
-from .mass import MassBreakdown, mass_breakdown
+from .mass import MassBreakdown, mass_breakdown, systems_mass
 from .materials import TetherSpec
 from .mission import ballonet_mass, effective_tether, onboard_battery_mass
 from .shapes import check_fineness, shape_info
@@ -239,6 +239,8 @@ def build_airframe(
         req.payload_mass, t.linear_density * tether_length,
         onboard_battery_mass(req, cfg), ballonet_mass(req, cfg, hull.volume),
         inertia_integrals=inertia,
+        systems_mass=systems_mass(hull.volume, cfg.systems_mass_per_volume,
+                                  cfg.systems_mass_exponent),
     )
     fb = gross_buoyancy(atm.density, hull.volume, g)
     w_a = mass.aerostat * g

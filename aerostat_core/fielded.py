@@ -27,6 +27,57 @@ from .presets import practice_configuration, rules_configuration
 TABLE_2_3 = "thesis Table 2.3 (SAVER 2013)"
 
 
+#: Aerostat classes of thesis §2.3 / Table 2.3 (Mahmood 2020, citing SAVER 2013, TCOM 2018 and
+#: Krausman & Petersen 2013): the published figures of each class, shown beside a design.
+#: payload [kg], altitude [m], volume [m3], length [m] (the Table 2.3 systems of the class),
+#: endurance [day] and wind [m/s] as the thesis text states them.
+CLASSES = {
+    "tactical": {
+        "payload_kg": (4.0, 90.0), "altitude_m": (150.0, 610.0), "volume_m3": (45.0, 170.0),
+        "length_m": (9.1, 17.0), "endurance_days": (5.0, 7.0), "wind_m_s": 20.0,
+        "text": "payload up to ~30 kg (Table 2.3: 4-90 kg) at about 300 m, ~170 m3, 5-7 days "
+                "aloft, operates and survives 20 m/s (thesis §2.3.1, TCOM 2018)",
+    },
+    "operational": {
+        "payload_kg": (130.0, 570.0), "altitude_m": (900.0, 1500.0),
+        "volume_m3": (800.0, 1600.0), "length_m": (22.0, 39.0), "endurance_days": (7.0, 28.0),
+        "wind_m_s": 26.0,
+        "text": "130-360 kg (Table 2.3: 190-570 kg) to 1,000-1,500 m, 800-1,600 m3, 7 days to "
+                "4 weeks with helium top-up, operates up to 26 m/s (thesis §2.3.2, TCOM 2018, "
+                "Krausman & Petersen 2013)",
+    },
+    "strategic": {
+        "payload_kg": (1500.0, 3200.0), "altitude_m": (3000.0, 5500.0),
+        "volume_m3": (10000.0, 17000.0), "length_m": (71.0, 74.0), "endurance_days": (30.0, 30.0),
+        "wind_m_s": 36.0,
+        "text": "1,500-3,000 kg (Table 2.3: 1,600-3,200 kg) at 3,000-5,500 m, deployed 30 days, "
+                "survives 36 m/s (thesis §2.3.3, TCOM 2018)",
+    },
+}
+#: Class boundaries [kg], [m]: the lower ends of the operational (130 kg, 900 m: TCOM 22M) and
+#: strategic (1,500 kg, 3,000 m) classes of thesis §2.3.
+OPERATIONAL_FROM = (130.0, 900.0)
+STRATEGIC_FROM = (1500.0, 3000.0)
+
+
+def aerostat_class(payload_mass: float, altitude: float) -> str:
+    """Class of thesis Table 2.3 for a payload [kg] and an operating altitude [m].
+
+    Strategic from 1,500 kg or 3,000 m, operational from 130 kg or 900 m (the lower ends the
+    thesis gives, §2.3.2-2.3.3), tactical below both.
+
+    Examples
+    --------
+    >>> aerostat_class(10, 300), aerostat_class(227, 900), aerostat_class(1600, 4600)
+    ('tactical', 'operational', 'strategic')
+    """
+    if payload_mass >= STRATEGIC_FROM[0] or altitude >= STRATEGIC_FROM[1]:
+        return "strategic"
+    if payload_mass >= OPERATIONAL_FROM[0] or altitude >= OPERATIONAL_FROM[1]:
+        return "operational"
+    return "tactical"
+
+
 @dataclass(frozen=True)
 class FieldedSystem:
     """Published figures of a fielded aerostat.
@@ -49,13 +100,13 @@ class FieldedSystem:
         Published operational wind rating [m/s]; ``None`` takes the rule set's.
     source : str
     fit : bool
-        True for the systems the practice calibration was chosen on.
+        True for the systems of the declared fit set (the practice fineness ratio and
+        PRACTICE_SYSTEMS_MASS_PER_VOLUME were fitted on these, declared before the fit).
     endurance_days : float or None
-        Days aloft without helium addition published for the system's class (issue 13 item 9):
-        thesis §2.3, tactical (payload <= 30 kg) "flight endurance 5 to 7 days" (TCOM 2018),
-        operational "from 7 days to 4 weeks on helium gas addition" (Krausman & Petersen 2013);
-        the lower ends, 5 and 7 days, are used. No system of the table publishes its payload
-        power, so power is not used.
+        Days aloft without helium addition; ``None`` takes the class figure of thesis §2.3
+        (:attr:`class_endurance_days`).
+    payload_power : float
+        Published payload power [W] drawn through the tether (0: none published).
     """
 
     name: str
@@ -68,26 +119,39 @@ class FieldedSystem:
     source: str = TABLE_2_3
     fit: bool = False
     endurance_days: float | None = None
+    payload_power: float = 0.0
+
+    @property
+    def aerostat_class(self) -> str:
+        """Class of thesis Table 2.3 (:func:`aerostat_class`)."""
+        return aerostat_class(self.payload_mass, self.altitude)
 
     @property
     def class_endurance_days(self) -> float:
-        """The published class endurance (see ``endurance_days``) [day]."""
+        """The published endurance, or the lower end of its class' (thesis §2.3) [day]."""
         if self.endurance_days is not None:
             return float(self.endurance_days)
-        return TACTICAL_ENDURANCE_DAYS if self.payload_mass <= 30.0 else OPERATIONAL_ENDURANCE_DAYS
+        return CLASSES[self.aerostat_class]["endurance_days"][0]
+
+    @property
+    def class_survival_wind(self) -> float | None:
+        """Survival wind of its class [m/s]: the strategic class' published 36 m/s (thesis
+        §2.3.3); ``None`` (the rule set's 20 m/s, the tactical class' figure) otherwise."""
+        return CLASSES["strategic"]["wind_m_s"] if self.aerostat_class == "strategic" else None
 
 
 #: Class endurance without helium addition [day] (thesis §2.3; lower ends of 5-7 days and of
 #: "7 days to 4 weeks on helium gas addition").
-TACTICAL_ENDURANCE_DAYS = 5.0
-OPERATIONAL_ENDURANCE_DAYS = 7.0
+TACTICAL_ENDURANCE_DAYS = CLASSES["tactical"]["endurance_days"][0]
+OPERATIONAL_ENDURANCE_DAYS = CLASSES["operational"]["endurance_days"][0]
 
 _FT3 = 0.3048**3
 
-#: The tactical and operational streamlined systems of thesis Table 2.3 that publish a length.
+#: The streamlined systems of thesis Table 2.3 that publish a length, all three classes.
 #: Left out: White Hawk (4.4 x 3.4 m, l/d 1.3, not a streamlined hull of the NPL family), Sky
-#: Sentry HEA-150 and HEA-3000 (no size published), and the systems whose payload exceeds the
-#: engine's 500 kg range (TCOM 28M, 71M, 74M).
+#: Sentry HEA-150 and HEA-3000 (no size published). FIT SET, declared before the fit: Raven
+#: TIF-1600, Top Vision T.A.S, Raven TIF-25K (the three that publish a diameter) and TCOM 71M
+#: (a strategic system, so that each class has one): 4 of 11.
 FIELDED: tuple[FieldedSystem, ...] = (
     FieldedSystem("Raven TIF-1600", 16.0, 610.0, 9.6, 3.3, 1600 * _FT3,
                   source=TABLE_2_3 + "; volume from the model name (1600 ft3)", fit=True),
@@ -98,6 +162,13 @@ FIELDED: tuple[FieldedSystem, ...] = (
     FieldedSystem("Raven TIF-25K", 227.0, 900.0, 23.2, 7.6, 25000 * _FT3,
                   source=TABLE_2_3 + "; volume from the model name (25,000 ft3)", fit=True),
     FieldedSystem("TCOM 22M", 190.0, 900.0, 22.0),
+    FieldedSystem("TCOM 28M", 570.0, 900.0, 28.0),
+    FieldedSystem("Aeroscraft AEROS 3200", 300.0, 1500.0, 39.0),
+    FieldedSystem("TCOM 71M", 1600.0, 4600.0, 71.0, fit=True),
+    FieldedSystem("TCOM 74M", 3200.0, 3000.0, 74.0, volume=590000 * _FT3,
+                  source=TABLE_2_3 + "; volume 590,000 ft3 of the TCOM-built JLENS aerostat "
+                  "(AIN Online, 12 Nov 2011, 'Aerostats rise through ranks in surveillance "
+                  "service'), INFERRED to be the 74M"),
 )
 
 
@@ -132,7 +203,7 @@ class FieldedRow:
 
 
 def size_fielded(system: FieldedSystem, rules: str = "practice",
-                 mission: bool = False) -> FieldedRow:
+                 mission: bool = True) -> FieldedRow:
     """Size one fielded system from its payload and altitude (and wind rating if published).
 
     ``mission=True`` also asks for its class endurance (``class_endurance_days``) and builds a
@@ -140,6 +211,9 @@ def size_fielded(system: FieldedSystem, rules: str = "practice",
     practice configuration otherwise unchanged (issue 13 item 9)."""
     req = Requirement(payload_mass=system.payload_mass, altitude=system.altitude,
                       design_wind=system.design_wind, rules=rules,
+                      survival_wind=system.class_survival_wind if mission else None,
+                      payload_power=system.payload_power,
+                      power_via="tether" if system.payload_power > 0 else "onboard",
                       endurance_days=system.class_endurance_days if mission else 0.0)
     cfg = None
     if mission:
@@ -187,7 +261,7 @@ class FieldedValidation:
 
 
 def validate_fielded(systems=FIELDED, rules: str = "practice",
-                     mission: bool = False) -> FieldedValidation:
+                     mission: bool = True) -> FieldedValidation:
     """Size every fielded system with the default rule set and compare with the published size
     (``mission=True``: with the class endurance and the 500 m ballonet rule, see
     :func:`size_fielded`).

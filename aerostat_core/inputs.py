@@ -22,6 +22,8 @@ DENSITY_MODELS = ("ideal", "fixed")
 FIN_ARRANGEMENTS = ("+", "x", "inverted-y")
 WIND_PROFILES = ("uniform", "power", "log")
 CUTOFF_MODES = ("fin", "tail")
+#: How the fabrics and the tether are chosen (Configuration.materials).
+MATERIAL_MODES = ("given", "catalogue")
 #: Widest fineness-ratio range over the shapes (each shape narrows it, ``SHAPE_INFO``).
 _FINENESS_LO = min(s.fineness_range[0] for s in SHAPE_INFO.values())
 _FINENESS_HI = max(s.fineness_range[1] for s in SHAPE_INFO.values())
@@ -545,6 +547,13 @@ class Configuration:
     misc_mass_ratio : float
         Miscellaneous mass (confluence lines, patches, valves, nose cone) / hull fabric mass [-],
         valid [0, 2]. Thesis Table 2.2: 4.7 / 15.57 = 0.30 (INFERRED).
+    systems_mass_per_volume : float
+        Mass of the hull systems that scale with the volume (pressure control, avionics,
+        lighting, rigging, fin structure) per m3 of hull [kg/m3], valid [0, 2]
+        at a 1000 m3 hull (aerostat_core.mass.systems_mass); 0 books none (the thesis' Table
+        2.2 budget).
+    systems_mass_exponent : float
+        c of m_sys = k V (V/1000 m3)^c [-], valid [-0.5, 0.5].
     gas_price : float or None
         Lifting-gas price [USD/m3], valid [0, 1000]; ``None`` takes the default of the gas kind.
     tether_segments : int
@@ -552,6 +561,10 @@ class Configuration:
         within 1 mm of a 2000-segment solution for a 300 m tether (tests/core/test_tether.py).
     mission : MissionSpec
         Battery, power-tether, ballonet, envelope and winch technology (aerostat_core.mission).
+    materials : {"given", "catalogue"}
+        "given": the hull fabric, fin fabric and tether above are flown as they are;
+        "catalogue": each is the lightest catalogue item that carries its load on the sized
+        hull with the safety factors (aerostat_core.selection; the practice configuration).
     """
 
     gas: LiftingGas = part(LiftingGas, "Lifting gas")
@@ -567,6 +580,15 @@ class Configuration:
         0.30, "Miscellaneous mass / hull mass", "", 0, 2, step=0.05, fmt="%.2f",
         help="Confluence lines, patches, valves (thesis Table 2.2: 0.30).",
         source="thesis Table 2.2")
+    systems_mass_per_volume: float = number(
+        0.0, "Hull systems mass / volume", "kg/m3", 0, 2, step=0.01, fmt="%.3f",
+        help="Pressure control, avionics, lighting, rigging and fin structure, per cubic metre "
+        "of hull (thesis preset 0; practice preset fitted on fielded aerostats).",
+        source="aerostat_core.mass.systems_mass")
+    systems_mass_exponent: float = number(
+        0.0, "Hull systems mass exponent", "", -0.5, 0.5, step=0.01, fmt="%.3f",
+        help="How much faster than the volume the hull systems grow: m = k V (V/1000 m³)^c.",
+        source="aerostat_core.mass.systems_mass")
     gas_price: float | None = number(
         None, "Gas price", "USD/m3", 0, 1000, empty="default", step=1.0, fmt="%.2f",
         help="Fill cost per cubic metre. Default helium 38.5 USD/m³ (thesis App. H).")
@@ -574,6 +596,10 @@ class Configuration:
         50, "Tether segments", 10, 5000, step=10,
         help="Segments of the static tether march (50 is within 1 mm of 2000).")
     mission: MissionSpec = part(MissionSpec, "Mission technology")
+    materials: str = choice(
+        "given", "Fabric and tether", MATERIAL_MODES, source="aerostat_core.selection",
+        help="'catalogue': the lightest catalogue fabric and tether that carry the loads of the "
+        "sized hull with the safety factors; 'given': the fabric and tether entered here.")
 
     def __post_init__(self) -> None:
         o = "Configuration"

@@ -35,7 +35,7 @@ from .endurance import (
     permeation_time_constant,
     purity_after,
 )
-from .fields import choice, integer, number, validate
+from .fields import choice, field_spec, integer, number, validate
 from .materials import POWER_TETHER_CONDUCTORS, TetherSpec
 from .power import Conductors, battery_mass, power_tether, size_conductors
 from .structure import allowable_pressure, membrane_loads, required_pressure
@@ -197,14 +197,17 @@ def effective_tether(req, cfg) -> TetherSpec:
     t = cfg.tether
     rho_l = t.linear_density + k.linear_density
     d = float(np.sqrt(t.diameter**2 + 2.0 * k.insulated_diameter**2))
-    if rho_l > 1.0 or d > 0.05:
+    rho_max = float(field_spec(TetherSpec, "linear_density").hi)
+    d_max = float(field_spec(TetherSpec, "diameter").hi)
+    if rho_l > rho_max or d > d_max:
         m = cfg.mission
         raise ValueError(
             f"Requirement.payload_power = {req.payload_power:g} W through {req.altitude:g} m of "
             f"tether at MissionSpec.supply_voltage = {m.supply_voltage:g} V with "
             f"power_loss_fraction = {m.power_loss_fraction:g} needs conductors of "
             f"{1000 * k.linear_density:.0f} g/m (tether {1000 * rho_l:.0f} g/m, {1000 * d:.0f} mm);"
-            f" the tether model accepts up to 1000 g/m and 50 mm: raise the supply voltage or "
+            f" the tether model accepts up to {1000 * rho_max:.0f} g/m and {1000 * d_max:.0f} mm:"
+            f" raise the supply voltage or "
             f"the allowed loss, or carry the power onboard"
         )
     return power_tether(t, k)

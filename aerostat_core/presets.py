@@ -24,7 +24,7 @@ from dataclasses import replace
 
 from .deprecation import deprecated_aliases
 from .inputs import Configuration, FinSpec, HullSpec, LiftingGas, Requirement
-from .materials import TETHERS, Fabric
+from .materials import SELECTABLE_FABRICS, SELECTABLE_TETHERS, TETHERS
 from .rules import THESIS_BLOW_BY_FRACTION, get_rules
 
 #: Thesis preset: fin planform / hull area, calibrated to Table 2.2's 7.8 kg of fins. Table 2.2
@@ -44,33 +44,47 @@ assert abs(THESIS_BLOW_BY_FRACTION * 300.0 - THESIS_BLOW_BY_LIMIT) < 1e-9
 #: both (TIF-1600 9.6/3.3, Top Vision 9.1/2.9, TIF-25K 23.2/7.6); FITTED on those three
 #: (tests/core/test_fielded.py recomputes it from aerostat_core.fielded).
 PRACTICE_FINENESS_RATIO = 3.0332
-#: Practice envelope and fin fabric areal density [kg/m2]. CALIBRATED: the least-squares value
-#: (RMS of the log hull-length error, scanned in steps of 5 g/m2) on the fit set (TIF-1600,
-#: Top Vision, TIF-25K) of aerostat_core.fielded with the practice rules; it lies inside the
-#: published 130-385 g/m2 range of the thesis fabric and the IIT-B/ADRDE laminates
-#: (docs/methods.md S8). The other fielded systems are held out (predictions).
-PRACTICE_FABRIC_AREAL_DENSITY = 0.220
-#: Practice tether: the lightest HMPE braid of the catalogue (materials.TETHERS). Tactical and
-#: operational aerostats fly light synthetic tethers (thesis §2.2.3); at 14 kN it meets the
-#: practice safety factors for every system of the fielded harness, and the constraint table
-#: says "choose a stronger tether" on any design where it does not.
-PRACTICE_TETHER = "Dyneema 4 mm (9 g/m)"
+#: Practice envelope and fin fabric areal density before selection [kg/m2]: the lightest
+#: laminate of the selection catalogue (materials.SELECTABLE_FABRICS, HV150 of Lv et al. 2022).
+#: No longer fitted: the practice configuration chooses its fabrics by load
+#: (``materials="catalogue"``, aerostat_core.selection), so this is only the starting item and
+#: the fabric flown when the user switches the choice to "given".
+PRACTICE_FABRIC_AREAL_DENSITY = SELECTABLE_FABRICS[0].areal_density
+#: Practice tether before selection: the lightest braid of the selection catalogue
+#: (materials.SELECTABLE_TETHERS); the selection replaces it by the lightest that meets the
+#: safety factors on the sized hull.
+PRACTICE_TETHER = SELECTABLE_TETHERS[0].name
+
+
+#: Hull systems mass of the practice configuration (aerostat_core.mass.systems_mass):
+#: m_sys = k V (V / 1000 m3)^c, k [kg/m3] and c [-]. FITTED, the two fitted numbers of the
+#: practice configuration besides the fineness ratio: least RMS of the log hull-length error of
+#: the declared fit set (Raven TIF-1600, Top Vision T.A.S, Raven TIF-25K, TCOM 71M; declared in
+#: aerostat_core.fielded before fitting) over the points scanned, (k, c) = (0.20, 0), (0.30, 0),
+#: (0.25, 0.08), (0.22, 0.12) (RMS 0.193, 0.176, 0.132, 0.134). The other seven systems are
+#: held out (docs/validation.md).
+PRACTICE_SYSTEMS_MASS_PER_VOLUME = 0.25
+PRACTICE_SYSTEMS_MASS_EXPONENT = 0.08
 
 
 def practice_configuration(volume: float | None = None) -> Configuration:
     """Design configuration of the "practice" rule set (volume sized unless given).
 
-    Ideal-gas helium at 98 % purity, the tether :data:`PRACTICE_TETHER`, 4 fins of the
-    statistical size, f = :data:`PRACTICE_FINENESS_RATIO`, fabric
-    :data:`PRACTICE_FABRIC_AREAL_DENSITY` on hull and fins.
+    Ideal-gas helium at 98 % purity, 4 fins of the statistical size, f =
+    :data:`PRACTICE_FINENESS_RATIO`, hull systems :data:`PRACTICE_SYSTEMS_MASS_PER_VOLUME` x V
+    (V/1000 m3)^:data:`PRACTICE_SYSTEMS_MASS_EXPONENT`, and the hull fabric, fin fabric and
+    tether chosen from the catalogue by the loads they carry (``materials="catalogue"``,
+    aerostat_core.selection; the lightest items are the starting point).
     """
-    fabric = Fabric(f"Practice laminate ({1000 * PRACTICE_FABRIC_AREAL_DENSITY:.0f} g/m2)",
-                    PRACTICE_FABRIC_AREAL_DENSITY)
+    fabric = SELECTABLE_FABRICS[0]
     return Configuration(
         hull=HullSpec(fineness_ratio=PRACTICE_FINENESS_RATIO, volume=volume),
         hull_fabric=fabric,
         fin_fabric=fabric,
         tether=TETHERS[PRACTICE_TETHER],
+        materials="catalogue",
+        systems_mass_per_volume=PRACTICE_SYSTEMS_MASS_PER_VOLUME,
+        systems_mass_exponent=PRACTICE_SYSTEMS_MASS_EXPONENT,
     )
 
 
