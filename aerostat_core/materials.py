@@ -382,8 +382,12 @@ LAMINATES = (
     ("Uretek 3216LV laminate (Lv 2022)", 0.200, 101.43 * _KGF_PER_CM, 0.8818,
      LV_2022 + ": 101.43 kgf/cm, 0.8818 L/(m2 day atm); 200 g/m2 ASSUMED"),
     *((f"Heavy laminate {g} g/m2 (3216LV scaled)", g / 1000.0, _SPECIFIC_3216LV * g / 1000.0,
-       0.8818, f"ASSUMED: the 3216LV construction scaled to {g} g/m2 (strength proportional to "
-       "areal density); no data sheet found") for g in (300, 400, 550, 700, 900)),
+       0.8818, {"areal_density": f"ASSUMED step of the catalogue ({g} g/m2)",
+                "tensile_strength": "COMPUTED: 3216LV's strength per weight (Lv et al. 2022, "
+                "101.43 kgf/cm at the 200 g/m2 taken for it) x areal density, a scaling "
+                "assumption (no data sheet of a heavy aerostat laminate was found)",
+                "helium_permeability": "Lv et al. 2022, 3216LV's 0.8818 L/(m2 day atm)"})
+      for g in (300, 400, 550, 700, 900)),
 )
 #: Fabrics the selection chooses from, lightest first (aerostat_core.selection).
 SELECTABLE_FABRICS: tuple[Fabric, ...] = tuple(
@@ -395,8 +399,8 @@ SELECTABLE_TETHERS: tuple[TetherSpec, ...] = tuple(sorted(
 for _f in SELECTABLE_FABRICS:
     FABRICS.setdefault(_f.name, _f)
 for _n, _w, _s, _p, _src in LAMINATES:
-    FABRIC_SOURCES.setdefault(_n, {"areal_density": _src, "tensile_strength": _src,
-                                   "helium_permeability": _src})
+    FABRIC_SOURCES.setdefault(_n, _src if isinstance(_src, dict) else {
+        "areal_density": _src, "tensile_strength": _src, "helium_permeability": _src})
 for _t in SELECTABLE_TETHERS:
     TETHERS[_t.name] = _t
     TETHER_SOURCES[_t.name] = (

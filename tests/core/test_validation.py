@@ -41,7 +41,7 @@ def test_input_error_is_a_value_error_with_the_details():
         "payload_mass",
         -5,
         0,
-        500,
+        10000,
         "kg",
     )
     assert e.lo_open and not e.hi_open and e.valid_range == "(0, 10000] kg"
