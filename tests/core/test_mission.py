@@ -297,7 +297,7 @@ def test_mission_inputs_over_their_domain(
     power, via, days, altitude, voltage, loss, superheat, ballonet
 ):
     req = Requirement(payload_power=power, power_via=via, endurance_days=days, altitude=altitude)
-    base = practice_configuration()
+    base = replace(practice_configuration(), materials="given")  # the mission, not the choice
     spec = MissionSpec(
         supply_voltage=voltage, power_loss_fraction=loss, superheat=superheat, ballonet=ballonet
     )
