@@ -121,8 +121,9 @@ class FieldedSystem:
         Maximum payload [kg].
     altitude : float
         Maximum operating altitude above the site [m].
-    length : float
-        Hull length [m].
+    length : float or None
+        Hull length [m]; ``None`` where only a volume is published (then only the volume
+        is compared).
     diameter : float or None
         Hull diameter [m] where published.
     volume : float or None
@@ -144,7 +145,7 @@ class FieldedSystem:
     name: str
     payload_mass: float
     altitude: float
-    length: float
+    length: float | None
     diameter: float | None = None
     volume: float | None = None
     design_wind: float | None = None
@@ -196,7 +197,18 @@ FIELDED: tuple[FieldedSystem, ...] = (
     FieldedSystem("TCOM 22M", 190.0, 900.0, 22.0),
     FieldedSystem("TCOM 28M", 570.0, 900.0, 28.0),
     FieldedSystem("Aeroscraft AEROS 3200", 300.0, 1500.0, 39.0),
+    FieldedSystem("Lockheed Martin 74K (PTDS)", 500.0, 1500.0, 35.0, volume=74000 * _FT3,
+                  source="SpaceNews, 'Lockheed Martin ramps surveillance blimp production' "
+                  "(2010): 35 m, about 2,100 m3, 800-1,500 m, power and fibre through the "
+                  "tether (not quantified); ClearanceJobs, 'U.S. Army receives last threat "
+                  "detection dirigible' (7 Aug 2012): 74,000 ft3, 1,500 m, 500 kg at its "
+                  "heaviest"),
     FieldedSystem("TCOM 71M", 1600.0, 4600.0, 71.0, fit=True),
+    FieldedSystem("Lockheed Martin 420K (TARS)", 1000.0, 4600.0, None, volume=420000 * _FT3,
+                  source="Wikipedia, 'Tethered Aerostat Radar System': 1,000 kg payload, "
+                  "15,000 ft (4,600 m), an onboard diesel generator (no power through the "
+                  "tether); Lockheed Martin press release, 8 Jun 2004: 420,000 ft3. No length "
+                  "published in these sources: volume only"),
     FieldedSystem("TCOM 74M", 3200.0, 3000.0, 74.0, volume=590000 * _FT3,
                   source=TABLE_2_3 + "; volume 590,000 ft3 of the TCOM-built JLENS aerostat "
                   "(AIN Online, 12 Nov 2011, 'Aerostats rise through ranks in surveillance "
@@ -214,7 +226,7 @@ class FieldedRow:
     volume: float
     feasible: bool
     binding: str
-    length_error: float
+    length_error: float | None
     diameter_error: float | None
     volume_error: float | None
 
@@ -226,7 +238,7 @@ class FieldedRow:
             "class": s.aerostat_class,
             "payload_kg": s.payload_mass, "altitude_m": s.altitude,
             "published_length_m": s.length, "predicted_length_m": self.length,
-            "length_error_pct": 100 * self.length_error,
+            "length_error_pct": None if self.length_error is None else 100 * self.length_error,
             "published_diameter_m": s.diameter, "predicted_diameter_m": self.diameter,
             "diameter_error_pct": None if self.diameter_error is None else 100 * self.diameter_error,
             "published_volume_m3": s.volume, "predicted_volume_m3": self.volume,
@@ -257,7 +269,7 @@ def size_fielded(system: FieldedSystem, rules: str = "practice",
     return FieldedRow(
         system=system, length=s.length_m, diameter=s.diameter_m, volume=s.volume_m3,
         feasible=d.feasible, binding=s.binding_constraint,
-        length_error=s.length_m / system.length - 1.0,
+        length_error=rel(s.length_m, system.length),
         diameter_error=rel(s.diameter_m, system.diameter),
         volume_error=rel(s.volume_m3, system.volume),
     )
@@ -271,8 +283,8 @@ class FieldedValidation:
 
     @property
     def length_errors(self) -> np.ndarray:
-        """Relative hull-length errors [-], in the order of ``rows``."""
-        return np.array([r.length_error for r in self.rows])
+        """Relative hull-length errors [-] of the systems that publish a length."""
+        return np.array([r.length_error for r in self.rows if r.length_error is not None])
 
     @property
     def median_abs_length_error(self) -> float:
@@ -306,7 +318,7 @@ class FieldedValidation:
         """Median and worst |length error| [-] over all, the fit set and the held-out set, and
         the median |volume error| where published."""
         def stats(rows):
-            e = np.abs([r.length_error for r in rows])
+            e = np.abs([r.length_error for r in rows if r.length_error is not None])
             return (float(np.median(e)), float(np.max(e))) if len(e) else (None, None)
 
         out = {}
@@ -333,6 +345,22 @@ def validate_fielded(systems=FIELDED, rules: str = "practice",
     (11, ['operational', 'strategic', 'tactical'])
     """
     return FieldedValidation(tuple(size_fielded(s, rules, mission) for s in systems))
+
+
+def fit_rms(per_volume: float, exponent: float, systems=None) -> float:
+    """RMS of the log hull-length error of the declared fit set (``systems``: default the
+    FIELDED systems marked ``fit``) with the hull-systems law (k, c) = (``per_volume``,
+    ``exponent``): the objective the practice values were chosen by (docs/validation.md §7)."""
+    systems = [s for s in FIELDED if s.fit] if systems is None else systems
+    cfg = replace(practice_configuration(), systems_mass_per_volume=per_volume,
+                  systems_mass_exponent=exponent, mission=MissionSpec(ballonet="auto"))
+    e = []
+    for s in systems:
+        req = Requirement(payload_mass=s.payload_mass, altitude=s.altitude,
+                          design_wind=s.design_wind, survival_wind=s.class_survival_wind,
+                          endurance_days=s.class_endurance_days)
+        e.append(np.log(design(req, cfg).summary().length_m / s.length))
+    return float(np.sqrt(np.mean(np.square(e))))
 
 
 def practice_configuration_for(areal_density: float):

@@ -288,10 +288,17 @@ def select_materials(req, cfg) -> Selection:
     # the table has the last word (bending on the envelope): the next stronger item there
     for _ in range(MAX_ROUNDS):
         met = _rows_met(state)
+        # an infeasible sizing names the constraint, or the pair, no volume meets: an item's
+        # row there means the item closes the window (a stronger one opens it)
+        named = set()
+        if sizing is not None and not bool(np.asarray(sizing.feasible).reshape(-1)[0]):
+            named = set(str(np.asarray(sizing.binding).reshape(-1)[0]).split("+"))
         bump = list(idx)
-        if not (met["envelope_stress"] and met["survival_envelope_pressure"]):
+        if (not (met["envelope_stress"] and met["survival_envelope_pressure"])
+                or named & {"envelope_stress", "survival_envelope_pressure"}):
             bump[0] = _next_stronger(SELECTABLE_FABRICS, idx[0])
-        if not (met["safety_factor"] and met["survival_safety_factor"]):
+        if (not (met["safety_factor"] and met["survival_safety_factor"])
+                or named & {"safety_factor", "survival_safety_factor"}):
             bump[2] = _next_stronger(SELECTABLE_TETHERS, idx[2])
         if tuple(bump) == idx:
             break

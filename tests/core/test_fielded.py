@@ -13,6 +13,7 @@ from aerostat_core.fielded import (
     FIELDED,
     aerostat_class,
     class_figures,
+    fit_rms,
     validate_fielded,
 )
 from aerostat_core.presets import (
@@ -36,18 +37,32 @@ def test_the_harness_spans_every_class_with_a_declared_third_fitted() -> None:
     assert abs(len(fit) - len(FIELDED) / 3) <= 1
     assert {s.aerostat_class for s in fit} == set(CLASSES)
     for s in FIELDED:
-        assert s.source and s.payload_mass > 0 and s.altitude > 0 and s.length > 0
+        assert s.source and s.payload_mass > 0 and s.altitude > 0
+        assert (s.length or 0) > 0 or (s.volume or 0) > 0
 
 
 def test_every_fielded_system_sizes_near_its_published_length(harness) -> None:
-    assert len(harness.rows) == len(FIELDED) >= 11
+    assert len(harness.rows) == len(FIELDED) >= 13
     st = harness.statistics()
-    # measured on this branch: median 8 %, worst 33 % (AEROS 3200: 300 kg on a 39 m hull,
-    # where TCOM 28M carries 570 kg on 28 m); the issue's targets (6 %, 15 %) are NOT met yet
-    assert st["all_median"] <= 0.10
-    assert st["all_worst"] <= 0.40
-    tactical = [r for r in harness.rows if r.system.aerostat_class == "tactical"]
-    assert np.median([abs(r.length_error) for r in tactical]) <= 0.08
+    # measured on this branch: length median 7.9 %, worst 32.8 % (AEROS 3200: 300 kg on a 39 m
+    # hull, where TCOM 28M carries 570 kg on 28 m); volume median 3.4 % (5 published). The
+    # issue's length targets (median 6 %, none worse than 15 %) are NOT met; the volume one is.
+    assert st["all_median"] <= 0.08
+    assert st["all_worst"] <= 0.35
+    assert st["volume_median"] <= 0.12
+    assert all(r.feasible for r in harness.rows)
+    for cls in CLASSES:  # every class is sized within 10 % in the median
+        e = [abs(r.length_error) for r in harness.rows
+             if r.system.aerostat_class == cls and r.length_error is not None]
+        assert np.median(e) <= 0.10, cls
+
+
+def test_the_systems_law_is_the_grid_minimum_of_the_declared_fit() -> None:
+    """Recompute the fit around the chosen point: its four grid neighbours fit worse."""
+    k, c = PRACTICE_SYSTEMS_MASS_PER_VOLUME, PRACTICE_SYSTEMS_MASS_EXPONENT
+    best = fit_rms(k, c)
+    for dk, dc in ((0.03, 0), (-0.03, 0), (0, 0.04), (0, -0.04)):
+        assert fit_rms(k + dk, c + dc) > best
 
 
 def test_fit_and_held_out_are_reported_apart(harness) -> None:
@@ -88,7 +103,9 @@ def test_table_2_3_systems_fall_in_their_table_class() -> None:
              "Raven TIF-25K": "operational", "TCOM 22M": "operational",
              "TCOM 28M": "operational", "Aeroscraft AEROS 3200": "operational",
              "TCOM 71M": "strategic", "TCOM 74M": "strategic"}
-    assert {s.name: s.aerostat_class for s in FIELDED} == table
+    assert {s.name: s.aerostat_class for s in FIELDED if s.name in table} == table
+    assert {s.aerostat_class for s in FIELDED if s.name.startswith("Lockheed")} == {
+        "operational", "strategic"}  # 74K (500 kg, 1,500 m) and 420K (1,000 kg, 4,600 m)
 
 
 def test_design_json_has_the_class_and_its_typical_figures(capsys) -> None:

@@ -87,17 +87,25 @@ def test_a_need_beyond_the_catalogue_names_the_item_and_the_shortfall() -> None:
 
 
 def test_selected_items_carry_their_loads_and_no_lighter_one_does() -> None:
-    req = Requirement(payload_mass=1600, altitude=4600, survival_wind=36.0).resolved()
-    s = select_materials(req, practice_configuration())
-    cfg = s.configuration
-    assert cfg.hull_fabric.tensile_strength >= s.needs.hull_fabric
-    assert cfg.tether.breaking_strength >= s.needs.tether
-    lighter = [t for t in SELECTABLE_TETHERS if t.linear_density < cfg.tether.linear_density]
+    for req in (Requirement(payload_mass=227, altitude=900),
+                Requirement(payload_mass=1600, altitude=4600, survival_wind=36.0)):
+        s = select_materials(req, practice_configuration())
+        cfg = s.configuration
+        assert cfg.hull_fabric.tensile_strength >= s.needs.hull_fabric
+        assert cfg.fin_fabric.tensile_strength >= s.needs.fin_fabric
+        assert cfg.tether.breaking_strength >= s.needs.tether
+        assert s.sizing is not None and bool(s.sizing.feasible)
+    # where the first sizing closed (no window bump), no lighter braid carries the load
+    s = select_materials(Requirement(payload_mass=227, altitude=900), practice_configuration())
+    lighter = [t for t in SELECTABLE_TETHERS
+               if t.linear_density < s.configuration.tether.linear_density]
     assert all(t.breaking_strength < s.needs.tether for t in lighter)
     # a strategic hull needs a stronger tether than a tactical one
     small = select_materials(Requirement(), practice_configuration())
-    assert small.needs.tether < s.needs.tether
-    assert small.configuration.tether.linear_density <= cfg.tether.linear_density
+    big = select_materials(Requirement(payload_mass=1600, altitude=4600, survival_wind=36.0),
+                           practice_configuration())
+    assert small.needs.tether < big.needs.tether
+    assert small.configuration.tether.linear_density < big.configuration.tether.linear_density
 
 
 def test_power_through_the_tether_is_carried_by_the_flown_bundle() -> None:
