@@ -1,11 +1,13 @@
 """Named parameter sets: the "practice" configuration for real missions, and the thesis baseline
 (Mahmood 2020) with its optimised configuration.
 
-The practice configuration (:func:`practice_configuration`) differs from the thesis in two
-numbers: fineness ratio 3.0, the mean of the fielded aerostats that publish both length and
-diameter (thesis Table 2.3: TIF-1600 2.91, Top Vision 3.14, TIF-25K 3.05), and the envelope and
-fin fabric areal density, CALIBRATED on those same three systems (:mod:`aerostat_core.fielded`);
-the other fielded systems are predictions (docs/validation.md).
+The practice configuration (:func:`practice_configuration`) differs from the thesis in: the
+fineness ratio 3.0, the mean of the fielded aerostats that publish both length and diameter
+(thesis Table 2.3: TIF-1600 2.91, Top Vision 3.14, TIF-25K 3.05); fabrics and tether chosen
+from the catalogue by the loads they carry (aerostat_core.selection, not fitted); and the hull
+systems mass law (two numbers, FITTED on the declared fit set of :mod:`aerostat_core.fielded`,
+a third of the fielded systems, each class represented); the other fielded systems are
+predictions (docs/validation.md §7).
 
 Which numbers are calibrated and which are predicted (the tests say the same):
 

@@ -386,14 +386,19 @@ with tab_val:
                 "Payload [kg]": r["payload_kg"],
                 "Altitude [m]": r["altitude_m"], "Published length [m]": r["published_length_m"],
                 "Predicted length [m]": r["predicted_length_m"],
-                "Error [%]": r["length_error_pct"], "Predicted volume [m³]":
-                r["predicted_volume_m3"], "Sized by": r["sized_by"], "Source": r["source"],
+                "Error [%]": r["length_error_pct"],
+                "Published volume [m³]": r["published_volume_m3"],
+                "Predicted volume [m³]": r["predicted_volume_m3"],
+                "Volume error [%]": r["volume_error_pct"],
+                "Sized by": r["sized_by"], "Source": r["source"],
             } for r in rows]),
             hide_index=True, width="stretch", key="fielded_table",
             column_config={
                 "Predicted length [m]": st.column_config.NumberColumn(format="%.2f"),
                 "Error [%]": st.column_config.NumberColumn(format="%+.1f"),
                 "Predicted volume [m³]": st.column_config.NumberColumn(format="%.1f"),
+                "Published volume [m³]": st.column_config.NumberColumn(format="%.1f"),
+                "Volume error [%]": st.column_config.NumberColumn(format="%+.1f"),
             },
         )
 
