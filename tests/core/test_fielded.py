@@ -8,7 +8,7 @@ import json
 import numpy as np
 import pytest
 
-from aerostat_core.fielded import (
+from aerostat_core.studies.fielded import (
     CLASSES,
     FIELDED,
     aerostat_class,
@@ -16,7 +16,7 @@ from aerostat_core.fielded import (
     fit_rms,
     validate_fielded,
 )
-from aerostat_core.presets import (
+from aerostat_core.model.presets import (
     PRACTICE_FINENESS_RATIO,
     PRACTICE_SYSTEMS_MASS_EXPONENT,
     PRACTICE_SYSTEMS_MASS_PER_VOLUME,
@@ -109,7 +109,7 @@ def test_table_2_3_systems_fall_in_their_table_class() -> None:
 
 
 def test_design_json_has_the_class_and_its_typical_figures(capsys) -> None:
-    from aerostat_core.cli import main
+    from aerostat_core.cli.entry import main
 
     main(["design", "--json", "--payload", "1600", "--altitude", "4600"])
     out = json.loads(capsys.readouterr().out)

@@ -1,4 +1,4 @@
-"""Materials chosen by the loads they carry (aerostat_core.selection; issue 23 items 2 and 8)."""
+"""Materials chosen by the loads they carry (aerostat_core.model.selection; issue 23 items 2 and 8)."""
 
 from __future__ import annotations
 
@@ -7,9 +7,9 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
-from aerostat_core.design import design
-from aerostat_core.inputs import Requirement
-from aerostat_core.materials import (
+from aerostat_core.model.design import design
+from aerostat_core.model.inputs import Requirement
+from aerostat_core.structures.materials import (
     BRAID_EFFICIENCY,
     SELECTABLE_FABRICS,
     SELECTABLE_TETHERS,
@@ -17,9 +17,9 @@ from aerostat_core.materials import (
     FABRIC_SOURCES,
     braid,
 )
-from aerostat_core.mission import effective_tether
-from aerostat_core.presets import practice_configuration
-from aerostat_core.selection import Needs, Shortfall, choose, envelope_stress, select_materials
+from aerostat_core.model.mission import effective_tether
+from aerostat_core.model.presets import practice_configuration
+from aerostat_core.model.selection import Needs, Shortfall, choose, envelope_stress, select_materials
 
 
 def test_catalogues_are_sorted_lightest_first_and_sourced() -> None:
@@ -118,7 +118,7 @@ def test_power_through_the_tether_is_carried_by_the_flown_bundle() -> None:
 
 def test_design_reports_a_catalogue_shortfall_as_a_violation() -> None:
     # an envelope safety factor of 20 at a 60 m/s survival wind: no laminate of the catalogue
-    from aerostat_core.mission import MissionSpec
+    from aerostat_core.model.mission import MissionSpec
 
     cfg = replace(practice_configuration(), mission=MissionSpec(envelope_safety_factor=20.0))
     d = design(Requirement(payload_mass=3000, altitude=3000, survival_wind=60.0), cfg)
