@@ -18,7 +18,9 @@ The loads depend on the hull and the hull on the materials' mass, so the choice 
 point, found by :func:`select_materials`: size the hull with the candidate items' masses (their
 strengths held out of the constraint table), read the loads at the sized volume, take the
 lightest items that carry them, repeat until nothing changes (items only ever get stronger, so
-this ends within the catalogue), then size once more with the chosen items. Where the first
+this ends within the catalogue), then evaluate the table of that hull with the chosen items'
+strengths (the same airframe: a strength changes no mass); where an item row fails there, the
+hull is sized again with the chosen items. Where the first
 candidates (the lightest) already carry their loads on a feasible design, that first sizing is
 the answer. An item no catalogue entry can supply is reported with its shortfall
 (:class:`Shortfall`), and the design then carries the strongest entry.
@@ -226,6 +228,18 @@ class Selection:
         return [s.message() for s in self.shortfalls]
 
 
+def _airframe(req, cfg, volume: float):
+    from aerostat_core.model.airframe import build_airframe
+
+    return build_airframe(req, cfg, volume)
+
+
+def _table(req, cfg, af):
+    from aerostat_core.model.constraints import constraint_state
+
+    return constraint_state(req, cfg, af)
+
+
 def _evaluate(req, cfg):
     """(sizing or None, airframe, state) of ``cfg`` (sized when its volume is None)."""
     from aerostat_core.model.airframe import build_airframe
@@ -277,7 +291,7 @@ def select_materials(req, cfg) -> Selection:
     # the fixed point on the items' masses, strengths held out of the table
     for _ in range(MAX_ROUNDS):
         idx = tuple(max(a, b) for a, b in zip(idx, new))
-        _, af_r, st_r = _evaluate(req, with_items(cfg, idx, relaxed=True))
+        s_r, af_r, st_r = _evaluate(req, with_items(cfg, idx, relaxed=True))
         runs += 1
         cr = with_items(cfg, idx)
         # the loads with the real tether's strength (the table's factors were the relaxed one's)
@@ -286,6 +300,17 @@ def select_materials(req, cfg) -> Selection:
         if all(b <= a for a, b in zip(idx, new)):
             break
     c = with_items(cfg, idx)
+    # the relaxed hull with the chosen items' strengths: the strengths change no mass, so the
+    # airframe is the same and only its table is evaluated again (one volume, not a search);
+    # where every item row holds there, the first feasible volume is the relaxed one (the loads
+    # grow with the hull, so the items hold below it too)
+    volume = float(np.asarray(af_r.hull.volume).reshape(-1)[0])
+    af = _airframe(req, c, volume)
+    state = _table(req, c, af)
+    relaxed_ok = s_r is None or bool(np.asarray(s_r.feasible).reshape(-1)[0])
+    if relaxed_ok and all(_rows_met(state).values()):
+        sizing = None if s_r is None else replace(s_r, state=state)
+        return Selection(c, sizing, needs_of(req, c, af, state), short, runs)
     sizing, af, state = _evaluate(req, c)
     runs += 1
     # the table has the last word (bending on the envelope): the next stronger item there
