@@ -8,8 +8,8 @@ import streamlit as st
 
 from aerostat_core import thesis_baseline
 from aerostat_core.model.io import design_to_json
-from aerostat_core.studies.fielded import class_caption
 from aerostat_core.output.report import DesignReport, tether_profile_rows
+from aerostat_core.studies.fielded import class_caption
 from app_ui import (
     cache,
     envelope_view,

@@ -157,7 +157,8 @@ def summary_json(d: Design) -> str:
     s = d.summary().to_dict()
     s.setdefault("hull_mass_kg", float(d.airframe.mass.items["hull"]))
     s.setdefault("hull_shape", d.airframe.hull.shape)
-    from aerostat_core.studies.fielded import class_figures  # the class of thesis Table 2.3 (issue 23)
+    # the class of thesis Table 2.3 and its fielded systems' figures (issue 23)
+    from aerostat_core.studies.fielded import class_figures
 
     req = d.requirement
     figures = class_figures(req.payload_mass, req.altitude)

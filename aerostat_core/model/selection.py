@@ -37,13 +37,13 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from aerostat_core.model.constraints import NAMES
+from aerostat_core.model.mission import effective_tether
 from aerostat_core.structures.materials import (
     SELECTABLE_FABRICS,
     SELECTABLE_TETHERS,
     Fabric,
     TetherSpec,
 )
-from aerostat_core.model.mission import effective_tether
 from aerostat_core.structures.membrane import required_pressure
 
 #: Half-thickness of an inflated fin section / fin root chord [-]: a 15 %-thick section

@@ -29,6 +29,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from aerostat_core.base.fields import field_spec
+from aerostat_core.geometry.shapes import HullSpec
 from aerostat_core.model.airframe import build_airframe
 from aerostat_core.model.constraints import (
     BY_NAME,
@@ -37,8 +39,6 @@ from aerostat_core.model.constraints import (
     ConstraintState,
     constraint_state,
 )
-from aerostat_core.base.fields import field_spec
-from aerostat_core.geometry.shapes import HullSpec
 from aerostat_core.model.inputs import Configuration, Requirement
 from aerostat_core.tether.statics import interpolated_heights
 

@@ -8,6 +8,12 @@ import json
 import numpy as np
 import pytest
 
+from aerostat_core.model.presets import (
+    PRACTICE_FINENESS_RATIO,
+    PRACTICE_SYSTEMS_MASS_EXPONENT,
+    PRACTICE_SYSTEMS_MASS_PER_VOLUME,
+    practice_configuration,
+)
 from aerostat_core.studies.fielded import (
     CLASSES,
     FIELDED,
@@ -15,12 +21,6 @@ from aerostat_core.studies.fielded import (
     class_figures,
     fit_rms,
     validate_fielded,
-)
-from aerostat_core.model.presets import (
-    PRACTICE_FINENESS_RATIO,
-    PRACTICE_SYSTEMS_MASS_EXPONENT,
-    PRACTICE_SYSTEMS_MASS_PER_VOLUME,
-    practice_configuration,
 )
 
 

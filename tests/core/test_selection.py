@@ -9,17 +9,23 @@ import pytest
 
 from aerostat_core.model.design import design
 from aerostat_core.model.inputs import Requirement
+from aerostat_core.model.mission import effective_tether
+from aerostat_core.model.presets import practice_configuration
+from aerostat_core.model.selection import (
+    Needs,
+    Shortfall,
+    choose,
+    envelope_stress,
+    select_materials,
+)
 from aerostat_core.structures.materials import (
     BRAID_EFFICIENCY,
+    FABRIC_SOURCES,
     SELECTABLE_FABRICS,
     SELECTABLE_TETHERS,
     TETHER_SOURCES,
-    FABRIC_SOURCES,
     braid,
 )
-from aerostat_core.model.mission import effective_tether
-from aerostat_core.model.presets import practice_configuration
-from aerostat_core.model.selection import Needs, Shortfall, choose, envelope_stress, select_materials
 
 
 def test_catalogues_are_sorted_lightest_first_and_sourced() -> None:
