@@ -185,7 +185,11 @@ SYSTEMS_REFERENCE_VOLUME = 1000.0
 
 
 def systems_mass(volume, per_volume: float, exponent: float = 0.0):
-    """Mass of the hull systems that grow with the hull [kg]: m_sys = k_sys V (V/V_ref)^c.
+    """Mass of the hull systems that grow with the hull [kg].
+
+    .. math::
+
+        m_{sys} = k\\, V \\left(V / V_{ref}\\right)^{c}
 
     The items a fabric-and-payload budget leaves out and that scale with the hull volume: the
     pressure-control system (blowers and valves, sized by the air flow that fills the ballonet,
@@ -201,9 +205,11 @@ def systems_mass(volume, per_volume: float, exponent: float = 0.0):
     volume : array_like
         Hull volume [m3].
     per_volume : float
-        k_sys, the mass per m3 of a hull of V_ref = 1000 m3 [kg/m3], valid [0, 2].
+        k_sys, the mass per m3 of a hull of V_ref = 1000 m3 [kg/m3], valid
+        {range:Configuration.systems_mass_per_volume}.
     exponent : float
-        c [-], valid [-0.5, 0.5]: how much faster than V the systems grow (0: in proportion).
+        c [-], valid {range:Configuration.systems_mass_exponent}: how much faster than V the
+        systems grow (0: in proportion).
 
     Notes
     -----

@@ -24,14 +24,14 @@ class Fabric:
     name : str
         Label shown in tables.
     areal_density : float
-        Mass per area (GSM / 1000) [kg/m2], valid (0, 2].
+        Mass per area (GSM / 1000) [kg/m2], valid {range:Fabric.areal_density}.
     tensile_strength : float
         Ultimate tensile strength of the laminate, weaker of warp and fill [N/m], valid
-        (0, 1e6]. Default :data:`ASSUMED_TENSILE_STRENGTH` (no strength is published for the
+        {range:Fabric.tensile_strength}. Default :data:`ASSUMED_TENSILE_STRENGTH` (no strength is published for the
         thesis fabric).
     helium_permeability : float
         Helium permeability at 0 degC, 1 atm of helium partial pressure [L/(m2 day atm)], valid
-        [0, 100]. Default :data:`ADRDE_HELIUM_PERMEABILITY`.
+        {range:Fabric.helium_permeability}. Default :data:`ADRDE_HELIUM_PERMEABILITY`.
     """
 
     name: str = text("Thesis fabric (130 g/m2)", "")
@@ -79,19 +79,21 @@ class TetherSpec:
     name : str
         Label shown in tables.
     linear_density : float
-        Mass per unstretched length [kg/m], valid (0, 5] (strategic electro-mechanical
+        Mass per unstretched length [kg/m], valid {range:TetherSpec.linear_density} (strategic electro-mechanical
         tethers weigh up to a few kg/m).
     diameter : float
-        Outer diameter used for drag and air buoyancy [m], valid (0, 0.1].
+        Outer diameter used for drag and air buoyancy [m], valid {range:TetherSpec.diameter}.
     normal_drag_coefficient : float
-        Cross-flow drag coefficient C_dn on d per length [-], valid (0, 3] (round cable 1.0-1.2).
+        Cross-flow drag coefficient C_dn on d per length [-], valid
+        {range:TetherSpec.normal_drag_coefficient} (round cable 1.0-1.2).
     tangential_drag_coefficient : float
-        Skin-friction coefficient C_dt on the wetted perimeter pi d [-], valid [0, 0.1]
+        Skin-friction coefficient C_dt on the wetted perimeter pi d [-], valid
+        {range:TetherSpec.tangential_drag_coefficient}
         (MoorDyn convention).
     breaking_strength : float
-        Minimum breaking load [N], valid (0, 1e7].
+        Minimum breaking load [N], valid {range:TetherSpec.breaking_strength}.
     axial_stiffness : float
-        EA [N], valid [1e3, 1e9] or ``math.inf`` (inextensible).
+        EA [N], valid {range:TetherSpec.axial_stiffness} or ``math.inf`` (inextensible).
     """
 
     name: str = text("Thesis tether (20 g/m)", "")
@@ -355,8 +357,13 @@ BRAID_DIAMETERS_MM = (3, 4, 5, 6, 8, 10, 12, 14, 16, 20, 24, 28, 32, 40)
 def braid(fibre: str, diameter_mm: float) -> TetherSpec:
     """A braided tether of HMPE ("hmpe") or aramid ("aramid") fibre of diameter ``diameter_mm``.
 
-    m' = rho_fibre x fill x pi d^2/4; F = eta x tenacity x m'; EA = EA_4mm (d/4 mm)^2 (x 83/110
-    for aramid). With eta = :data:`BRAID_EFFICIENCY` (0.65), fill = :data:`BRAID_FILL`.
+    .. math::
+
+        m' = \\rho_f\\, \\phi\\, \\pi d^2/4, \\qquad F = \\eta\\, \\tau\\, m', \\qquad
+        EA = EA_{4} \\left(d / 4\\,\\mathrm{mm}\\right)^2
+
+    (EA x 83/110 for aramid), with eta = :data:`BRAID_EFFICIENCY` (0.65), phi =
+    :data:`BRAID_FILL`, tau the fibre tenacity.
 
     Parameters
     ----------
