@@ -9,6 +9,7 @@ import streamlit as st
 from aerostat_core import thesis_baseline
 from aerostat_core.model.io import design_to_json
 from aerostat_core.output.report import DesignReport, tether_profile_rows
+from aerostat_core.studies.fielded import class_caption
 from app_ui import (
     cache,
     envelope_view,
@@ -252,6 +253,8 @@ with col_out:
         f"Rule set: **{rules.name}** ({rules.title}). "
         + (f"Sized by: {s.binding_constraint.replace('_', ' ')}." if rep.sized else "")
     )
+    st.caption(text.plain(class_caption(rep.inputs["requirement"]["payload_mass"],
+                                        rep.inputs["requirement"]["altitude"])))
     with st.expander(
         "Constraint table: every limit, its margin and where it is checked", icon=":material/rule:"
     ):

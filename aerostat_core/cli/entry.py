@@ -128,6 +128,17 @@ def summary_json(d: Design) -> str:
     s = d.summary().to_dict()
     s.setdefault("hull_mass_kg", float(d.airframe.mass.items["hull"]))
     s.setdefault("hull_shape", d.airframe.hull.shape)
+    # the class of thesis Table 2.3 and its fielded systems' figures (issue 23)
+    from aerostat_core.studies.fielded import class_figures
+
+    req = d.requirement
+    figures = class_figures(req.payload_mass, req.altitude)
+    s.setdefault("class", figures.pop("class"))
+    s.setdefault("class_typical", figures)
+    cfg = d.configuration
+    s.setdefault("hull_fabric", cfg.hull_fabric.name)
+    s.setdefault("fin_fabric", cfg.fin_fabric.name)
+    s.setdefault("tether", cfg.tether.name)
     return json.dumps(s, indent=2)
 
 
