@@ -19,7 +19,7 @@ from pathlib import Path
 
 import pytest
 
-from aerostat_core import design, thesis_baseline, thesis_optimized
+from aerostat_core import Requirement, design, thesis_baseline, thesis_optimized
 from aerostat_core.base.cli_input import decimal, whole
 from aerostat_core.base.validation import InputError, check_name
 from aerostat_core.cli.entry import _inputs, _parser, main
@@ -209,6 +209,8 @@ def _value(p):
     if p.path == "configuration.hull.fineness_ratio":
         return 3.5  # inside every shape's range used here (npl)
     lo, hi = float(s.lo), float(s.hi)
+    if getattr(s, "hi_field", None) == "altitude":
+        hi = min(hi, Requirement().altitude)  # bounded by the altitude given with it (default)
     v = lo + 0.1 * (hi - lo)
     return int(round(v)) if s.kind == "integer" else float(f"{v:.6g}")
 
@@ -314,7 +316,7 @@ def test_the_power_tether_error_is_an_input_error_with_its_field():
     from aerostat_core.model.mission import effective_tether
     from aerostat_core.model.presets import rules_configuration
 
-    req = Requirement(payload_power=1e5, power_via="tether")
+    req = Requirement(payload_power=1e5, power_via="tether", altitude=5000)
     with pytest.raises(InputError) as err:
         effective_tether(req, replace(rules_configuration("practice")))
     e = err.value
