@@ -91,6 +91,7 @@ from .layout import (
     T_M_INV,
     T_N_INV,
 )
+from aerostat_core.dynamics.sixdof_kernel import check6_kernel, rhs6_kernel
 from .tether import air_density, tether_loads
 from .wind import NT, W_GUST_CONV, W_GUST_ON, W_TURB_ON, wind_point, wind_time_terms
 
@@ -189,6 +190,9 @@ def rhs_kernel(t, y, dy, data, diag):  # pragma: no cover - numba
         Diagnostics, ``DIAG_NAMES`` order.
     """
     prm, wpar, sched, turb, tab, strips, rho_tab, cdv = data
+    if prm[P_MODE] == 2.0:  # the 6-DOF hull on a 3-D tether (:mod:`.sixdof_kernel`)
+        rhs6_kernel(t, y, dy, data, diag)
+        return
     wt = np.empty(NT)
     wind_time_terms(t, wpar, sched, wt)
 
@@ -420,6 +424,8 @@ def check_kernel(t, y, data, diag):  # pragma: no cover - numba
     inside the aerodynamic model (tables over +-180 deg) and a slack tether carries no
     compression, so neither stops a run."""
     prm = data[0]
+    if prm[P_MODE] == 2.0:
+        return check6_kernel(t, y, data, diag)
     for i in range(y.size):
         if not math.isfinite(y[i]):
             return 3
