@@ -101,8 +101,9 @@ class Result6:
         return self.system.nodes(self.y[i])[0]
 
     def peaks(self, t_from: float = 0.0) -> dict:
-        """Peak roll, yaw deviation and lateral displacement after ``t_from`` [s] (peak |value -
-        initial value| for yaw and the lateral displacement, |roll| for roll)."""
+        """Peak |roll|, |yaw| (from the upwind direction of the reference azimuth) and |lateral
+        displacement of C| (from the vertical plane of the reference wind through the winch)
+        after ``t_from`` [s]."""
         sel = self.t >= t_from
         if not np.any(sel):
             sel = np.ones_like(self.t, bool)
@@ -111,8 +112,8 @@ class Result6:
         lat = self.signal("y_C")
         return {
             "roll_peak_deg": float(np.max(np.abs(roll[sel]))),
-            "yaw_peak_deg": float(np.max(np.abs(yaw[sel] - yaw[0]))),
-            "lateral_peak_m": float(np.max(np.abs(lat[sel] - lat[0]))),
+            "yaw_peak_deg": float(np.max(np.abs(yaw[sel]))),
+            "lateral_peak_m": float(np.max(np.abs(lat[sel]))),
         }
 
     def to_csv(self, header: dict | None = None) -> str:
