@@ -124,7 +124,7 @@ def run(args: argparse.Namespace) -> int:
 def run_6dof(args: argparse.Namespace) -> int:
     """``simulate --dof 6``: a 6-DOF scenario (:mod:`.scenarios6`); same exit codes."""
     from aerostat_core.dynamics.scenarios6 import Request6, metrics6, run6
-    from aerostat_core.validation import InputError
+    from aerostat_core.base.validation import InputError
 
     scenario = args.scenario or "crosswind-gust"
     try:
@@ -143,7 +143,7 @@ def run_6dof(args: argparse.Namespace) -> int:
         design = None
         if args.design is not None:
             from aerostat_core import design as build
-            from aerostat_core.io import inputs_from_dict
+            from aerostat_core.model.io import inputs_from_dict
 
             try:
                 design = build(*inputs_from_dict(_read_design(args.design)))

@@ -1,5 +1,5 @@
 """Lateral-directional stability of the tethered aerostat from the 6-DOF model
-(docs/dynamics.md §6.5): modes about the equilibrium at each wind speed, the wind speed where
+(docs/dynamics.md §7.5): modes about the equilibrium at each wind speed, the wind speed where
 the first lateral mode goes unstable, and the static lateral derivatives.
 
 Linearisation. At the equilibrium y_e in a steady wind along x (no veer), the model is symmetric

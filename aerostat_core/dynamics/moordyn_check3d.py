@@ -1,4 +1,4 @@
-"""Live 3-D cross-check of the 6-DOF model's tether against MoorDyn (docs/dynamics.md §6.7).
+"""Live 3-D cross-check of the 6-DOF model's tether against MoorDyn (docs/dynamics.md §7.7).
 
 A point aerostat on the 3-D lumped-mass line in a uniform wind whose direction veers with height,
 so the line leaves the vertical plane. MoorDyn side: as :mod:`.moordyn_check` (air as its water,

@@ -1,5 +1,5 @@
 """6-DOF runs from a typed request: the one place where the ``simulate --dof 6`` CLI and the
-Dynamics page turn settings into a system, a 3-D wind, events and a run (docs/dynamics.md §6.4).
+Dynamics page turn settings into a system, a 3-D wind, events and a run (docs/dynamics.md §7.4).
 
 :class:`Request6` is a frozen dataclass whose every field is in the field registry (label, unit,
 range), validated once when it is built; :func:`run6` runs it and :func:`metrics6` gives the
@@ -19,7 +19,7 @@ from aerostat_core.dynamics.results import response_metrics
 from aerostat_core.dynamics.sixdof import Events6, Wind3D, simulate6, system6_from_design
 from aerostat_core.dynamics.turbulence import DRYDEN_W20
 from aerostat_core.dynamics.wind import DrydenTurbulence, Gust, SpeedSchedule, WindScenario
-from aerostat_core.fields import choice, integer, number, validate
+from aerostat_core.base.fields import choice, integer, number, validate
 
 SCENARIOS6 = ("crosswind-gust", "veer", "direction-step", "turbulence-3d", "reel-in", "reel-out",
               "tether-break")
@@ -93,7 +93,7 @@ class Request6:
 
     def header(self) -> dict:
         """``key = value`` lines for the CSV header (every setting, with units)."""
-        from aerostat_core.fields import specs
+        from aerostat_core.base.fields import specs
 
         out = {}
         for name, spec in specs(type(self)).items():

@@ -1,5 +1,5 @@
 """The 6-DOF tethered aerostat: hull, 3-D wind settings, assembly, equilibrium and runs
-(docs/dynamics.md §6).
+(docs/dynamics.md §7).
 
 Typical use::
 
@@ -64,7 +64,7 @@ from aerostat_core.dynamics.sixdof_kernel import (
 from aerostat_core.dynamics.system import Atmosphere, DynamicSystem, system_from_design
 from aerostat_core.dynamics.tether import TetherModel
 from aerostat_core.dynamics.wind import WindField, WindScenario
-from aerostat_core.fields import number, validate
+from aerostat_core.base.fields import number, validate
 
 #: Quaternion norm stabilisation gain [1/s] (Baumgarte-type; the kernel normalises anyway).
 QUATERNION_GAIN = 1.0
@@ -115,7 +115,7 @@ def fin_layout_factors(arrangement: str, panel_area: float, lift_slope: float, e
     ratio = sum sin^2 phi_k / sum cos^2 phi_k; K_p = 1/2 eta C_L,alpha S_1 n r^2, with phi_k the
     fin angles from the horizontal (:data:`FIN_ANGLES_DEG`), S_1 one panel's area [m2],
     C_L,alpha the static model's fin lift slope [1/rad], eta its efficiency [-] and r the radius
-    of the panels' centroid [m]. Source: strip theory of each panel (docs/dynamics.md §6.2).
+    of the panels' centroid [m]. Source: strip theory of each panel (docs/dynamics.md §7.2).
 
     Examples
     --------
@@ -190,7 +190,7 @@ def hull6_simple(hull: HullModel, arrangement: str = "+", roll_inertia: float | 
 class Wind3D:
     """A 3-D wind: the 3-DOF :class:`~.wind.WindScenario` (speed along the wind, vertical) turned
     to an azimuth, veering with height, stepping in direction, with a crosswind gust and lateral
-    turbulence (docs/dynamics.md §6.3).
+    turbulence (docs/dynamics.md §7.3).
 
     Parameters
     ----------

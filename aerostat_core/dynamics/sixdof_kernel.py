@@ -1,4 +1,4 @@
-"""Numba kernels of the 6-DOF tethered-aerostat model (docs/dynamics.md §6).
+"""Numba kernels of the 6-DOF tethered-aerostat model (docs/dynamics.md §7).
 
 States (mode 2 of the parameter vector). Tether nodes 1..N-1: (x, y, z, v_x, v_y, v_z) each, node
 after node (earth axes: x along the reference wind direction, z up, y = z x x... completing the
@@ -258,7 +258,7 @@ def lateral_turbulence(tau, z, wpar, turb):  # pragma: no cover - numba
 
 @njit(cache=True)
 def wind3(t, x, y, z, prm, wpar, wt, turb, out):  # pragma: no cover - numba
-    """3-D wind at (x, y, z) [m], time t [s] (docs/dynamics.md §6.3): out = (U_x, U_y, U_z [m/s],
+    """3-D wind at (x, y, z) [m], time t [s] (docs/dynamics.md §7.3): out = (U_x, U_y, U_z [m/s],
     DU_x/Dt, DU_y/Dt, DU_z/Dt [m/s2]).
 
     The along-wind speed and the vertical wind are the 3-DOF wind (:func:`.wind.wind_point`) at

@@ -1,5 +1,5 @@
 """Time histories of a 6-DOF run: signals with units, peaks, CSV and JSON exports
-(docs/dynamics.md §6.6).
+(docs/dynamics.md §7.6).
 
 Positions are reported in the wind frame of the reference azimuth chi_0: x along the wind
 (blow-by), y to its left (lateral displacement), z up; yaw is the heading of the nose relative
@@ -39,6 +39,12 @@ SIGNALS6 = {
     "wind_y": ("wind at the hull across the reference direction", "m/s"),
     "wind_z": ("vertical wind at the hull", "m/s"),
 }
+
+
+def column_name(name: str) -> str:
+    """CSV column of a signal with its unit, the 3-DOF export's convention (``y_C_m``,
+    ``roll_deg``, ``vx_m_s``)."""
+    return f"{name}_{SIGNALS6[name][1].replace('/', '_')}"
 
 
 class Result6:
@@ -122,7 +128,7 @@ class Result6:
         lines.append(f"# status = {self.message}")
         names = list(SIGNALS6)
         cols = [self.t] + [self.signal(n) for n in names]
-        lines.append(",".join(["t [s]"] + [f"{n} [{SIGNALS6[n][1]}]" for n in names]))
+        lines.append(",".join(["t_s"] + [column_name(n) for n in names]))
         arr = np.column_stack(cols)
         lines += [",".join(f"{v:.6g}" for v in row) for row in arr]
         return "\n".join(lines) + "\n"

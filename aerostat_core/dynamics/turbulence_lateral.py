@@ -1,6 +1,6 @@
 """Lateral turbulence v' for the 6-DOF model: the MIL-HDBK-1797 Dryden lateral component on the
 same height levels, frequencies and IEC 61400-1 coherence as the u' and w' of :mod:`.turbulence`
-(docs/dynamics.md §6.3).
+(docs/dynamics.md §7.3).
 
 MIL-F-8785C low altitude: L_v = L_u, sigma_v = sigma_u, and the lateral spectrum has the form of
 the vertical one, Phi_v(omega) = sigma_v^2 L_v/(pi U) (1 + 3 (L_v omega/U)^2)/(1 + (L_v omega/U)^2)^2.

@@ -26,7 +26,7 @@ from aerostat_core.dynamics.sixdof import (
 from aerostat_core.dynamics.system import Atmosphere, system_from_design
 from aerostat_core.dynamics.tether import TetherModel
 from aerostat_core.dynamics.wind import Gust, SpeedSchedule, WindScenario
-from aerostat_core.validation import InputError
+from aerostat_core.base.validation import InputError
 
 
 @pytest.fixture(scope="module")
@@ -124,7 +124,7 @@ def test_bad_3d_wind_names_the_field_and_the_range():
 
 
 def test_every_new_input_has_a_label_unit_and_range():
-    from aerostat_core.fields import specs
+    from aerostat_core.base.fields import specs
     from aerostat_core.dynamics.sixdof import Events6
 
     for cls in (Wind3D, Events6):
@@ -141,3 +141,33 @@ def test_a_hull_without_lift_stops_at_the_ground_and_says_why():
                   initial_state=straight_state6(s, (0.0, 0.0, 319.0)))
     assert not r.ok and r.status in (11, 12)
     assert "ground" in r.message and "stopped at t" in r.message
+
+
+def test_lateral_modes_of_the_thesis_design_and_the_constraint_row(design):
+    from dataclasses import replace
+
+    from aerostat_core.dynamics.lateral import (
+        lateral_modes,
+        static_lateral_derivatives,
+        unstable_above,
+    )
+    from aerostat_core.dynamics.lateral_constraint import lateral_constraint_row
+
+    s8 = system6_from_design(design, segments=8)
+    an = [lateral_modes(s8, v, design) for v in (5.0, 10.0)]
+    assert all(a.stable for a in an) and unstable_above(an) is None
+    slow = an[1].modes[0]  # the pendulum of the whole system
+    assert 0.005 < slow.frequency_hz < 0.02 and slow.time_to_half_s > 0
+    der = static_lateral_derivatives(s8, 10.0, design, state=an[1].state)
+    assert der["C_Y_beta_per_rad"] < 0
+    # yaw and pitch of a body of revolution: same sign of the moment slope about the CV
+    row = {r["wind_speed_m_s"]: r for r in design.performance.rows()}[10.0]
+    assert np.sign(der["C_n_beta_per_rad"]) == -np.sign(row["cm_alpha_aero_cv_per_rad"])
+    # thesis rules: the row is off
+    assert lateral_constraint_row(design, an, None) is None
+    d2 = replace(design, requirement=replace(design.requirement, rules="practice",
+                                             survival_wind=10.0))
+    r = lateral_constraint_row(d2, an, None)
+    assert r["met"] and r["g"] <= 0 and r["value"] == 10.0
+    r = lateral_constraint_row(d2, an, 8.0)
+    assert not r["met"] and r["g"] > 0
