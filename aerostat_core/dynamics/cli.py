@@ -142,7 +142,7 @@ def run_6dof(args: argparse.Namespace) -> int:
                              f"[{exc.lo:g}, {exc.hi:g}] {exc.unit}".rstrip()) from None
         design = None
         if args.design is not None:
-            from aerostat_core import design as build
+            from aerostat_core.model.design import design as build
             from aerostat_core.model.io import inputs_from_dict
 
             try:
