@@ -156,7 +156,7 @@ def unstable_above(analyses) -> float | None:
     Examples
     --------
     >>> A = LateralAnalysis
-    >>> unstable_above([A(5.0, (), -0.1, None), A(6.0, (), 0.1, None)])
+    >>> round(unstable_above([A(5.0, (), -0.1, None), A(6.0, (), 0.1, None)]), 3)
     5.5
     """
     prev = None

@@ -13,7 +13,7 @@ KEYS_6DOF = {"roll_peak_deg", "yaw_peak_deg", "lateral_peak_m", "lateral_unstabl
 
 def test_reel_in_json_has_the_3dof_and_lateral_keys(tmp_path, capsys):
     csv = tmp_path / "reel.csv"
-    assert main(["simulate", "--dof", "6", "--scenario", "reel-in", "--duration", "50",
+    assert main(["simulate", "--dof", "6", "--scenario", "reel-in", "--duration", "60",
                  "--json", "--csv", str(csv)]) == 0
     m = json.loads(capsys.readouterr().out)
     assert KEYS_3DOF | KEYS_6DOF <= set(m)
