@@ -137,7 +137,8 @@ def lateral_sweep(design, speeds=None, segments: int = 8):
 
     Returns (analyses, unstable_above [m/s] or None): the speed where the largest real part of
     the lateral eigenvalues crosses zero (linear interpolation between the bracketing speeds),
-    None when every lateral mode is stable up to the survival wind."""
+    None when every lateral mode is stable up to the survival wind. A speed without an
+    equilibrium (a line too slack to converge) is left out of ``analyses``."""
     if speeds is None:
         top = float(design.requirement.survival_wind)
         speeds = np.arange(2.0, top + 1e-9, 1.0)
@@ -146,7 +147,12 @@ def lateral_sweep(design, speeds=None, segments: int = 8):
     system = system6_from_design(design, segments=segments)
     out = []
     for v in speeds:
-        out.append(lateral_modes(system, float(v), design))
+        try:
+            out.append(lateral_modes(system, float(v), design))
+        except RuntimeError:
+            continue  # no equilibrium found at this speed: the sweep goes on without it
+    if not out:
+        raise RuntimeError("lateral stability: no equilibrium found at any wind speed")
     return out, unstable_above(out)
 
 

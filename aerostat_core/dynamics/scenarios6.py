@@ -169,6 +169,7 @@ def metrics6(res, req: Request6, design, lateral: bool = True) -> dict:
 
         analyses, above = lateral_sweep(design)
         out["lateral_unstable_above_m_s"] = above
+        out["lateral_speeds_m_s"] = [a.speed for a in analyses]  # speeds with an equilibrium
         near = min(analyses, key=lambda a: abs(a.speed - req.speed))
         out["lateral_modes"] = [m.row() for m in near.modes[:6]]
         out["lateral_modes_speed_m_s"] = near.speed

@@ -552,11 +552,23 @@ def initial_state6(system: System6, wind3: Wind3D, design=None, field_: WindFiel
     f0 = wind3.base.realize(system.tether.length, 60.0) if field_ is None else field_
     g3 = engine_guess(base, design, wind3.base.initial_speed()) if design is not None \
         else straight_guess(base, f0)
-    y3, _ = equilibrium(base, f0, g3)
+    try:
+        y3, _ = equilibrium(base, f0, g3)
+    except RuntimeError:
+        if design is None:
+            raise
+        y3, _ = equilibrium(base, f0, straight_guess(base, f0))  # the engine's line too coarse
     y6 = system.from_3dof(y3, wind3.azimuth_deg)
     if data is None:
         data = system.data(f0, wind3)
-    return equilibrium6(system, data, y6)[0]
+    y = equilibrium6(system, data, y6)[0]
+    roll, pitch, yaw = system.euler(y)
+    yaw_rel = math.remainder(yaw + math.radians(wind3.azimuth_deg), 2 * math.pi)
+    if max(abs(roll), abs(pitch), abs(yaw_rel)) > 0.5 * math.pi:
+        raise RuntimeError("static equilibrium not found with the nose into the wind (the search "
+                           f"ended at roll {math.degrees(roll):.0f}, pitch "
+                           f"{math.degrees(pitch):.0f}, yaw {math.degrees(yaw_rel):.0f} deg)")
+    return y
 
 
 def simulate6(system: System6, wind3: Wind3D, duration: float, options=None,
