@@ -78,8 +78,8 @@ def build_request6(scenario: str, values: Mapping[str, Any]) -> tuple[Request6 |
 
 
 def _design(inputs: Mapping[str, Any] | None):
-    from aerostat_core.model.design import design
     from aerostat_core.dynamics.cases import thesis_design
+    from aerostat_core.model.design import design
 
     return thesis_design() if inputs is None else design(*inputs_from_dict(dict(inputs)))
 

@@ -123,8 +123,8 @@ def run(args: argparse.Namespace) -> int:
 
 def run_6dof(args: argparse.Namespace) -> int:
     """``simulate --dof 6``: a 6-DOF scenario (:mod:`.scenarios6`); same exit codes."""
-    from aerostat_core.dynamics.scenarios6 import Request6, metrics6, run6
     from aerostat_core.base.validation import InputError
+    from aerostat_core.dynamics.scenarios6 import Request6, metrics6, run6
 
     scenario = args.scenario or "crosswind-gust"
     try:

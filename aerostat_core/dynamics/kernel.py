@@ -44,6 +44,8 @@ import math
 import numpy as np
 from numba import njit
 
+from aerostat_core.dynamics.sixdof_kernel import check6_kernel, rhs6_kernel
+
 from .layout import (
     P_AERO_AX,
     P_AERO_CF,
@@ -91,7 +93,6 @@ from .layout import (
     T_M_INV,
     T_N_INV,
 )
-from aerostat_core.dynamics.sixdof_kernel import check6_kernel, rhs6_kernel
 from .tether import air_density, tether_loads
 from .wind import NT, W_GUST_CONV, W_GUST_ON, W_TURB_ON, wind_point, wind_time_terms
 

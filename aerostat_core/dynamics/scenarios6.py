@@ -14,12 +14,12 @@ from typing import Any
 
 import numpy as np
 
+from aerostat_core.base.fields import choice, integer, number, validate
 from aerostat_core.dynamics.options import SolverOptions
 from aerostat_core.dynamics.results import response_metrics
 from aerostat_core.dynamics.sixdof import Events6, Wind3D, simulate6, system6_from_design
 from aerostat_core.dynamics.turbulence import DRYDEN_W20
-from aerostat_core.dynamics.wind import DrydenTurbulence, Gust, SpeedSchedule, WindScenario
-from aerostat_core.base.fields import choice, integer, number, validate
+from aerostat_core.dynamics.wind import DrydenTurbulence, SpeedSchedule, WindScenario
 
 SCENARIOS6 = ("crosswind-gust", "veer", "direction-step", "turbulence-3d", "reel-in", "reel-out",
               "tether-break")

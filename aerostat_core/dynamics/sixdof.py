@@ -22,12 +22,18 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from aerostat_core.base.fields import number, validate
 from aerostat_core.dynamics.bodies import HullModel
 from aerostat_core.dynamics.kernel_cache import ensure_fresh_cache
 from aerostat_core.dynamics.layout import P_MODE, P_SIZE, P_XA, P_XC, P_ZA, P_ZC
 from aerostat_core.dynamics.sixdof_kernel import (
     DIAG6_NAMES,
     ND6,
+    STATUS6,
+    nodes6_kernel,
+    rhs6_kernel,
+)
+from aerostat_core.dynamics.sixdof_layout import (
     Q_AZ,
     Q_BREAK_T,
     Q_DIR_STEP,
@@ -57,14 +63,10 @@ from aerostat_core.dynamics.sixdof_kernel import (
     Q_VEER_Z,
     Q_YA,
     Q_ZW,
-    STATUS6,
-    nodes6_kernel,
-    rhs6_kernel,
 )
 from aerostat_core.dynamics.system import Atmosphere, DynamicSystem, system_from_design
 from aerostat_core.dynamics.tether import TetherModel
 from aerostat_core.dynamics.wind import WindField, WindScenario
-from aerostat_core.base.fields import number, validate
 
 #: Quaternion norm stabilisation gain [1/s] (Baumgarte-type; the kernel normalises anyway).
 QUATERNION_GAIN = 1.0
@@ -577,14 +579,31 @@ def simulate6(system: System6, wind3: Wind3D, duration: float, options=None,
     :mod:`.solver`, from the static equilibrium (or ``initial_state``). Returns a
     :class:`~.sixdof_results.Result6`; a run that leaves the physical domain stops with its
     history up to there and the reason in ``message``."""
+    from aerostat_core.dynamics.kernel import ND, rhs_kernel
     from aerostat_core.dynamics.options import MAX_OUTPUT_BYTES, STATUS_DRIVER, SolverOptions
     from aerostat_core.dynamics.simulate import warm_kernels
     from aerostat_core.dynamics.sixdof_results import Result6
     from aerostat_core.dynamics.solver import (
-        F_ETA, F_H, F_SIZE, F_STALE, F_T, O_HMAX, O_HMIN, O_JAC_EVERY, O_KAPPA, O_MAXIT,
-        O_MAXSTEPS, O_RTOL, O_SIZE, S_IOUT, S_SIZE, S_STEPS, STATUS, band_width,
-        integrate_chunk)
-    from aerostat_core.dynamics.kernel import ND, rhs_kernel
+        F_ETA,
+        F_H,
+        F_SIZE,
+        F_STALE,
+        F_T,
+        O_HMAX,
+        O_HMIN,
+        O_JAC_EVERY,
+        O_KAPPA,
+        O_MAXIT,
+        O_MAXSTEPS,
+        O_RTOL,
+        O_SIZE,
+        S_IOUT,
+        S_SIZE,
+        S_STEPS,
+        STATUS,
+        band_width,
+        integrate_chunk,
+    )
 
     opt = options or SolverOptions()
     if not (isinstance(duration, (int, float)) and math.isfinite(duration)

@@ -6,6 +6,7 @@ import math
 import numpy as np
 import pytest
 
+from aerostat_core.base.validation import InputError
 from aerostat_core.dynamics import cases
 from aerostat_core.dynamics.bodies import ellipsoid_hull
 from aerostat_core.dynamics.moordyn_check3d import (
@@ -26,7 +27,6 @@ from aerostat_core.dynamics.sixdof import (
 from aerostat_core.dynamics.system import Atmosphere, system_from_design
 from aerostat_core.dynamics.tether import TetherModel
 from aerostat_core.dynamics.wind import Gust, SpeedSchedule, WindScenario
-from aerostat_core.base.validation import InputError
 
 
 @pytest.fixture(scope="module")
