@@ -48,6 +48,11 @@ _EXPORTS = {
     "TetherModel": "tether",
     "DrydenTurbulence": "wind", "Gust": "wind", "MeanProfile": "wind", "SpeedSchedule": "wind",
     "WindScenario": "wind", "dryden_parameters": "wind",
+    # 6-DOF (docs/dynamics.md §7)
+    "Events6": "sixdof", "Hull6": "sixdof", "System6": "sixdof", "Wind3D": "sixdof",
+    "simulate6": "sixdof", "system6_from_design": "sixdof", "Result6": "sixdof_results",
+    "lateral_modes": "lateral", "lateral_sweep": "lateral",
+    "static_lateral_derivatives": "lateral", "Request6": "scenarios6", "run6": "scenarios6",
 }
 
 

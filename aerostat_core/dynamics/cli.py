@@ -2,6 +2,8 @@
 
     aerostat simulate --scenario {steady,varying,gust,turbulence}
         [--design design.json] [--duration S] [--seed N] [--csv out.csv] [--json]
+    python -m aerostat_core simulate --dof 6 --scenario {crosswind-gust,veer,direction-step,
+        turbulence-3d,reel-in,reel-out,tether-break} [same options]
 
 The default design is the thesis optimised design (:func:`aerostat_core.model.presets.thesis_optimized`)
 and each scenario has the thesis comparison's settings (:mod:`.thesis`). ``--json`` prints
@@ -9,6 +11,11 @@ settling_time_s, pitch_range_deg [min, max], u_peak_mps, w_peak_mps, pitch_peak_
 deviations from the mean over the stated window), tension_range_N [min, max], status, the
 window, the RMS values, slack events and the limits; the CSV header records the scenario and
 every parameter. Bad input exits with code 2 and one line naming the option.
+
+``--dof 6`` runs the 6-DOF model (:mod:`.scenarios6`); its JSON has the same keys plus
+roll_peak_deg, yaw_peak_deg, lateral_peak_m, lateral_unstable_above_m_s (null when every lateral
+mode is stable up to the survival wind), lateral_modes, static_derivatives,
+tension_winch_peak_N, tether_length_range_m (and ascent_m, drift_m after a tether break).
 """
 
 from __future__ import annotations
@@ -20,6 +27,7 @@ import sys
 from pathlib import Path
 
 from aerostat_core.base.cli_input import OptionError, decimal, whole
+from aerostat_core.dynamics.scenarios6 import SCENARIOS6
 
 #: Largest design file read [bytes].
 MAX_DESIGN_BYTES = 1_000_000
@@ -31,10 +39,19 @@ def add_parser(subparsers) -> argparse.ArgumentParser:
         "simulate", help="simulate the aerostat in gusts, ramps or turbulence"
     )
     p.add_argument(
+        "--dof",
+        type=whole,
+        choices=(3, 6),
+        default=3,
+        help="3: the longitudinal model (thesis scenarios); 6: the 6-DOF hull on a 3-D tether",
+    )
+    p.add_argument(
         "--scenario",
-        choices=("steady", "varying", "gust", "turbulence"),
-        default="gust",
-        help="wind scenario (thesis comparison settings)",
+        choices=("steady", "varying", "gust", "turbulence") + SCENARIOS6,
+        default=None,
+        help="wind scenario: steady, varying, gust, turbulence (--dof 3, thesis comparison "
+        "settings; default gust) or " + ", ".join(SCENARIOS6) + " (--dof 6; default "
+        "crosswind-gust)",
     )
     p.add_argument("--design", type=Path, help="JSON design file (default: thesis optimised)")
     p.add_argument("--duration", type=decimal,
@@ -66,6 +83,13 @@ def run(args: argparse.Namespace) -> int:
     from .scenarios import limits_of, request_header, run_request
     from .thesis import metrics, thesis_request, thesis_settings_text
 
+    if args.dof == 6:
+        return run_6dof(args)
+    if args.scenario is None:
+        args.scenario = "gust"
+    if args.scenario in SCENARIOS6:
+        print(f"error: --scenario {args.scenario} needs --dof 6", file=sys.stderr)
+        return 2
     try:
         if args.duration is not None and not 0 < args.duration <= 3600:
             raise OptionError(
@@ -98,6 +122,70 @@ def run(args: argparse.Namespace) -> int:
         _print(m, args)
     except BrokenPipeError:  # e.g. piped into head: stop quietly
         sys.stdout = open(os.devnull, "w")  # noqa: SIM115 - swallow the interpreter's final flush
+    return 0 if res.ok else 1
+
+
+def run_6dof(args: argparse.Namespace) -> int:
+    """``simulate --dof 6``: a 6-DOF scenario (:mod:`.scenarios6`); same exit codes."""
+    from aerostat_core.base.validation import InputError
+    from aerostat_core.dynamics.scenarios6 import Request6, metrics6, run6
+
+    scenario = args.scenario or "crosswind-gust"
+    try:
+        if scenario not in SCENARIOS6:
+            raise ValueError(f"--scenario {scenario} is a 3-DOF scenario: use --dof 3 (or one of "
+                             f"{', '.join(SCENARIOS6)})")
+        kw = {"seed": args.seed}
+        if args.duration is not None:
+            kw["duration"] = args.duration
+        try:
+            req = Request6.for_scenario(scenario, **kw)
+        except InputError as exc:
+            opt = {"duration": "--duration", "seed": "--seed"}.get(exc.field, exc.field)
+            raise ValueError(f"{opt} = {exc.value} is outside the valid range "
+                             f"[{exc.lo:g}, {exc.hi:g}] {exc.unit}".rstrip()) from None
+        design = None
+        if args.design is not None:
+            from aerostat_core.model.design import design as build
+            from aerostat_core.model.io import inputs_from_dict
+
+            try:
+                design = build(*inputs_from_dict(_read_design(args.design)))
+            except OSError as exc:
+                raise ValueError(f"--design {args.design}: {exc.strerror}") from None
+        res, d = run6(req, design)
+        m = metrics6(res, req, d)
+    except (ValueError, RuntimeError) as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return 2
+    m["scenario"] = scenario
+    m["dof"] = 6
+    m["settings"] = "; ".join(f"{k} = {v}" for k, v in req.header().items())
+    m["wall_time_s"] = res.stats["wall_time"]
+    if args.csv is not None:
+        try:
+            args.csv.write_text(res.to_csv(header=req.header()))
+        except OSError as exc:
+            print(f"error: --csv {args.csv}: {exc.strerror}", file=sys.stderr)
+            return 2
+    try:
+        if args.json:
+            print(json.dumps(m, indent=2))
+        else:
+            above = m["lateral_unstable_above_m_s"]
+            lines = [f"{scenario} (6-DOF): {m['status']}",
+                     f"  roll peak         {m['roll_peak_deg']:.2f} deg",
+                     f"  yaw peak          {m['yaw_peak_deg']:.2f} deg",
+                     f"  lateral peak      {m['lateral_peak_m']:.2f} m",
+                     f"  tension at C      {m['tension_range_N'][0]:.0f} .. "
+                     f"{m['tension_range_N'][1]:.0f} N",
+                     "  laterally stable up to the survival wind" if above is None else
+                     f"  LATERALLY UNSTABLE above {above:.1f} m/s"]
+            if args.csv is not None:
+                lines.append(f"  CSV written to {args.csv}")
+            print("\n".join(lines))
+    except BrokenPipeError:
+        sys.stdout = open(os.devnull, "w")  # noqa: SIM115
     return 0 if res.ok else 1
 
 
