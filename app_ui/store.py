@@ -97,12 +97,14 @@ class CaseConflict(ValueError):
 
     def __init__(self, kind: str, name: str, version: int | None = None) -> None:
         self.kind, self.name, self.version = kind, name, version
-        what = {
-            "taken": "a case of that name exists",
-            "changed": "it was changed in another tab or session",
-            "gone": "it was deleted in another tab or session",
-        }[kind]
-        super().__init__(f"case {name!r}: {what}")
+        super().__init__(
+            {
+                "taken": f"A case named “{name}” exists already",
+                "changed": f"“{name}” was changed in another tab or session since this page "
+                "showed it",
+                "gone": f"“{name}” was deleted in another tab or session",
+            }[kind]
+        )
 
 
 @dataclass(frozen=True)
@@ -473,12 +475,18 @@ class Store:
         return self._run("save the case", w)
 
     def add_cases(
-        self, token: str, new: dict[str, dict[str, Any]], *, limit: int = 100
+        self,
+        token: str,
+        new: dict[str, dict[str, Any]],
+        *,
+        limit: int = 100,
+        max_cases: int | None = None,
     ) -> dict[str, int]:
         """Add cases at the end, in one transaction, never touching the saved ones: a case
         identical to a saved one (name and inputs) is skipped, another whose name is taken is
         added as ``name (2)``... (within ``limit`` characters). Returns ``{name used: version}``
-        of the rows added."""
+        of the rows added. More than ``max_cases`` cases in all raises ``ValueError`` (nothing
+        added)."""
         self._check(token)
 
         def w(conn):
@@ -493,6 +501,7 @@ class Store:
                 self._insert(conn, token, final, text, seq, len(used))
                 used[final] = seq + len(used)
                 saved[final] = text
+            _check_count(len(saved), max_cases)
             if used:
                 self._advance(conn, token, seq + len(used) - 1)
             return used
@@ -506,6 +515,7 @@ class Store:
         *,
         seen: dict[str, int] | None = None,
         limit: int = 100,
+        max_cases: int | None = None,
     ) -> dict[str, int]:
         """Make ``new`` (in order) the workspace's cases, in one transaction; returns
         ``{name used: version}`` of the rows added.
@@ -534,6 +544,7 @@ class Store:
                 self._insert(conn, token, final, _dumps(inputs), seq, len(used))
                 used[final] = seq + len(used)
                 taken.add(final)
+            _check_count(len(taken), max_cases)
             if used:
                 self._advance(conn, token, seq + len(used) - 1)
             return used
@@ -582,6 +593,11 @@ class Store:
 
     def dispose(self) -> None:
         self.engine.dispose()
+
+
+def _check_count(n: int, max_cases: int | None) -> None:
+    if max_cases is not None and n > max_cases:
+        raise ValueError(f"That would make {n} cases; at most {max_cases} can be saved.")
 
 
 def _sqlite_pragmas(dbapi_conn, _record, busy_s: float = SQLITE_BUSY_TIMEOUT_S) -> None:
