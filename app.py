@@ -9,7 +9,7 @@ from pathlib import Path
 import streamlit as st
 
 from app_ui.errors import report_unexpected
-from app_ui.state import STORE_ERR_KEY, attach_workspace
+from app_ui import workspace_ui
 
 HERE = Path(__file__).resolve().parent
 
@@ -30,8 +30,9 @@ st.set_page_config(
     layout="wide",
     initial_sidebar_state="expanded",
 )
-# Binds this session to the workspace in the URL (?ws=...) and loads its saved cases.
-attach_workspace()
+# Binds this session to the workspace in the URL (?ws=...) and loads its saved cases; a bare
+# address offers the browser's recent workspaces back.
+workspace_ui.attach()
 
 pages = [
     st.Page(str(HERE / path), title=title, icon=icon, default=(i == 0))
@@ -40,13 +41,7 @@ pages = [
 ]
 with st.sidebar:
     st.caption("Tethered aerostat design · Mahmood (2020) method, rebuilt from public sources")
-    st.caption(
-        "Your inputs and saved cases are kept in this workspace: bookmark or share this page's "
-        "address to come back to them."
-    )
-store_error = st.session_state.get(STORE_ERR_KEY)
-if store_error:
-    st.warning(store_error, icon=":material/database:")
+workspace_ui.status()  # where the work is kept; database outages; unsaved cases
 try:
     st.navigation(pages).run()
 except Exception as exc:  # noqa: BLE001 - the error boundary: never a traceback on screen

@@ -519,7 +519,7 @@ def read_upload(uploaded: Any) -> bytes:
     return raw
 
 
-def _file_kind(raw: bytes) -> str:
+def file_kind(raw: bytes) -> str:
     """'cases' when the text mentions the cases format, else 'design' (parsers check properly)."""
     return "cases" if b'"aerostat-cases"' in raw else "design"
 
@@ -530,9 +530,11 @@ def import_file(
     *,
     filename: str = "the file",
     mode: str = "add",
+    seen: dict[str, int] | None = None,
 ) -> tuple[str, str]:
     """Apply an uploaded JSON file: a design file replaces the current inputs, a cases file adds
-    its cases (``mode="add"``) or replaces every saved case (``mode="replace"``). Returns
+    its cases (``mode="add"``) or replaces the saved cases the user saw (``mode="replace"``,
+``seen`` as in :func:`add_cases`). Returns
     ``(level, message)`` with level "success", "info" or "error".
 
     All-or-nothing: a malformed, hostile, oversized or out-of-range file changes nothing and the
@@ -544,9 +546,9 @@ def import_file(
     try:
         if len(raw) > MAX_JSON_BYTES:
             raise ValueError(f"the file is {len(raw):,} bytes; the limit is {MAX_JSON_BYTES:,}")
-        if _file_kind(raw) == "cases":
+        if file_kind(raw) == "cases":
             new = cases_from_json(raw)
-            names = add_cases(new, s, mode=mode)
+            names = add_cases(new, s, mode=mode, seen=seen)
             if not names:
                 return "info", f"Every case in {filename} is saved already; nothing was added."
             shown = ", ".join(names[:5]) + (" ..." if len(names) > 5 else "")
