@@ -8,8 +8,8 @@ from pathlib import Path
 
 import streamlit as st
 
-from app_ui.errors import report_unexpected
 from app_ui import workspace_ui
+from app_ui.errors import report_unexpected
 
 HERE = Path(__file__).resolve().parent
 

@@ -95,9 +95,7 @@ def resolve(action: str, s: MutableMapping[str, Any] | None = None) -> None:
     req, cfg = inputs_from_dict(choice["inputs"])
     try:
         if action == "replace":
-            used = state.save_case(
-                name, req, cfg, s, on_taken="replace", version=choice["version"]
-            )
+            used = state.save_case(name, req, cfg, s, on_taken="replace", version=choice["version"])
         else:
             used = state.save_case(name, req, cfg, s, on_taken="suffix")
     except CaseConflict as exc:

@@ -155,9 +155,11 @@ def _flush(s: MutableMapping[str, Any]) -> None:
         return
     used = _call(s, "add_cases", unsaved, limit=MAX_NAME_CHARS)
     _discard(s, UNSAVED_KEY)
-    renamed = [
-        f"“{old}” as “{new}”" for old, new in zip(unsaved, used) if old != new
-    ] if len(used) == len(unsaved) else []
+    renamed = (
+        [f"“{old}” as “{new}”" for old, new in zip(unsaved, used) if old != new]
+        if len(used) == len(unsaved)
+        else []
+    )
     note = f"The database is back: wrote {len(unsaved)} case(s) saved while it was unavailable."
     if renamed:
         note += " Another tab had taken a name, so both are kept: saved " + ", ".join(renamed)
@@ -398,7 +400,11 @@ def add_cases(
             if mode == "replace":
                 seen = case_versions(s) if seen is None else seen
                 used = _call(
-                    s, "replace_cases", checked, seen=seen, limit=MAX_NAME_CHARS,
+                    s,
+                    "replace_cases",
+                    checked,
+                    seen=seen,
+                    limit=MAX_NAME_CHARS,
                     max_cases=MAX_CASES,
                 )
             else:
@@ -451,9 +457,7 @@ def rename_case(old: str, new: str, state: MutableMapping[str, Any] | None = Non
         except _store.StoreUnavailable as exc:
             raise _unavailable(exc, "renamed") from None
         s[CASES_KEY] = {(new if k == old else k): v for k, v in cases.items()}
-        s[VERSIONS_KEY] = {
-            **{k: v for k, v in case_versions(s).items() if k != old}, new: written
-        }
+        s[VERSIONS_KEY] = {**{k: v for k, v in case_versions(s).items() if k != old}, new: written}
         _refresh(s)
         return new
     if old in unsaved:
@@ -533,12 +537,12 @@ def import_file(
     seen: dict[str, int] | None = None,
 ) -> tuple[str, str]:
     """Apply an uploaded JSON file: a design file replaces the current inputs, a cases file adds
-    its cases (``mode="add"``) or replaces the saved cases the user saw (``mode="replace"``,
-``seen`` as in :func:`add_cases`). Returns
-    ``(level, message)`` with level "success", "info" or "error".
+        its cases (``mode="add"``) or replaces the saved cases the user saw (``mode="replace"``,
+    ``seen`` as in :func:`add_cases`). Returns
+        ``(level, message)`` with level "success", "info" or "error".
 
-    All-or-nothing: a malformed, hostile, oversized or out-of-range file changes nothing and the
-    message says why (the engine's messages name the field), capped in length.
+        All-or-nothing: a malformed, hostile, oversized or out-of-range file changes nothing and the
+        message says why (the engine's messages name the field), capped in length.
     """
     s = _s(state)
     init_state(s)

@@ -233,9 +233,7 @@ class Store:
                 self.engine = sa.create_engine(
                     url, connect_args={"timeout": busy}, pool_pre_ping=False
                 )
-                sa.event.listen(
-                    self.engine, "connect", lambda c, r: _sqlite_pragmas(c, r, busy)
-                )
+                sa.event.listen(self.engine, "connect", lambda c, r: _sqlite_pragmas(c, r, busy))
                 # BEGIN IMMEDIATE: take the write lock at the start, so two writers queue on the
                 # busy timeout instead of one failing at once when it upgrades a read lock.
                 sa.event.listen(
@@ -382,9 +380,7 @@ class Store:
         return (cases.c.workspace == token) & (cases.c.name == name)
 
     def _version(self, conn, token: str, name: str) -> int | None:
-        return conn.execute(
-            sa.select(cases.c.version).where(self._where(token, name))
-        ).scalar()
+        return conn.execute(sa.select(cases.c.version).where(self._where(token, name))).scalar()
 
     def _rows(self, conn, token: str) -> list[tuple[str, str, int]]:
         return conn.execute(

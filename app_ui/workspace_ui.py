@@ -130,8 +130,11 @@ def status() -> None:
         names = ", ".join(f"“{n}”" for n in unsaved)
         st.warning(
             plain(
-                (f"Not yet saved: {names}. " if unsaved else "Your latest inputs are not yet "
-                 "saved. ")
+                (
+                    f"Not yet saved: {names}. "
+                    if unsaved
+                    else "Your latest inputs are not yet saved. "
+                )
                 + "They are kept in this session and written when the database is back."
             ),
             icon=":material/cloud_off:",

@@ -199,7 +199,10 @@ with st.expander("Cases file: export / import", icon=":material/folder_open:"):
         st.radio(
             "Importing a cases file",
             state.IMPORT_MODES,
-            format_func={"add": "adds its cases", "replace": "replaces the saved cases (asks first)"}.get,
+            format_func={
+                "add": "adds its cases",
+                "replace": "replaces the saved cases (asks first)",
+            }.get,
             key="import_mode",
             horizontal=True,
             help="Add: cases identical to saved ones are skipped, other names that are taken "
