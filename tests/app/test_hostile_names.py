@@ -169,8 +169,8 @@ def test_unsaved_hostile_names_in_the_outage_banner_are_inert(monkeypatch, tmp_p
 @pytest.mark.parametrize("text", HOSTILE)
 def test_the_detector_finds_raw_hostile_text(text):
     """The check itself can fail: raw hostile names are found, escaped ones are not."""
-    from app_ui.text import plain
     from app_ui.plots import plain_label
+    from app_ui.text import plain
 
     assert LIVE_URL.search(text) or LIVE_TAG.search(text)
     assert not LIVE_URL.search(plain(text)) and not LIVE_TAG.search(plain(text))
