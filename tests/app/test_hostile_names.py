@@ -18,7 +18,7 @@ from aerostat_core.io import cases_to_json, inputs_to_dict
 from app import PAGES
 from app_ui import state
 from tests.app.conftest import APP_PATH, TIMEOUT_S
-from tests.app.helpers import COMPARE_PAGE, DESIGN_PAGE, goto, show_tab
+from tests.app.helpers import COMPARE_PAGE, goto, show_tab
 
 HOSTILE = (
     "![t](http://evil.invalid/x.png)",
@@ -147,9 +147,9 @@ def test_every_page_keeps_hostile_names_inert(monkeypatch, tmp_path):
     assert not problems, "\n".join(problems)
 
 
-def test_unsaved_hostile_names_in_the_outage_banner_are_inert(monkeypatch, tmp_path):
+def test_unsaved_hostile_names_during_an_outage_are_inert(monkeypatch, tmp_path):
     blocked = tmp_path / "file"
-    blocked.write_text("not a folder")
+    blocked.write_text("not a folder")  # the database's folder cannot be made: unavailable
     monkeypatch.setenv("AEROSTAT_DATABASE_URL", f"sqlite:///{blocked}/sub/aerostat.sqlite3")
     at = AppTest.from_file(str(APP_PATH), default_timeout=TIMEOUT_S)
     at.run()
@@ -158,11 +158,33 @@ def test_unsaved_hostile_names_in_the_outage_banner_are_inert(monkeypatch, tmp_p
         next(b for b in at.button if b.label == "Save case").click().run()
     assert not at.exception
     assert list(state.unsaved_cases(at.session_state)) == list(HOSTILE)
-    assert any("Not yet saved" in str(w.value) for w in at.warning)
     assert any("in this session only" in str(w.value) for w in at.warning)
     problems = _live(at, "Design during an outage")
-    goto(at, DESIGN_PAGE)
-    problems += _live(at, "Design during an outage, rerun")
+    goto(at, COMPARE_PAGE)
+    options = at.multiselect(key="compare_selected").options
+    assert len(options) == len(HOSTILE) and all(o.endswith("(not yet saved)") for o in options)
+    problems += _live(at, "Compare during an outage")
+    assert not problems, "\n".join(problems)
+
+
+def _frame() -> None:
+    """The app frame's workspace banner alone (AppTest keeps only the page's elements)."""
+    from app_ui import workspace_ui
+
+    workspace_ui.status()
+
+
+def test_the_outage_banner_quotes_hostile_names_inertly():
+    at = AppTest.from_function(_frame, default_timeout=TIMEOUT_S)
+    one = inputs_to_dict(*thesis_baseline())
+    at.session_state[state.UNSAVED_KEY] = {n: one for n in HOSTILE}
+    at.session_state[state.STORE_ERR_KEY] = "Could not save the case: unavailable."
+    at.session_state[state.STORE_NOTE_KEY] = "Saved " + ", ".join(HOSTILE)
+    at.run()
+    assert not at.exception, [e.value for e in at.exception]
+    assert any("Not yet saved" in str(w.value) for w in at.warning)
+    assert at.get("download_button")
+    problems = _live(at, "workspace banner")
     assert not problems, "\n".join(problems)
 
 
