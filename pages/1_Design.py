@@ -24,6 +24,7 @@ from app_ui import (
     side_view,
     state,
     text,
+    unapplied,
 )
 from app_ui.tables import (
     PERF_HELP,
@@ -218,6 +219,7 @@ with col_in:
         with import_box:
             show.feedback(fb["level"], fb["text"])
     form.input_form()
+    unapplied.guard()  # edits typed but not applied: asked about before a page switch drops them
 
 # --- results -----------------------------------------------------------------------------------
 with col_out:
