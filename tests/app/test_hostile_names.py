@@ -29,8 +29,19 @@ HOSTILE = (
 )
 HOSTILE_FILE = "<img src=http://evil.invalid/f.png>[f](http://evil.invalid/f).json"
 
-#: An unescaped URL of the hostile names (a link, an image or an autolink in Markdown).
-LIVE_URL = re.compile(r"(?<!\\)https?://evil\.invalid")
+#: A URL of the hostile names that Markdown would make live: a link, an image, or a bare URL
+#: (GitHub-flavoured Markdown links those after reading the escapes, so they are removed first).
+_URL = re.compile(r"https?://evil\.invalid")
+_ESCAPE = re.compile(r"\\([!-/:-@\[-`{-~])")
+
+
+class _LiveUrl:
+    @staticmethod
+    def search(text: str):
+        return _URL.search(_ESCAPE.sub(r"\1", text))
+
+
+LIVE_URL = _LiveUrl()
 #: An unescaped tag of theirs (HTML in Markdown, or in a plotly label).
 LIVE_TAG = re.compile(r"(?<!\\)<\s*(?:img|script|a)\b[^<]*?(?:evil|666)", re.IGNORECASE)
 #: Proto fields that Streamlit shows as plain text (widget options and values), and ids.
@@ -196,5 +207,7 @@ def test_the_detector_finds_raw_hostile_text(text):
 
     assert LIVE_URL.search(text) or LIVE_TAG.search(text)
     assert not LIVE_URL.search(plain(text)) and not LIVE_TAG.search(plain(text))
+    if "http" in text:  # backslash escapes alone leave a bare URL that the autolinker links
+        assert LIVE_URL.search(re.sub(r"([!-/:-@\[-`{-~])", r"\\\1", text))
     assert not LIVE_TAG.search(plain_label(text))
     assert isinstance(pd.DataFrame({plain(text): [1]}).columns[0], str)

@@ -170,7 +170,7 @@ def test_a_bare_address_offers_the_last_workspace(browser: Browser, tmp_path):
         token = _token(page)
         _save(page, "Yesterday's work")
         page.goto(srv.url + "/")  # the bare address, same browser
-        wait_for_rerun(page)
+        wait_for_rerun(page, timeout=FIRST_RUN_MS)
         assert _token(page) != token
         offer = page.get_by_role("button", name=re.compile("Last used: 1 case"))
         expect(offer).to_be_visible()
@@ -272,7 +272,7 @@ def test_a_hung_database_gives_a_message_and_the_app_works(browser: Browser, sil
         expect(page.get_by_text("no answer within 2 s", exact=False).first).to_be_visible(
             timeout=10_000
         )
-        wait_for_rerun(page)
+        wait_for_rerun(page, timeout=FIRST_RUN_MS)
         expect(page.get_by_test_id("stMetric").first).to_be_visible()  # the design, computed
         _save(page, "Kept in the session")
         expect(page.get_by_text("in this session only", exact=False).first).to_be_visible()
