@@ -14,7 +14,7 @@ from typing import Any
 
 import streamlit as st
 
-from aerostat_core.io import inputs_from_dict, inputs_to_dict
+from aerostat_core.model.io import inputs_from_dict, inputs_to_dict
 from app_ui import state
 from app_ui.store import CaseConflict
 from app_ui.text import plain

@@ -16,7 +16,7 @@ from typing import Any
 
 import streamlit as st
 
-from aerostat_core.io import cases_to_json
+from aerostat_core.model.io import cases_to_json
 from app_ui import state
 from app_ui import store as _store
 from app_ui.text import plain

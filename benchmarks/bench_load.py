@@ -35,7 +35,7 @@ import websockets
 from streamlit.proto.BackMsg_pb2 import BackMsg
 from streamlit.proto.ForwardMsg_pb2 import ForwardMsg
 
-from aerostat_core.report import thesis_gui_cases
+from aerostat_core.output.report import thesis_gui_cases
 from app_ui import store
 
 ROOT = Path(__file__).resolve().parents[1]

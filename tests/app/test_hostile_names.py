@@ -14,7 +14,7 @@ from google.protobuf.json_format import MessageToDict
 from streamlit.testing.v1 import AppTest
 
 from aerostat_core import thesis_baseline
-from aerostat_core.io import cases_to_json, inputs_to_dict
+from aerostat_core.model.io import cases_to_json, inputs_to_dict
 from app import PAGES
 from app_ui import state
 from tests.app.conftest import APP_PATH, TIMEOUT_S

@@ -17,8 +17,8 @@ import pytest
 import sqlalchemy as sa
 
 from aerostat_core import thesis_baseline
-from aerostat_core.io import inputs_to_dict
-from aerostat_core.report import thesis_gui_cases
+from aerostat_core.model.io import inputs_to_dict
+from aerostat_core.output.report import thesis_gui_cases
 from app_ui import state, store
 from tests.app.test_store import PG_URL, _require_pg
 

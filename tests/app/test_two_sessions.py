@@ -10,8 +10,8 @@ import pytest
 from streamlit.testing.v1 import AppTest
 
 from aerostat_core import thesis_baseline
-from aerostat_core.io import cases_to_json, inputs_to_dict
-from aerostat_core.report import thesis_gui_cases
+from aerostat_core.model.io import cases_to_json, inputs_to_dict
+from aerostat_core.output.report import thesis_gui_cases
 from app_ui import store
 from tests.app.conftest import APP_PATH, TIMEOUT_S
 from tests.app.helpers import COMPARE_PAGE, goto, messages, show_tab

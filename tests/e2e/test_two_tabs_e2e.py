@@ -18,8 +18,8 @@ from urllib.parse import parse_qs, urlparse
 import pytest
 from playwright.sync_api import Browser, Page, expect
 
-from aerostat_core.io import cases_to_json
-from aerostat_core.report import thesis_gui_cases
+from aerostat_core.model.io import cases_to_json
+from aerostat_core.output.report import thesis_gui_cases
 from app_ui import store
 from tests.e2e.conftest import start_streamlit, stop_streamlit
 from tests.e2e.helpers import ARTIFACTS_DIR, assert_no_exception, goto_page, wait_for_rerun
