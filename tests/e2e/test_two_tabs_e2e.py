@@ -27,7 +27,8 @@ from tests.e2e.helpers import ARTIFACTS_DIR, assert_no_exception, goto_page, wai
 pytestmark = pytest.mark.e2e
 
 GUI = list(thesis_gui_cases())
-#: A fresh server's first run imports plotly, scipy...: generous on a loaded machine [ms].
+#: A fresh server's first run imports plotly, scipy..., and a run that designs new cases
+#: computes them: generous on a loaded machine [ms].
 FIRST_RUN_MS = 120_000
 PG_URL = os.environ.get("AEROSTAT_TEST_DATABASE_URL", "").strip()
 
@@ -75,7 +76,7 @@ def _open(browser: Browser, url: str) -> Page:
 def _save(page: Page, name: str) -> None:
     page.get_by_role("textbox", name="Save the current design as a case").fill(name)
     page.get_by_role("button", name="Save case").click()
-    wait_for_rerun(page)
+    wait_for_rerun(page, timeout=FIRST_RUN_MS)
 
 
 def _picker(page: Page):
@@ -92,7 +93,7 @@ def test_two_tabs_on_one_workspace_lose_nothing(browser: Browser, server):
         _save(b, "B-case")
         expect(b.get_by_text("Saved case “B-case”")).to_be_visible()
         a.get_by_role("button", name="Load the thesis' GUI test cases").click()
-        wait_for_rerun(a)
+        wait_for_rerun(a, timeout=FIRST_RUN_MS)
         assert list(db.load(token)[1]) == ["B-case", *GUI]
         expect(_picker(a)).to_contain_text("B-case")
 
@@ -101,7 +102,7 @@ def test_two_tabs_on_one_workspace_lose_nothing(browser: Browser, server):
         _save(a, "B-case")
         expect(a.get_by_text("exists already", exact=False)).to_be_visible()
         a.get_by_role("button", name="Keep both").click()
-        wait_for_rerun(a)
+        wait_for_rerun(a, timeout=FIRST_RUN_MS)
         expect(a.get_by_text("Saved case “B-case (2)”")).to_be_visible()
         assert list(db.load(token)[1]) == ["B-case", *GUI, "B-case (2)"]
 
@@ -111,29 +112,29 @@ def test_two_tabs_on_one_workspace_lose_nothing(browser: Browser, server):
         goto_page(b, "Compare")
         db.put_case(token, "B-three", db.load(token)[1]["B-case"])  # a third tab, meanwhile
         a.get_by_role("tab", name="Manage cases").click()
-        wait_for_rerun(a)
+        wait_for_rerun(a, timeout=FIRST_RUN_MS)
         a.get_by_role("textbox", name="New name").fill("B-three")
         a.get_by_role("button", name="Rename").click()
-        wait_for_rerun(a)
+        wait_for_rerun(a, timeout=FIRST_RUN_MS)
         expect(a.get_by_text("exists already", exact=False)).to_be_visible()
         expect(a.get_by_text("unavailable", exact=False)).to_have_count(0)
 
         # A deletes one case: only that one goes
         a.get_by_role("tab", name="Manage cases").click()
-        wait_for_rerun(a)
+        wait_for_rerun(a, timeout=FIRST_RUN_MS)
         deleter = a.get_by_test_id("stMultiSelect").filter(has_text="Cases to delete")
         deleter.click()
         a.get_by_role("option", name=GUI[1]).click()
         a.keyboard.press("Escape")
         a.get_by_role("button", name="Delete").click()
-        wait_for_rerun(a)
+        wait_for_rerun(a, timeout=FIRST_RUN_MS)
         saved = list(db.load(token)[1])
         assert GUI[1] not in saved and {"B-case", "B-two", "B-three"} <= set(saved)
 
         # A replaces by a file (asks first); B adds a case meanwhile, which stays
         a.get_by_text("Cases file: export / import").click()
         a.get_by_text("replaces the saved cases (asks first)").click()
-        wait_for_rerun(a)
+        wait_for_rerun(a, timeout=FIRST_RUN_MS)
         upload = {"From file": thesis_gui_cases()[GUI[0]]}
         a.get_by_test_id("stFileUploaderDropzoneInput").first.set_input_files(
             files=[
@@ -144,12 +145,12 @@ def test_two_tabs_on_one_workspace_lose_nothing(browser: Browser, server):
                 }
             ]
         )
-        wait_for_rerun(a)
+        wait_for_rerun(a, timeout=FIRST_RUN_MS)
         expect(a.get_by_text("Replace the", exact=False)).to_be_visible()
         goto_page(b, "Design")
         _save(b, "B-late")
         a.get_by_role("button", name="Replace", exact=True).click()
-        wait_for_rerun(a)
+        wait_for_rerun(a, timeout=FIRST_RUN_MS)
         assert list(db.load(token)[1]) == ["B-late", "From file"]
         expect(_picker(a)).to_contain_text("B-late")
         assert_no_exception(a, "tab A")
@@ -175,7 +176,7 @@ def test_a_bare_address_offers_the_last_workspace(browser: Browser, tmp_path):
         offer = page.get_by_role("button", name=re.compile("Last used: 1 case"))
         expect(offer).to_be_visible()
         offer.click()
-        wait_for_rerun(page)
+        wait_for_rerun(page, timeout=FIRST_RUN_MS)
         assert _token(page) == token
         expect(_picker_or_text(page, "Yesterday's work")).to_be_visible()
     finally:
@@ -214,7 +215,7 @@ def test_hostile_names_fetch_nothing_in_the_browser(browser: Browser, tmp_path):
         expect(_picker(page)).to_contain_text(HOSTILE[0])
         for tab in ("Side by side", "Performance", "Tether profiles", "Manage cases"):
             page.get_by_role("tab", name=tab).click()
-            wait_for_rerun(page)
+            wait_for_rerun(page, timeout=FIRST_RUN_MS)
             assert page.locator("img[src*='evil'], a[href*='evil']").count() == 0, tab
             assert page.evaluate("window.__evil") is None, tab
         expect(page.get_by_text(HOSTILE[0]).first).to_be_attached()  # shown as typed
