@@ -98,7 +98,7 @@ def test_two_tabs_on_one_workspace_lose_nothing(browser: Browser, server):
         expect(_picker(a)).to_contain_text("B-case")
 
         # A saves under the name B took: it is asked, and "Keep both" keeps both
-        goto_page(a, "Design")
+        goto_page(a, "Design", timeout=FIRST_RUN_MS)
         _save(a, "B-case")
         expect(a.get_by_text("exists already", exact=False)).to_be_visible()
         a.get_by_role("button", name="Keep both").click()
@@ -108,8 +108,8 @@ def test_two_tabs_on_one_workspace_lose_nothing(browser: Browser, server):
 
         # B saves another case; A (stale) renames a case to that name: "exists already"
         _save(b, "B-two")
-        goto_page(a, "Compare")
-        goto_page(b, "Compare")
+        goto_page(a, "Compare", timeout=FIRST_RUN_MS)
+        goto_page(b, "Compare", timeout=FIRST_RUN_MS)
         db.put_case(token, "B-three", db.load(token)[1]["B-case"])  # a third tab, meanwhile
         a.get_by_role("tab", name="Manage cases").click()
         wait_for_rerun(a, timeout=FIRST_RUN_MS)
@@ -147,7 +147,7 @@ def test_two_tabs_on_one_workspace_lose_nothing(browser: Browser, server):
         )
         wait_for_rerun(a, timeout=FIRST_RUN_MS)
         expect(a.get_by_text("Replace the", exact=False)).to_be_visible()
-        goto_page(b, "Design")
+        goto_page(b, "Design", timeout=FIRST_RUN_MS)
         _save(b, "B-late")
         a.get_by_role("button", name="Replace", exact=True).click()
         wait_for_rerun(a, timeout=FIRST_RUN_MS)
@@ -185,7 +185,7 @@ def test_a_bare_address_offers_the_last_workspace(browser: Browser, tmp_path):
 
 
 def _picker_or_text(page: Page, text: str):
-    goto_page(page, "Compare")
+    goto_page(page, "Compare", timeout=FIRST_RUN_MS)
     return _picker(page).get_by_text(text)
 
 
@@ -220,7 +220,7 @@ def test_hostile_names_fetch_nothing_in_the_browser(browser: Browser, tmp_path):
             assert page.evaluate("window.__evil") is None, tab
         expect(page.get_by_text(HOSTILE[0]).first).to_be_attached()  # shown as typed
         for label in ("Design", "Sensitivity", "Optimise", "Dynamics", "Method", "Shapes"):
-            goto_page(page, label)
+            goto_page(page, label, timeout=FIRST_RUN_MS)
             assert page.locator("img[src*='evil'], a[href*='evil']").count() == 0, label
         assert fetched == []
         assert page.evaluate("window.__evil") is None
