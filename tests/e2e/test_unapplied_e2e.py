@@ -17,8 +17,9 @@ def _box(page: Page):
     return page.get_by_role("textbox", name=PAYLOAD, exact=True)
 
 
-def test_enter_applies_and_a_page_switch_asks_before_dropping_edits(app_page: Page):
-    page = app_page
+def test_enter_applies_and_a_page_switch_asks_before_dropping_edits(page: Page):
+    page.goto("/")
+    wait_for_rerun(page, timeout=120_000)  # the first run may import plotly, scipy...
     box = _box(page)
     box.fill("33")
     box.press("Enter")  # applies the form, like "Update design"
