@@ -45,11 +45,8 @@ def test_short_gust_run(app_page: Page, console_errors: list[str]):
     text = info.value.path().read_text()
     meta = [ln for ln in text.splitlines() if ln.startswith("# ")]
     assert "# scenario = gust" in meta and "# duration = 60.0" in meta
-    rows = list(
-        csv.DictReader(
-            io.StringIO("\n".join(ln for ln in text.splitlines() if not ln.startswith("#")))
-        )
-    )
+    rows = list(csv.DictReader(io.StringIO("\n".join(
+        ln for ln in text.splitlines() if not ln.startswith("#")))))
     assert len(rows) == 601
     assert float(rows[-1]["t_s"]) == pytest.approx(60.0)
     wind = [float(r["wind_x_m_s"]) for r in rows]
@@ -73,9 +70,8 @@ def _run_60s(page: Page) -> None:
     expect(page.get_by_text("CacheReplayClosureError")).to_have_count(0)
 
 
-def test_rerun_return_and_second_session(
-    app_page: Page, browser: Browser, base_url: str, console_errors: list[str]
-):
+def test_rerun_return_and_second_session(app_page: Page, browser: Browser, base_url: str,
+                                         console_errors: list[str]):
     page = app_page
     goto_page(page, "Dynamics")
     _run_60s(page)
