@@ -10,8 +10,8 @@ from pathlib import Path
 
 import streamlit as st
 
+from app_ui import workspace_ui
 from app_ui.errors import report_unexpected
-from app_ui.state import STORE_ERR_KEY, attach_workspace
 
 HERE = Path(__file__).resolve().parent
 
@@ -32,8 +32,9 @@ st.set_page_config(
     layout="wide",
     initial_sidebar_state="expanded",
 )
-# Binds this session to the workspace in the URL (?ws=...) and loads its saved cases.
-attach_workspace()
+# Binds this session to the workspace in the URL (?ws=...) and loads its saved cases; a bare
+# address offers the browser's recent workspaces back.
+workspace_ui.attach()
 
 MISSING = [path for path, _, _ in PAGES if not (HERE / path).is_file()]
 pages = [
@@ -43,16 +44,10 @@ pages = [
 ]
 with st.sidebar:
     st.caption("Tethered aerostat design · Mahmood (2020) method, rebuilt from public sources")
-    st.caption(
-        "Your inputs and saved cases are kept in this workspace: bookmark or share this page's "
-        "address to come back to them."
-    )
+workspace_ui.status()  # where the work is kept; database outages; unsaved cases
 if MISSING:
     st.error(f"This installation is incomplete: page file(s) missing: {', '.join(MISSING)}.",
              icon=":material/error:")
-store_error = st.session_state.get(STORE_ERR_KEY)
-if store_error:
-    st.warning(store_error, icon=":material/database:")
 try:
     st.navigation(pages).run()
 except Exception as exc:  # noqa: BLE001 - the error boundary: never a traceback on screen

@@ -19,11 +19,13 @@ from app_ui import (
     mission_view,
     plots,
     preload,
+    saving,
     shapes_view,
     show,
     side_view,
     state,
     text,
+    unapplied,
 )
 from app_ui.tables import (
     PERF_HELP,
@@ -46,20 +48,6 @@ st.caption(
 def _load_baseline() -> None:
     state.set_current_inputs(*thesis_baseline())
     st.session_state.pop(form_model.ERROR_KEY, None)
-
-
-def _save_case() -> None:
-    name = st.session_state.get("case_name", "") or st.session_state.get("_case_name_default", "")
-    try:
-        used = state.save_case(name, *state.current_inputs())
-    except ValueError as exc:
-        st.session_state["case_feedback"] = ("error", str(exc))
-    else:
-        st.session_state["case_feedback"] = (
-            "success",
-            f"Saved case “{used}”. Compare saved cases on the Compare page.",
-        )
-        st.session_state["case_name"] = ""
 
 
 def _on_upload() -> None:
@@ -232,6 +220,7 @@ with col_in:
         with import_box:
             show.feedback(fb["level"], fb["text"])
     form.input_form()
+    unapplied.guard()  # edits typed but not applied: asked about before a page switch drops them
 
 # --- results -----------------------------------------------------------------------------------
 with col_out:
@@ -363,14 +352,15 @@ with col_out:
             "workspace (the page's address): bookmark it to come back to them.",
         )
         c2.form_submit_button(
-            "Save case", on_click=_save_case, icon=":material/bookmark_add:", width="stretch"
+            "Save case", on_click=saving.save_current, icon=":material/bookmark_add:", width="stretch"
         )
     case_box = st.container()  # always present: the tabs below keep their place
     envelope_view.report_button(state.current_inputs_key())
-    fb = st.session_state.pop("case_feedback", None)
-    if fb:
-        with case_box:
+    fb = st.session_state.pop(saving.FEEDBACK_KEY, None)
+    with case_box:
+        if fb:
             show.feedback(fb[0], fb[1])
+        saving.choice_panel()  # a taken name or a case changed elsewhere: asks, never guesses
 
     # Lazy tabs: only the open tab runs and is sent to the browser (a rerun draws 1-5 charts
     # instead of 10, which keeps "click Update design -> result" well under a second).
