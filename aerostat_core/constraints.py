@@ -55,18 +55,21 @@ CONSTRAINTS: tuple[Constraint, ...] = (
     Constraint("altitude_loss", "Altitude loss", "m",
                "altitude loss at the design wind within the permissible reduction",
                "altitude loss {value:.1f} m exceeds the permissible {limit:.1f} m at {wind:g} m/s",
-               "design"),
+               "design", "a larger hull (more free lift), a higher permissible altitude loss or a "
+               "lower design wind"),
     Constraint("free_lift", "Free lift", "kg", "free lift at rest at least the required share "
                "of gross lift",
                "free lift {value:.2f} kg is below the required {limit:.2f} kg", "static",
-               "choose a lighter fabric, tether or payload, or a lighter gas"),
+               "a larger hull, a lighter payload, fabric or tether, a lower altitude, or hydrogen"),
     Constraint("taut_tether", "Taut tether", "N", "tether taut (upward tension everywhere) at "
                "the design wind",
-               "the tether goes slack at {wind:g} m/s (net upward pull {value:.0f} N)", "design"),
+               "the tether goes slack at {wind:g} m/s (net upward pull {value:.0f} N)", "design",
+               "a larger hull, a lighter payload or a lower altitude"),
     Constraint("tether_angle", "Tether angle", "deg",
                "tether angle from the vertical at the design wind within the limit",
                "tether {value:.0f} deg from the vertical exceeds {limit:.0f} deg at {wind:g} m/s",
-               "design"),
+               "design", "a larger hull (more free lift), a larger tether-angle limit or a lower "
+               "design wind"),
     Constraint("safety_factor", "Tether safety factor", "-",
                "tether safety factor at the design wind at least the required value",
                "tether safety factor {value:.2f} is below the required {limit:g} at {wind:g} m/s",
@@ -79,21 +82,21 @@ CONSTRAINTS: tuple[Constraint, ...] = (
                "a larger hull only pulls harder: choose a stronger tether"),
     Constraint("stall", "Fin stall", "deg", "equilibrium angle of attack below fin stall",
                "angle of attack {value:.1f} deg is past fin stall ({limit:g} deg) at {wind:g} m/s",
-               "design"),
+               "design", "larger fins or a different confluence point"),
     Constraint("stability", "Static stability", "1/rad",
                "statically stable trim about the confluence point (C_m_alpha < 0)",
                "statically unstable about the confluence point at {wind:g} m/s "
                "(C_m_alpha {value:+.3f}/rad; no stable trim within +-80 deg if it is not found)",
-               "design"),
+               "design", "larger fins or a confluence point further forward"),
     Constraint("weathervane", "Weathervane stability", "1/rad",
                "aerodynamically stable hull: C_m_alpha of hull + fins about the centre of volume "
                "at most minus the required margin",
                "aerodynamically unstable about the centre of volume at {wind:g} m/s (C_m_alpha "
                "{value:+.3f}/rad, needs <= {limit:+.3f}/rad): the fins lose to the Munk moment",
-               "design"),
+               "design", "larger fins, fins further aft or a lower fineness ratio"),
     Constraint("fins_on_hull", "Fins on the hull", "m", "fin trailing edge on the hull",
                "fin trailing edge {value:.2f} m from the nose lies behind the tail "
-               "({limit:.2f} m)", "static"),
+               "({limit:.2f} m)", "static", "smaller fins or fins further forward"),
     # mission rows (issue 13, aerostat_core.mission); met by today's designs unless the user asks
     Constraint("envelope_stress", "Envelope stress", "N/m",
                "envelope fabric strength at least the safety factor times the membrane load at "
