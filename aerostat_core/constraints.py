@@ -111,11 +111,12 @@ CONSTRAINTS: tuple[Constraint, ...] = (
                "carries only {limit:.0f} Pa with its safety factor", "survival",
                "choose a stronger fabric, or reel the aerostat in below the survival wind"),
     Constraint("endurance", "Endurance", "day",
-               "free lift still at least the required share of gross lift after the required "
-               "days of helium permeation",
+               "free lift still at least the required share of gross lift after the top-up "
+               "interval (or the endurance asked, if longer) of helium permeation",
                "the free-lift margin lasts {value:.1f} days of permeation, not the required "
                "{limit:g} days", "static",
-               "choose a fabric of lower helium permeability or a shorter time between top-ups"),
+               "a larger hull, a fabric of lower helium permeability or a shorter time between "
+               "top-ups"),
 )
 
 #: Constraint names in table order (the column order of every g array).
@@ -220,7 +221,7 @@ def static_quantities(req: Requirement, af: Airframe, cfg: Configuration | None 
         out["endurance"] = (np.inf * one, 0.0 * one, -one, np.inf * one)
     else:
         e = endurance_quantities(req, cfg, af)
-        out["endurance"] = (e["days_to_top_up"] * one, float(req.endurance_days) * one,
+        out["endurance"] = (e["days_to_top_up"] * one, req.days_without_top_up * one,
                             e["g"] * one, e["margin"] * one)
     return out
 

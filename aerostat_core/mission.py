@@ -290,7 +290,7 @@ def endurance_quantities(req, cfg, af) -> dict:
         days_to_top_up(af.free_lift - need, h.volume, af.g, rho_a, rho_p, k0, tau), DAYS_CAP
     )
     fb = np.maximum(np.abs(af.buoyancy), 1e-9)
-    d_req = float(req.endurance_days)
+    d_req = req.days_without_top_up  # the endurance asked, or the top-up interval
     if d_req > 0:
         lost = lift_loss_after(h.volume, af.g, rho_a, rho_p, k0, d_req, tau)
         g = (need + lost - af.free_lift) / fb
