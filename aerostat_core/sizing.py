@@ -49,7 +49,7 @@ _GRID = np.geomspace(VOLUME_MIN, VOLUME_MAX, 24)
 _GRID_BATCH = np.geomspace(VOLUME_MIN, VOLUME_MAX, 13)
 _FEW = 8
 #: Relative precision of every constraint boundary in volume [-] (the bracket width at the end).
-RTOL = 1e-4
+RTOL = 1e-5
 _LOG_RTOL = float(np.log1p(RTOL))
 #: Root-finder rounds before a bracket is accepted at its current width.
 _MAX_ROUNDS = 12
