@@ -104,6 +104,13 @@ CONSTRAINTS: tuple[Constraint, ...] = (
                "envelope fabric needs {value:.0f} N/m (load x safety factor) but has "
                "{limit:.0f} N/m at {wind:g} m/s", "design",
                "a larger hull only loads its fabric harder: choose a stronger fabric"),
+    Constraint("envelope_wrinkling", "Envelope wrinkling", "N m",
+               "largest envelope bending moment (the hull as a pressurised beam) below the "
+               "wrinkling moment pi p r^3/2 of its section, at the design wind",
+               "the envelope bending moment {value:.0f} N m exceeds the wrinkling moment "
+               "{limit:.0f} N m at {wind:g} m/s: the hull creases", "design",
+               "a higher hull pressure (superpressure), a lower fineness ratio, or confluence "
+               "lines spread along more of the hull"),
     Constraint("survival_envelope_pressure", "Survival envelope pressure", "Pa",
                "the fabric carries, with its safety factor, the internal pressure the hull needs "
                "at the survival wind",
@@ -199,6 +206,8 @@ def wind_quantities(req: Requirement, cfg: Configuration, ev: Evaluation) -> dic
     st = structure_quantities(req, cfg, ev)
     need, fab = st["strength_required"] * one, st["strength"] * one
     out["envelope_stress"] = (need, fab, need / fab - 1.0, fab - need)
+    mb, mw = st["moment_at_governing"] * one, st["wrinkling_moment"] * one
+    out["envelope_wrinkling"] = (mb, mw, mb / np.maximum(mw, 1e-12) - 1.0, mw - mb)
     p_req, p_ok = st["pressure_required"] * one, st["pressure_allowable"] * one
     g_p = np.where(p_ok > 0, p_req / np.where(p_ok > 0, p_ok, 1.0) - 1.0, 1.0 + p_req / fab)
     out["survival_envelope_pressure"] = (p_req, p_ok, g_p, p_ok - p_req)

@@ -38,7 +38,7 @@ from .endurance import (
 from .fields import choice, integer, number, validate
 from .materials import POWER_TETHER_CONDUCTORS, TetherSpec
 from .power import Conductors, battery_mass, power_tether, size_conductors
-from .structure import allowable_pressure, membrane_loads, required_pressure
+from .structure import allowable_pressure, envelope_loads
 from .winch import Winch, size_winch
 
 POWER_ROUTES = ("onboard", "tether")
@@ -307,22 +307,20 @@ def structure_quantities(req, cfg, ev) -> dict:
     -------
     dict of arrays (broadcast over designs and speeds)
         pressure_required [Pa] (at the top of the hull: factor q + hydrostatic head, or the gas
-        superpressure if higher), moment [N m] (aerodynamic moment of hull + fins about the
-        centre of volume, |dM/dalpha alpha|, a linear estimate of the envelope bending moment),
-        hoop, longitudinal [N/m], strength_required (SF x the larger load) [N/m], strength
-        (fabric) [N/m], pressure_allowable [Pa] (largest pressure the fabric carries with SF
-        under that moment).
+        superpressure if higher), moment [N m] (largest envelope bending moment of the hull as
+        a pressurised beam, :func:`aerostat_core.structure.envelope_loads`), hoop, longitudinal
+        [N/m] (the longitudinal load at the worst station), strength_required (SF x the larger
+        load) [N/m], strength (fabric) [N/m], pressure_allowable [Pa] (largest pressure the
+        fabric carries with SF under that moment), wrinkling_moment [N m] (pi p r^3/2 at the
+        governing station) and moment_at_governing [N m] (the bending moment there).
     """
     af = ev.airframe
     m = cfg.mission
-    q = 0.5 * af.air_density * np.asarray(ev.speed, float) ** 2
-    p = required_pressure(
-        q, af.air_density, af.gas_density, af.g, af.hull.diameter, m.pressure_dynamic_factor
-    )
-    p = np.maximum(p, cfg.gas.superpressure)
-    moment = np.abs(ev.weathervane_slope * ev.equilibrium.alpha)
+    loads = envelope_loads(af, cfg, ev)  # the hull as a pressurised beam
+    p = loads["pressure"]
+    moment = loads["bending_moment"]
     r = af.hull.b
-    hoop, long = membrane_loads(p, r, moment)
+    hoop, long = loads["hoop_load"], loads["longitudinal_load"]
     need = m.envelope_safety_factor * np.maximum(hoop, long)
     strength = float(cfg.hull_fabric.tensile_strength)
     allow = allowable_pressure(strength, m.envelope_safety_factor, r, moment)
@@ -334,6 +332,8 @@ def structure_quantities(req, cfg, ev) -> dict:
         "strength_required": need,
         "strength": strength,
         "pressure_allowable": allow,
+        "wrinkling_moment": loads["wrinkling_moment"],
+        "moment_at_governing": loads["moment_at_governing"],
     }
 
 

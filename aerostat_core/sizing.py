@@ -264,8 +264,8 @@ def _refine(req, cfg, f, dsf, pos, k, x_lo, x_hi, r_lo, r_hi, s_lo, s_hi, states
         pts = np.clip(np.stack([xp - d, xp + d, mid], axis=1), a_lo[:, None], a_hi[:, None])
         pts.sort(axis=1)
         npts = pts.size
-        rep = (lambda a: np.repeat(a[act], 3))
-        st = _state(req, cfg, np.exp(pts).reshape(-1), rep(f), rep(dsf), rep(pos))
+        f3, dsf3, pos3 = (np.repeat(a[act], 3) for a in (f, dsf, pos))
+        st = _state(req, cfg, np.exp(pts).reshape(-1), f3, dsf3, pos3)
         sid = len(states)
         states.append((st, npts))
         g = np.broadcast_to(st.g, (npts, n)).reshape(ma, 3, n)

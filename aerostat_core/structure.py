@@ -111,3 +111,206 @@ def allowable_pressure(strength, safety_factor, radius, moment=0.0):
     hoop = n / r
     long = 2.0 * (n - np.abs(np.asarray(moment, float)) / (np.pi * r**2)) / r
     return np.minimum(hoop, long)
+
+
+# --- the hull as a pressurised beam (issue 22 item 5; docs/methods.md "Envelope as a
+# pressurised beam") --------------------------------------------------------------------------
+#: Stations along the hull of the beam model (the shear and moment integrals).
+BEAM_STATIONS = 31
+#: Share of the hull length over which the confluence lines spread the tether's pull [-]:
+#: engineering choice (the patch lines of tactical aerostats span about a third of the hull;
+#: a point load, the conservative limit, would double the moment at the confluence station).
+CONFLUENCE_SPAN = 1.0 / 3.0
+#: Sections checked for wrinkling: radius at least this share of the largest [-].
+WRINKLE_MIN_RADIUS = 0.3
+
+
+def wrinkling_moment(pressure, radius):
+    """Bending moment at which a pressurised circular envelope section starts to wrinkle [N m].
+
+    M_w = pi p r^3 / 2: the axial membrane tension of the pressure, p r / 2 per unit length of
+    circumference, is cancelled on the compression side by the bending load M / (pi r^2) (thin
+    circular section of second moment pi r^3 per unit wall thickness). Past M_w that side
+    carries no tension and the fabric folds; the collapse moment of a fabric tube is about twice
+    this (Comer & Levy 1963, AIAA J. 1(7)), so M_w is the onset, the design value. Source:
+    Carichner & Nicolai (2013), *Fundamentals of Aircraft and Airship Design* vol. 2, envelope
+    structure (the wrinkling criterion of non-rigid airship practice, Burgess 1927 *Airship
+    Design* ch. 9).
+
+    Parameters
+    ----------
+    pressure : array_like
+        Pressure difference across the fabric at the section [Pa], >= 0.
+    radius : array_like
+        Section radius [m], > 0.
+
+    Examples
+    --------
+    >>> round(float(wrinkling_moment(200.0, 2.0)), 1)  # pi 200 8 / 2
+    2513.3
+    """
+    return 0.5 * np.pi * np.asarray(pressure, float) * np.asarray(radius, float) ** 3
+
+
+def beam_moment(x, load, point_loads=(), couples=()):
+    """Bending moment along a free-free beam in equilibrium [N m] (pure function).
+
+    V(x) = int_0^x w dx' + sum_i P_i H(x - x_i); M(x) = int_0^x V dx' + sum_j C_j H(x - x_j),
+    by the trapezoid rule on the stations ``x``. Loads from a simplified distribution do not
+    close exactly: the force residual is the caller's (it sets the reaction), and the moment
+    residual at the tail, M(L), is removed as a linear ramp M(x) - M(L) x / L (the "closing"
+    of airship load curves, Burgess 1927 ch. 9), so M(0) = M(L) = 0.
+
+    Parameters
+    ----------
+    x : ndarray, shape (N, ...)
+        Stations from the nose [m], increasing along the first axis.
+    load : ndarray, shape (N, ...)
+        Distributed load normal to the axis [N/m] (positive up).
+    point_loads : sequence of (P, x_P)
+        Point loads [N] (positive up) at stations [m] (arrays broadcast with x[0]).
+    couples : sequence of (C, x_C)
+        Point couples [N m] (nose-up positive) at stations [m].
+
+    Returns
+    -------
+    ndarray, shape of ``x``
+
+    Examples
+    --------
+    A uniform load w on a beam of length L held by a point load -wL at mid-length: the largest
+    moment is w L^2 / 8.
+
+    >>> x = np.linspace(0.0, 2.0, 201)
+    >>> m = beam_moment(x, np.ones_like(x), [(-2.0, 1.0)])
+    >>> round(float(np.abs(m).max()), 4)
+    0.5
+    """
+    x = np.asarray(x, float)
+    dx = np.diff(x, axis=0)
+    w = np.asarray(load, float)
+    v = np.concatenate([np.zeros_like(w[:1]), np.cumsum(0.5 * (w[1:] + w[:-1]) * dx, axis=0)])
+    m = np.concatenate([np.zeros_like(v[:1]), np.cumsum(0.5 * (v[1:] + v[:-1]) * dx, axis=0)])
+    for p, xp in point_loads:
+        m = m + np.asarray(p, float) * np.maximum(x - np.asarray(xp, float), 0.0)
+    for c, xc in couples:
+        m = m + np.asarray(c, float) * (x >= np.asarray(xc, float))
+    span = x[-1] - x[0]
+    return m - m[-1] * (x - x[0]) / np.where(span > 0, span, 1.0)
+
+
+def envelope_loads(af, cfg, ev, stations: int = BEAM_STATIONS) -> dict:
+    """Pressure, membrane loads, bending and wrinkling moments of the envelope, the hull taken as
+    a pressurised beam at the trim of an evaluation (Carichner & Nicolai 2013 vol. 2; Burgess
+    1927 ch. 9; docs/methods.md "Envelope as a pressurised beam").
+
+    Loads normal to the hull axis, along ``stations`` stations from nose to tail:
+
+    * net buoyancy of the gas (rho_air - rho_gas) g A(x) cos(alpha), A the section area;
+    * the envelope fabric weight, the hull item mass spread over the perimeter 2 pi r(x);
+    * the fins, payload and every other item as point weights at their stations;
+    * the aerodynamic load of Jones & DeLaurier along the hull: the potential-flow (Munk) part
+      q (k3 - k1) eta sin(2 alpha) dA/dx ahead of the viscous cut-off station, the cross-flow
+      part q sin^2(alpha) C_dc 2 r(x) aft of it;
+    * the fin lift (aerodynamics.fin_lift_drag) at the fin aerodynamic centre;
+    * the confluence lines: the tether's pull, its normal part the reaction that closes the
+      force balance, spread uniformly over :data:`CONFLUENCE_SPAN` of the hull length centred on
+      the confluence station (the patch line of the confluence lines), and its axial part T_x
+      acting at the confluence point's depth z_c below the axis, a couple T_x z_c.
+
+    The pressure is the one the hull needs (:func:`required_pressure`, or the superpressure if
+    higher) at the top; the wrinkling check takes the section's mean, the top less half the gas
+    head. The governing station is where |M| / M_w is largest among the sections of radius at
+    least :data:`WRINKLE_MIN_RADIUS` of the largest (the nose and tail caps carry their loads as
+    shells of double curvature, not as a beam).
+
+    Parameters
+    ----------
+    af : Airframe
+    cfg : Configuration
+        ``cfg.aero`` (efficiency, cross-flow drag), ``cfg.mission.pressure_dynamic_factor``,
+        ``cfg.gas.superpressure``.
+    ev : Evaluation
+        Trim and tether at the speed(s) of interest (arrays broadcast over designs and speeds).
+    stations : int
+        Stations of the integrals, >= 11.
+
+    Returns
+    -------
+    dict of ndarray (the broadcast shape of designs and speeds)
+        ``pressure`` [Pa] (top of the hull), ``hoop_load`` p r_max [N/m],
+        ``longitudinal_load`` [N/m] (largest p r/2 + |M|/(pi r^2) along the hull),
+        ``bending_moment`` [N m] (largest |M(x)|), ``wrinkling_moment`` [N m] (pi p r^3 / 2 at
+        the governing station), ``moment_at_governing`` [N m], ``governing_station`` [m from
+        the nose], ``wrinkling_ratio`` [-] (|M| / M_w there).
+    """
+    from aerostat_core.shapes import SHAPE_INFO
+    from aerostat_core.statics import aero_loads
+
+    h, g = af.hull, af.g
+    alpha = np.asarray(ev.equilibrium.alpha, float)
+    speed = np.asarray(ev.speed, float)
+    q = 0.5 * af.air_density * speed**2
+    shape = np.broadcast_shapes(np.shape(alpha), np.shape(q), np.shape(h.length))
+    # the geometry once per hull (not per speed): stations, radius, area and its slope
+    t = np.linspace(0.0, 1.0, max(int(stations), 11)).reshape((-1,) + (1,) * len(shape))
+    length = np.asarray(h.length, float)
+    x = t * length
+    r = np.broadcast_to(h.radius_at(x), x.shape)
+    area = np.pi * r**2
+    dx = length / (t.shape[0] - 1)
+    d_area = np.gradient(area, axis=0) / np.maximum(dx, 1e-12)
+    per = 2.0 * np.pi * r
+    per_int = np.maximum(np.trapezoid(per, x, axis=0), 1e-12)
+    ca, sa = np.cos(alpha), np.sin(alpha)
+    drho = af.air_density - af.gas_density
+    load = drho * g * area * ca
+    items, positions = af.mass.items, af.mass.positions
+    load = load - np.asarray(items["hull"]) * g * ca * per / per_int
+    streamlined = SHAPE_INFO[h.shape].streamlined
+    if streamlined:
+        ahead = x <= af.cutoff_station
+        munk = q * (h.k2 - h.k1) * cfg.aero.hull_efficiency * np.sin(2.0 * alpha) * d_area
+        cross = q * sa * np.abs(sa) * cfg.aero.hull_crossflow_drag * 2.0 * r
+        load = load + np.where(ahead, munk, cross)
+    points = []
+    for k, m in items.items():
+        if k in ("hull", "lifting gas", "tether") or k not in positions:
+            continue
+        points.append((-np.asarray(m) * g * ca, positions[k][0]))
+    if streamlined:
+        fin_lift = aero_loads(af, cfg.aero, alpha, speed).fin_lift
+        points.append((fin_lift * ca, af.fins.xi_ac))
+    # the tether reaction closes the force balance, spread by the confluence lines over their
+    # patch line: CONFLUENCE_SPAN of the hull length centred on the confluence station
+    resid = np.trapezoid(load, x, axis=0) + sum(np.asarray(p) for p, _ in points)
+    patch = (np.abs(x - af.xi_c) <= 0.5 * CONFLUENCE_SPAN * length).astype(float)
+    load = load - resid * patch / np.maximum(np.trapezoid(patch, x, axis=0), 1e-12)
+    couples = [(np.asarray(ev.drag, float) * np.asarray(af.z_c, float), af.xi_c)]
+    moment = beam_moment(x, load, points, couples)
+    p_top = np.maximum(
+        required_pressure(q, af.air_density, af.gas_density, g, h.diameter,
+                          cfg.mission.pressure_dynamic_factor),
+        cfg.gas.superpressure)
+    p_mean = np.maximum(p_top - drho * g * h.b, 0.0)
+    rr = np.maximum(r, 1e-3 * h.b)
+    m_w = wrinkling_moment(p_mean, rr)
+    ratio = np.where(r >= WRINKLE_MIN_RADIUS * h.b, np.abs(moment) / np.maximum(m_w, 1e-12), 0.0)
+    ratio = np.broadcast_to(ratio, np.broadcast_shapes(ratio.shape, np.shape(moment)))
+    k = np.argmax(ratio, axis=0)[None]
+    full = np.shape(moment)
+
+    def take(a):
+        return np.take_along_axis(np.broadcast_to(a, full), k, axis=0)[0]
+
+    n_long = 0.5 * p_top * rr + np.abs(moment) / (np.pi * rr**2)
+    return {
+        "pressure": np.broadcast_to(p_top, shape),
+        "hoop_load": np.broadcast_to(p_top * h.b, shape),
+        "longitudinal_load": n_long.max(axis=0),
+        "bending_moment": np.abs(moment).max(axis=0),
+        "wrinkling_moment": take(m_w),
+        "moment_at_governing": take(np.abs(moment)),
+        "governing_station": take(x),
+        "wrinkling_ratio": take(ratio),
+    }

@@ -45,7 +45,7 @@ def _reference_volume(req, cfg, f, dsf, pos):
     grid = np.geomspace(sizing_mod.VOLUME_MIN, sizing_mod.VOLUME_MAX, 400)
     out = np.empty(f.size)
     for i in range(f.size):
-        def ok(v):
+        def ok(v, i=i):
             return constraint_state(req, cfg, build_airframe(req, cfg, v, f[i], dsf[i],
                                                             pos[i])).feasible
         feas = ok(grid)
