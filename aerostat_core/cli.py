@@ -24,6 +24,9 @@ from .presets import rules_configuration
 from .rules import RULE_NAMES
 from .shapes import SHAPES
 
+#: Largest sample of the verdict's probabilities under ``--monte-carlo N`` (a larger N still runs
+#: the bands on N samples; the probability's standard error at 1e5 is below 0.002).
+VERDICT_SAMPLES_MAX = 100_000
 #: Largest --config file read [bytes] (a design file is a few kB).
 CONFIG_SIZE_CAP = 1_000_000
 
@@ -45,6 +48,8 @@ _OPTIONS = {
     "payload_power": "payload_power",
     "power_via": "power_via",
     "endurance_days": "endurance_days",
+    "top_up_interval": "top_up_interval_days",
+    "confidence": "confidence",
 }
 
 
@@ -61,22 +66,36 @@ def design_csv(d: Design) -> str:
     return "\n".join(parts)
 
 
-def format_summary(d: Design) -> str:
-    """Readable multi-line summary of a design."""
-    s = d.summary()
+def _num(x, fmt: str) -> str:
+    """``x`` formatted, or "n/a" for a quantity with no physical meaning (None)."""
+    return "n/a" if x is None else format(x, fmt)
+
+
+def format_summary(d: Design, verdict=None) -> str:
+    """Readable multi-line summary of a design, the verdict first (``verdict``: one already
+    computed with its sample; default the nominal one)."""
+    v = d.verdict() if verdict is None else verdict
+    s = d.summary(v)
     req = d.requirement
-    lines = [
+    lines = [f"VERDICT: {v.verdict} - {v.headline}"]
+    lines += [f"  what to change: {a}" for a in v.what_to_change]
+    if d.sinks:
+        lines.append(f"  the hull cannot lift its weight (free lift {s.free_lift_kg:.1f} kg): no "
+                     "wind performance is shown")
+    lines += [
         f"Aerostat for {req.payload_mass:g} kg at {req.altitude:g} m "
-        f"({'sized' if d.sized else 'given'} volume)",
+        f"({'sized' if d.sized or d.robust is not None else 'given'} volume)",
         f"  volume            {s.volume_m3:9.1f} m3",
         f"  length x diameter {s.length_m:6.2f} x {s.diameter_m:.2f} m",
         f"  total mass        {s.total_mass_kg:9.2f} kg",
         f"  free lift         {s.free_lift_kg:9.2f} kg "
         f"({s.percent_static_lift:.0f} % of buoyancy)",
-        f"  at {req.design_wind:g} m/s: blow-by {s.blow_by_at_design_wind_m:.1f} m, "
-        f"alpha {s.alpha_at_design_wind_deg:.1f} deg, tension "
-        f"{s.tension_top_at_design_wind_N:.0f} N, safety factor "
-        f"{s.safety_factor_at_design_wind:.1f}",
+        f"  at {req.design_wind:g} m/s: blow-by {_num(s.blow_by_at_design_wind_m, '.1f')} m, "
+        f"alpha {_num(s.alpha_at_design_wind_deg, '.1f')} deg, tension "
+        f"{_num(s.tension_top_at_design_wind_N, '.0f')} N, safety factor "
+        f"{_num(s.safety_factor_at_design_wind, '.1f')}",
+        f"  envelope          {s.envelope_pressure_Pa:9.0f} Pa, bending moment "
+        f"{s.bending_moment_Nm:.0f} N m (wrinkles at {s.wrinkling_moment_Nm:.0f} N m)",
         f"  gas fill cost     {s.gas_cost_USD:9.0f} USD",
         f"  rules             {s.rules} (sizing set by: {s.binding_constraint})",
         "  mass breakdown:",
@@ -125,6 +144,13 @@ def _parser() -> argparse.ArgumentParser:
     d.add_argument("--endurance-days", type=float,
                    help="days aloft without a helium top-up, keeping the free-lift margin "
                         "(default 0: no endurance requirement)")
+    d.add_argument("--top-up-interval", type=float,
+                   help="days between helium top-ups; the free-lift margin must hold at the end "
+                        "of one [day] (default from the rule set: practice 7)")
+    d.add_argument("--confidence", type=float,
+                   help="robust sizing: the smallest hull that meets the operating limits with "
+                        "at least this probability under the model's uncertainties, e.g. 0.95 "
+                        "(default: size to the design margins)")
     d.add_argument("--volume", type=float, help="hull volume [m3] (default: sized)")
     d.add_argument("--config", type=Path, help="JSON design file with every input")
     d.add_argument("--csv", type=Path, help="write geometry, mass and performance CSV here")
@@ -147,9 +173,10 @@ def _parser() -> argparse.ArgumentParser:
     return p
 
 
-def summary_json(d: Design) -> str:
-    """JSON text of :meth:`Design.summary` plus ``hull_shape``."""
-    s = d.summary().to_dict()
+def summary_json(d: Design, verdict=None) -> str:
+    """JSON text of :meth:`Design.summary` plus ``hull_shape`` (``verdict``: one computed with
+    a seeded sample, which sets ``probability_meets_operating_limits``)."""
+    s = d.summary(verdict).to_dict()
     s.setdefault("hull_mass_kg", float(d.airframe.mass.items["hull"]))
     s.setdefault("hull_shape", d.airframe.hull.shape)
     return json.dumps(s, indent=2)
@@ -220,13 +247,15 @@ def _main(argv: list[str] | None) -> int:
     d = design(req, cfg)
     try:
         mc = monte_carlo_summary(d, args)
+        verdict = d.verdict(min(args.monte_carlo, VERDICT_SAMPLES_MAX), args.seed) \
+            if args.monte_carlo else None
     except ValueError as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2
     if args.json:
-        print(json.dumps({**json.loads(summary_json(d)), **mc}, indent=2))
+        print(json.dumps({**json.loads(summary_json(d, verdict)), **mc}, indent=2))
     else:
-        print(format_summary(d))
+        print(format_summary(d, verdict))
         if mc:
             print(f"  Monte Carlo ({mc['monte_carlo_samples']} samples) at the design wind, 5-95 %:"
                   f" blow-by {mc['blow_by_p05_m']:.1f}-{mc['blow_by_p95_m']:.1f} m, tension "

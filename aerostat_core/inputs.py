@@ -108,6 +108,11 @@ class Requirement:
         Days between helium top-ups [day], valid [0, 365]: the free-lift margin must still hold
         at the end of one (practice 7, thesis 0: at the fill); the endurance row checks the
         longer of this and ``endurance_days``.
+    confidence : float or None
+        Robust sizing [-], valid [0.5, 0.999]: size the smallest hull whose probability of
+        meeting the operating limits under the Monte Carlo spreads is at least this
+        (:func:`aerostat_core.verdict.robust_size`); ``None`` (the default) sizes to the
+        design margins alone.
     """
 
     payload_mass: float = number(
@@ -194,6 +199,11 @@ class Requirement:
         None, "Top-up interval", "day", 0, 365, empty="rule set", step=1.0, fmt="%.1f",
         help="Days between helium top-ups; the free-lift margin must still hold at the end of "
         "one (practice 7 days, thesis 0).", source="aerostat_core.rules")
+    confidence: float | None = number(
+        None, "Sizing confidence", "", 0.5, 0.999, empty="design margins only", step=0.01,
+        fmt="%.3f", help="Size the smallest hull that meets the operating limits with at least "
+        "this probability under the model's uncertainties (e.g. 0.95). Empty: size to the "
+        "design margins.", source="aerostat_core.verdict")
 
     def __post_init__(self) -> None:
         validate(self)

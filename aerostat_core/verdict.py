@@ -16,10 +16,12 @@ meeting them (issue 22 items 2-4; docs/methods.md, "Design margins and operating
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
+from types import SimpleNamespace
 
 import numpy as np
 
-from aerostat_core.constraints import BY_NAME, CONSTRAINTS, NAMES
+from aerostat_core.airframe import build_airframe
+from aerostat_core.constraints import BY_NAME, CONSTRAINTS, NAMES, constraint_state
 from aerostat_core.inputs import Configuration, Requirement
 from aerostat_core.validation import check_int, check_number
 
@@ -229,8 +231,10 @@ def robust_size(req: Requirement, cfg: Configuration | None = None, confidence: 
     v0 = float(d0.volume)
 
     def prob(v):
-        dv = design(req, cfg.with_design_variables(volume=v))
-        return dv, limit_probabilities(dv, n=samples, seed=seed)["operating"]
+        """(design margins met nominally at v, probability of the operating limits at v)."""
+        ok = bool(np.all(constraint_state(req, cfg, build_airframe(req, cfg, v)).met))
+        held = SimpleNamespace(requirement=req, configuration=cfg, volume=v)
+        return ok, limit_probabilities(held, n=samples, seed=seed)["operating"]
 
     if not d0.feasible:
         return d0, RobustSizing(confidence, float("nan"), v0, v0, False, samples, seed,
@@ -242,13 +246,13 @@ def robust_size(req: Requirement, cfg: Configuration | None = None, confidence: 
     v = v0
     while v < VOLUME_MAX:
         v = min(v * 1.25, VOLUME_MAX)
-        dv, p = prob(v)
-        if not dv.feasible:
+        ok, p = prob(v)
+        if not ok:
             return d0, RobustSizing(confidence, max(p0, p_lo), v0, v0, False, samples, seed,
                                     f"the design margins break at {v:.4g} m3 before the "
                                     f"probability reaches {confidence:g}")
         if p >= confidence:
-            hi, best = v, (dv, p)
+            hi, best = v, p
             break
         lo, p_lo = v, p
     if hi is None:
@@ -256,13 +260,13 @@ def robust_size(req: Requirement, cfg: Configuration | None = None, confidence: 
                                 f"no hull up to {VOLUME_MAX:g} m3 reaches {confidence:g}")
     while hi / lo - 1.0 > 1e-3:
         mid = float(np.sqrt(lo * hi))
-        dv, p = prob(mid)
-        if p >= confidence and dv.feasible:
-            hi, best = mid, (dv, p)
+        ok, p = prob(mid)
+        if p >= confidence and ok:
+            hi, best = mid, p
         else:
             lo = mid
-    dv, p = best
-    return dv, RobustSizing(confidence, p, v0, hi, True, samples, seed)
+    return (design(req, cfg.with_design_variables(volume=hi)),
+            RobustSizing(confidence, best, v0, hi, True, samples, seed))
 
 
 __all__ = ["VERDICTS", "Verdict", "RobustSizing", "assess", "operating_requirement",
