@@ -117,12 +117,12 @@ def allowable_pressure(strength, safety_factor, radius, moment=0.0):
 # pressurised beam") --------------------------------------------------------------------------
 #: Stations along the hull of the beam model (the shear and moment integrals).
 BEAM_STATIONS = 31
-#: Share of the hull length over which the confluence lines spread the tether's pull [-]:
-#: engineering choice (the patch lines of tactical aerostats span about a third of the hull;
-#: a point load, the conservative limit, would double the moment at the confluence station).
+#: Share of the hull length over which the confluence lines spread the tether's pull [-], a hat
+#: centred on the centre of buoyancy: engineering choice (the patch lines of tactical aerostats
+#: span about a third of the hull; a point load would be the conservative limit).
 CONFLUENCE_SPAN = 1.0 / 3.0
 #: Sections checked for wrinkling: radius at least this share of the largest [-].
-WRINKLE_MIN_RADIUS = 0.3
+WRINKLE_MIN_RADIUS = 0.5
 
 
 def wrinkling_moment(pressure, radius):
@@ -209,14 +209,19 @@ def envelope_loads(af, cfg, ev, stations: int = BEAM_STATIONS) -> dict:
     * net buoyancy of the gas (rho_air - rho_gas) g A(x) cos(alpha), A the section area;
     * the envelope fabric weight, the hull item mass spread over the perimeter 2 pi r(x);
     * the fins, payload and every other item as point weights at their stations;
-    * the aerodynamic load of Jones & DeLaurier along the hull: the potential-flow (Munk) part
-      q (k3 - k1) eta sin(2 alpha) dA/dx ahead of the viscous cut-off station, the cross-flow
-      part q sin^2(alpha) C_dc 2 r(x) aft of it;
+    * the aerodynamic load along the hull in the shapes of Jones & DeLaurier: the potential-flow
+      (Munk) part, proportional to sin(2 alpha) dA/dx, ahead of the viscous cut-off station, the
+      cross-flow part, proportional to r(x), aft of it; the two scaled so that their force and
+      moment are the model's own hull lift and couple (:func:`aerostat_core.statics.aero_loads`,
+      what the trim balanced);
     * the fin lift (aerodynamics.fin_lift_drag) at the fin aerodynamic centre;
-    * the confluence lines: the tether's pull, its normal part the reaction that closes the
-      force balance, spread uniformly over :data:`CONFLUENCE_SPAN` of the hull length centred on
-      the confluence station (the patch line of the confluence lines), and its axial part T_x
-      acting at the confluence point's depth z_c below the axis, a couple T_x z_c.
+    * the confluence lines: the tether's pull enters the hull along the patch line of the
+      lines (a hat of base :data:`CONFLUENCE_SPAN` of the hull length on the centre of
+      buoyancy; the confluence point itself lies below the hull, often ahead of the nose). Its
+      resultant is what closes the balance of all the other loads: a uniform part, the force,
+      and a linear part, the moment (the fore and aft lines pull unequally, and their
+      horizontal pull acts below the axis, so that the resultant passes through the confluence
+      point). So M(0) = M(L) = 0 without a closing ramp.
 
     The pressure is the one the hull needs (:func:`required_pressure`, or the superpressure if
     higher) at the top; the wrinkling check takes the section's mean, the top less half the gas
@@ -268,25 +273,50 @@ def envelope_loads(af, cfg, ev, stations: int = BEAM_STATIONS) -> dict:
     items, positions = af.mass.items, af.mass.positions
     load = load - np.asarray(items["hull"]) * g * ca * per / per_int
     streamlined = SHAPE_INFO[h.shape].streamlined
+    couples = []
     if streamlined:
+        # the hull's aerodynamic load along it: the Jones & DeLaurier shapes (potential flow
+        # ahead of the cut-off station, cross-flow aft of it), scaled so that their force and
+        # moment are the model's own hull lift and couple (what the trim balanced)
+        aero = aero_loads(af, cfg.aero, alpha, speed)
         ahead = x <= af.cutoff_station
-        munk = q * (h.k2 - h.k1) * cfg.aero.hull_efficiency * np.sin(2.0 * alpha) * d_area
-        cross = q * sa * np.abs(sa) * cfg.aero.hull_crossflow_drag * 2.0 * r
-        load = load + np.where(ahead, munk, cross)
+        shape_1 = np.where(ahead, np.sin(2.0 * alpha) * d_area, 0.0)
+        shape_2 = np.where(ahead, 0.0, 2.0 * r * np.ones_like(alpha))
+        arm = x - af.xi_m
+        f1, f2 = np.trapezoid(shape_1, x, axis=0), np.trapezoid(shape_2, x, axis=0)
+        m1, m2 = np.trapezoid(shape_1 * arm, x, axis=0), np.trapezoid(shape_2 * arm, x, axis=0)
+        lift_h, couple_h = aero.hull_lift * ca, -aero.hull_moment  # moment of upward loads
+        det = f1 * m2 - f2 * m1
+        ok = np.abs(det) > 1e-9 * (np.abs(f1 * m2) + np.abs(f2 * m1) + 1e-30)
+        safe = np.where(ok, det, 1.0)
+        s1 = np.where(ok, (lift_h * m2 - f2 * couple_h) / safe, 0.0)
+        s2 = np.where(ok, (f1 * couple_h - m1 * lift_h) / safe, 0.0)
+        load = load + s1 * shape_1 + s2 * shape_2
+        # where the two shapes cannot carry it (alpha ~ 0), the hull load as a force and couple
+        couples.append((np.where(ok, 0.0, aero.hull_moment), af.xi_m))
+        hull_point = (np.where(ok, 0.0, lift_h), af.xi_m)
     points = []
     for k, m in items.items():
         if k in ("hull", "lifting gas", "tether") or k not in positions:
             continue
         points.append((-np.asarray(m) * g * ca, positions[k][0]))
     if streamlined:
-        fin_lift = aero_loads(af, cfg.aero, alpha, speed).fin_lift
-        points.append((fin_lift * ca, af.fins.xi_ac))
-    # the tether reaction closes the force balance, spread by the confluence lines over their
-    # patch line: CONFLUENCE_SPAN of the hull length centred on the confluence station
-    resid = np.trapezoid(load, x, axis=0) + sum(np.asarray(p) for p, _ in points)
-    patch = (np.abs(x - af.xi_c) <= 0.5 * CONFLUENCE_SPAN * length).astype(float)
-    load = load - resid * patch / np.maximum(np.trapezoid(patch, x, axis=0), 1e-12)
-    couples = [(np.asarray(ev.drag, float) * np.asarray(af.z_c, float), af.xi_c)]
+        points.append((aero.fin_lift * ca, af.fins.xi_ac))
+        points.append(hull_point)
+    # the confluence lines' reaction closes the balance: its force the residual force, spread
+    # over their patch line (a hat of base CONFLUENCE_SPAN of the hull length on the centre of
+    # buoyancy, where the patches of the lines sit), with a linear part that carries the moment
+    # (the fore and aft lines pull unequally so that the resultant passes through the
+    # confluence point, as they do to hold the trim)
+    patch = np.maximum(1.0 - np.abs(x - h.xi_cb) / (0.5 * CONFLUENCE_SPAN * length), 0.0)
+    w0 = np.maximum(np.trapezoid(patch, x, axis=0), 1e-12)
+    x_bar = np.trapezoid(patch * x, x, axis=0) / w0
+    w2 = np.maximum(np.trapezoid(patch * (x - x_bar) ** 2, x, axis=0), 1e-12)
+    force = np.trapezoid(load, x, axis=0) + sum(np.asarray(p) for p, _ in points)
+    first = (np.trapezoid(load * x, x, axis=0)
+             + sum(np.asarray(p) * np.asarray(xp) for p, xp in points))
+    c = sum(np.asarray(cc) for cc, _ in couples) - first + force * x_bar
+    load = load - force * patch / w0 + c * (x - x_bar) * patch / w2
     moment = beam_moment(x, load, points, couples)
     p_top = np.maximum(
         required_pressure(q, af.air_density, af.gas_density, g, h.diameter,

@@ -33,7 +33,8 @@ SUMMARY_KEYS = [
     "alpha_at_design_wind_deg", "tension_top_at_design_wind_N", "safety_factor_at_design_wind",
     "gas_cost_USD", "feasible", "hull_mass_kg", "tether_mass_kg", "altitude_loss_m",
     "survival_wind_m_s", "safety_factor_at_survival_wind", "binding_constraint", "violations",
-    "rules", "ballonet_volume_m3", "days_to_top_up", "helium_top_up_m3",
+    "rules", "verdict", "probability_meets_operating_limits", "bending_moment_Nm",
+    "wrinkling_moment_Nm", "envelope_pressure_Pa", "ballonet_volume_m3", "days_to_top_up", "helium_top_up_m3",
     "envelope_stress_margin", "winch_pull_N", "winch_power_W",
 ]
 
@@ -80,7 +81,8 @@ def _batch(shape: str, n: int, seed: int):
 @pytest.mark.parametrize("shape", ["npl", "lotte"])
 def test_search_finds_the_smallest_feasible_volume(rules, shape):
     """Batch (the coarse grid) and one design at a time (the fine grid) both find the smallest
-    feasible volume of a dense scan refined by bisection, to the search's precision."""
+    feasible volume of a dense scan refined by bisection (or a smaller true window the scan
+    stepped over), to the search's precision."""
     req, cfg = CASES[rules]
     cfg = replace(cfg, hull=HullSpec(shape=shape, volume=None))
     f, dsf, pos = _batch(shape, 12, 7)
@@ -88,14 +90,26 @@ def test_search_finds_the_smallest_feasible_volume(rules, shape):
     ref = _reference_volume(req, cfg, f, dsf, pos)
     ok = np.isfinite(ref)
     assert ok.sum() >= 6
-    assert np.array_equal(np.asarray(s.feasible), ok)
-    np.testing.assert_allclose(np.asarray(s.volume)[ok], ref[ok], rtol=2 * sizing_mod.RTOL)
-    assert np.all(np.asarray(s.volume)[ok] >= ref[ok] * (1 - 1e-6))  # never below the boundary
+    feasible, vol = np.asarray(s.feasible), np.asarray(s.volume)
+    assert np.all(feasible[ok])
+    req = req.resolved()
+    for i in range(12):
+        if not feasible[i]:
+            continue
+        # never above the reference; below it only in a window the scan stepped over, and then
+        # the answer is feasible by evaluation and broken just below (a true lower boundary)
+        if ok[i]:
+            assert vol[i] <= ref[i] * (1 + 2 * sizing_mod.RTOL)
+        at = constraint_state(req, cfg, build_airframe(
+            req, cfg, vol[i] * np.array([1.0, 1 - 3 * sizing_mod.RTOL]), f[i], dsf[i], pos[i]))
+        assert bool(at.feasible[0])
+        if vol[i] > sizing_mod.VOLUME_MIN * 1.001:
+            assert not bool(at.feasible[1])
     for i in range(0, 12, 4):
         one = size_volume(req, cfg, f[i], dsf[i], pos[i])
-        assert bool(one.feasible) == ok[i]
+        assert bool(one.feasible) == bool(feasible[i])
         if ok[i]:
-            assert float(one.volume) == pytest.approx(ref[i], rel=2 * sizing_mod.RTOL)
+            assert float(one.volume) <= ref[i] * (1 + 2 * sizing_mod.RTOL)
 
 
 @pytest.mark.parametrize("rules", ["practice", "thesis"])
