@@ -207,7 +207,10 @@ def wind_quantities(req: Requirement, cfg: Configuration, ev: Evaluation) -> dic
     need, fab = st["strength_required"] * one, st["strength"] * one
     out["envelope_stress"] = (need, fab, need / fab - 1.0, fab - need)
     mb, mw = st["moment_at_governing"] * one, st["wrinkling_moment"] * one
-    out["envelope_wrinkling"] = (mb, mw, mb / np.maximum(mw, 1e-12) - 1.0, mw - mb)
+    if req.rule_set.check_wrinkling:
+        out["envelope_wrinkling"] = (mb, mw, mb / np.maximum(mw, 1e-12) - 1.0, mw - mb)
+    else:  # off in the rule set (the thesis preset): reported, never binding
+        out["envelope_wrinkling"] = (mb, mw, -one, np.inf * one)
     p_req, p_ok = st["pressure_required"] * one, st["pressure_allowable"] * one
     g_p = np.where(p_ok > 0, p_req / np.where(p_ok > 0, p_ok, 1.0) - 1.0, 1.0 + p_req / fab)
     out["survival_envelope_pressure"] = (p_req, p_ok, g_p, p_ok - p_req)

@@ -140,7 +140,8 @@ def size_fielded(system: FieldedSystem, rules: str = "practice",
     practice configuration otherwise unchanged (issue 13 item 9)."""
     req = Requirement(payload_mass=system.payload_mass, altitude=system.altitude,
                       design_wind=system.design_wind, rules=rules,
-                      endurance_days=system.class_endurance_days if mission else 0.0)
+                      endurance_days=system.class_endurance_days if mission else 0.0,
+                      top_up_interval_days=0.0)  # the calibration's sizing: class endurance only
     cfg = None
     if mission:
         cfg = replace(rules_configuration(rules), mission=MissionSpec(ballonet="auto"))

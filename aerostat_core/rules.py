@@ -123,6 +123,9 @@ class RuleSet:
         one (0: checked at the fill).
     operating : OperatingLimits or None
         What must hold in flight; ``None``: the design margins themselves (no separate rows).
+    check_wrinkling : bool
+        Check the envelope wrinkling row (the hull as a pressurised beam); off in the thesis
+        preset, whose method has no envelope structure.
     """
 
     name: str
@@ -138,6 +141,7 @@ class RuleSet:
     weathervane_margin: float
     top_up_interval_days: float = 0.0
     operating: OperatingLimits | None = None
+    check_wrinkling: bool = True
 
 
 #: "practice": limits for real missions.
@@ -194,6 +198,7 @@ THESIS = RuleSet(
     survival_safety_factor=1.0,
     max_tether_angle_deg=45.0,
     weathervane_margin=0.0,
+    check_wrinkling=False,
 )
 
 #: The rule sets by name; the first is the default.
