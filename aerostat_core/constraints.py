@@ -105,12 +105,14 @@ CONSTRAINTS: tuple[Constraint, ...] = (
                "{limit:.0f} N/m at {wind:g} m/s", "design",
                "a larger hull only loads its fabric harder: choose a stronger fabric"),
     Constraint("envelope_wrinkling", "Envelope wrinkling", "N m",
-               "largest envelope bending moment (the hull as a pressurised beam) below the "
-               "wrinkling moment pi p r^3/2 of its section, at the design wind",
+               "envelope bending moment (the hull as a pressurised beam) below the wrinkling "
+               "moment pi p r^3/2 of its governing section at the largest pressure the fabric "
+               "carries with its safety factor, at the design wind",
                "the envelope bending moment {value:.0f} N m exceeds the wrinkling moment "
-               "{limit:.0f} N m at {wind:g} m/s: the hull creases", "design",
-               "a higher hull pressure (superpressure), a lower fineness ratio, or confluence "
-               "lines spread along more of the hull"),
+               "{limit:.0f} N m at the largest pressure the fabric carries, at {wind:g} m/s: "
+               "the hull creases", "design",
+               "a stronger envelope fabric, a lower fineness ratio, or confluence lines spread "
+               "along more of the hull"),
     Constraint("survival_envelope_pressure", "Survival envelope pressure", "Pa",
                "the fabric carries, with its safety factor, the internal pressure the hull needs "
                "at the survival wind",
@@ -206,7 +208,7 @@ def wind_quantities(req: Requirement, cfg: Configuration, ev: Evaluation) -> dic
     st = structure_quantities(req, cfg, ev)
     need, fab = st["strength_required"] * one, st["strength"] * one
     out["envelope_stress"] = (need, fab, need / fab - 1.0, fab - need)
-    mb, mw = st["moment_at_governing"] * one, st["wrinkling_moment"] * one
+    mb, mw = st["moment_at_governing"] * one, st["wrinkling_moment_allowable"] * one
     if req.rule_set.check_wrinkling:
         out["envelope_wrinkling"] = (mb, mw, mb / np.maximum(mw, 1e-12) - 1.0, mw - mb)
     else:  # off in the rule set (the thesis preset): reported, never binding

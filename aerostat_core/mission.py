@@ -38,7 +38,7 @@ from .endurance import (
 from .fields import choice, integer, number, validate
 from .materials import POWER_TETHER_CONDUCTORS, TetherSpec
 from .power import Conductors, battery_mass, power_tether, size_conductors
-from .structure import allowable_pressure, envelope_loads
+from .structure import allowable_pressure, envelope_loads, wrinkling_moment
 from .winch import Winch, size_winch
 
 POWER_ROUTES = ("onboard", "tether")
@@ -312,7 +312,9 @@ def structure_quantities(req, cfg, ev) -> dict:
         [N/m] (the longitudinal load at the worst station), strength_required (SF x the larger
         load) [N/m], strength (fabric) [N/m], pressure_allowable [Pa] (largest pressure the
         fabric carries with SF under that moment), wrinkling_moment [N m] (pi p r^3/2 at the
-        governing station) and moment_at_governing [N m] (the bending moment there).
+        governing station, at the hull's pressure), wrinkling_moment_allowable [N m] (the same
+        at the allowable pressure: the row's limit) and moment_at_governing [N m] (the bending
+        moment there).
     """
     af = ev.airframe
     m = cfg.mission
@@ -324,6 +326,9 @@ def structure_quantities(req, cfg, ev) -> dict:
     need = m.envelope_safety_factor * np.maximum(hoop, long)
     strength = float(cfg.hull_fabric.tensile_strength)
     allow = allowable_pressure(strength, m.envelope_safety_factor, r, moment)
+    # the wrinkling moment at the largest pressure the fabric carries with its safety factor
+    wrinkle_allow = wrinkling_moment(np.maximum(allow - loads["head"], 0.0),
+                                     loads["governing_radius"])
     return {
         "pressure_required": p,
         "moment": moment,
@@ -333,6 +338,7 @@ def structure_quantities(req, cfg, ev) -> dict:
         "strength": strength,
         "pressure_allowable": allow,
         "wrinkling_moment": loads["wrinkling_moment"],
+        "wrinkling_moment_allowable": wrinkle_allow,
         "moment_at_governing": loads["moment_at_governing"],
     }
 

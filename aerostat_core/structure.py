@@ -223,11 +223,16 @@ def envelope_loads(af, cfg, ev, stations: int = BEAM_STATIONS) -> dict:
       horizontal pull acts below the axis, so that the resultant passes through the confluence
       point). So M(0) = M(L) = 0 without a closing ramp.
 
-    The pressure is the one the hull needs (:func:`required_pressure`, or the superpressure if
-    higher) at the top; the wrinkling check takes the section's mean, the top less half the gas
-    head. The governing station is where |M| / M_w is largest among the sections of radius at
-    least :data:`WRINKLE_MIN_RADIUS` of the largest (the nose and tail caps carry their loads as
-    shells of double curvature, not as a beam).
+    The hull's pressure (at the top) is the largest of what it needs against nose dimpling
+    (:func:`required_pressure`), what keeps the governing section from wrinkling (the pressure
+    whose M_w is the bending moment there, times the same factor, plus the gas head from the
+    section's centre to the top) and the gas superpressure: the pressure is chosen to prevent
+    wrinkling and the fabric is then sized for it (Carichner & Nicolai 2013). Whether the fabric
+    can carry a pressure that high is the constraint table's wrinkling row
+    (:func:`aerostat_core.mission.structure_quantities`). The governing section is where
+    |M| / r^3 is largest among the sections of radius at least :data:`WRINKLE_MIN_RADIUS` of the
+    largest (the nose and tail caps carry their loads as shells of double curvature, not as a
+    beam).
 
     Parameters
     ----------
@@ -243,11 +248,13 @@ def envelope_loads(af, cfg, ev, stations: int = BEAM_STATIONS) -> dict:
     Returns
     -------
     dict of ndarray (the broadcast shape of designs and speeds)
-        ``pressure`` [Pa] (top of the hull), ``hoop_load`` p r_max [N/m],
-        ``longitudinal_load`` [N/m] (largest p r/2 + |M|/(pi r^2) along the hull),
-        ``bending_moment`` [N m] (largest |M(x)|), ``wrinkling_moment`` [N m] (pi p r^3 / 2 at
-        the governing station), ``moment_at_governing`` [N m], ``governing_station`` [m from
-        the nose], ``wrinkling_ratio`` [-] (|M| / M_w there).
+        ``pressure`` [Pa] (top of the hull, the largest of the three needs),
+        ``pressure_dimpling``, ``pressure_wrinkling`` [Pa] (the two needs), ``hoop_load``
+        p r_max [N/m], ``longitudinal_load`` [N/m] (largest p r/2 + |M|/(pi r^2) along the
+        hull), ``bending_moment`` [N m] (largest |M(x)|), ``wrinkling_moment`` [N m]
+        (pi p r^3 / 2 at the governing section, at the section's mean pressure),
+        ``moment_at_governing`` [N m], ``governing_station`` [m from the nose],
+        ``governing_radius`` [m], ``head`` [Pa] (gas head from the axis to the top).
     """
     from aerostat_core.shapes import SHAPE_INFO
     from aerostat_core.statics import aero_loads
@@ -318,14 +325,10 @@ def envelope_loads(af, cfg, ev, stations: int = BEAM_STATIONS) -> dict:
     c = sum(np.asarray(cc) for cc, _ in couples) - first + force * x_bar
     load = load - force * patch / w0 + c * (x - x_bar) * patch / w2
     moment = beam_moment(x, load, points, couples)
-    p_top = np.maximum(
-        required_pressure(q, af.air_density, af.gas_density, g, h.diameter,
-                          cfg.mission.pressure_dynamic_factor),
-        cfg.gas.superpressure)
-    p_mean = np.maximum(p_top - drho * g * h.b, 0.0)
     rr = np.maximum(r, 1e-3 * h.b)
-    m_w = wrinkling_moment(p_mean, rr)
-    ratio = np.where(r >= WRINKLE_MIN_RADIUS * h.b, np.abs(moment) / np.maximum(m_w, 1e-12), 0.0)
+    head = drho * g * h.b  # top of the hull less the section's mean
+    # governing section: the largest |M| / r^3 (the pressure is uniform along the hull)
+    ratio = np.where(r >= WRINKLE_MIN_RADIUS * h.b, np.abs(moment) / rr**3, 0.0)
     ratio = np.broadcast_to(ratio, np.broadcast_shapes(ratio.shape, np.shape(moment)))
     k = np.argmax(ratio, axis=0)[None]
     full = np.shape(moment)
@@ -333,14 +336,23 @@ def envelope_loads(af, cfg, ev, stations: int = BEAM_STATIONS) -> dict:
     def take(a):
         return np.take_along_axis(np.broadcast_to(a, full), k, axis=0)[0]
 
+    m_gov, r_gov = take(np.abs(moment)), take(rr)
+    factor = cfg.mission.pressure_dynamic_factor
+    p_dimple = required_pressure(q, af.air_density, af.gas_density, g, h.diameter, factor)
+    # the pressure that keeps the governing section from wrinkling, with the same factor
+    p_wrinkle = factor * 2.0 * m_gov / (np.pi * r_gov**3) + head
+    p_top = np.maximum(np.maximum(p_dimple, p_wrinkle), cfg.gas.superpressure)
     n_long = 0.5 * p_top * rr + np.abs(moment) / (np.pi * rr**2)
     return {
         "pressure": np.broadcast_to(p_top, shape),
+        "pressure_dimpling": np.broadcast_to(p_dimple, shape),
+        "pressure_wrinkling": np.broadcast_to(p_wrinkle, shape),
         "hoop_load": np.broadcast_to(p_top * h.b, shape),
         "longitudinal_load": n_long.max(axis=0),
         "bending_moment": np.abs(moment).max(axis=0),
-        "wrinkling_moment": take(m_w),
-        "moment_at_governing": take(np.abs(moment)),
+        "wrinkling_moment": wrinkling_moment(np.maximum(p_top - head, 0.0), r_gov),
+        "moment_at_governing": m_gov,
         "governing_station": take(x),
-        "wrinkling_ratio": take(ratio),
+        "governing_radius": r_gov,
+        "head": np.broadcast_to(head, shape),
     }
