@@ -274,7 +274,7 @@ def envelope_loads(af, cfg, ev, stations: int = BEAM_STATIONS) -> dict:
     d_area = np.gradient(area, axis=0) / np.maximum(dx, 1e-12)
     per = 2.0 * np.pi * r
     per_int = np.maximum(np.trapezoid(per, x, axis=0), 1e-12)
-    ca, sa = np.cos(alpha), np.sin(alpha)
+    ca = np.cos(alpha)
     drho = af.air_density - af.gas_density
     load = drho * g * area * ca
     items, positions = af.mass.items, af.mass.positions
