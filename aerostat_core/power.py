@@ -5,8 +5,8 @@ tether: a go-and-return pair of copper conductors, sized for a supply voltage an
 resistive loss (with a current-density ceiling), is bundled with the strength member; it adds
 mass per metre and diameter (drag), and no strength: the breaking load is the strength member's
 alone (copper yields at a strain of ~0.1-0.2 %, long before an aramid or UHMWPE member breaks at
-2-4 %, so at the member's breaking load the copper has long stopped carrying its share; docs/
-methods.md "Tether strength without the copper").
+2-4 %, so at the member's breaking load the copper has long stopped carrying its share; docs/methods.md
+§1.18).
 
 No power or electro-optic tether product with a published mass per metre, diameter and
 breaking load was found (docs/methods.md §1.14, S18): the catalogue's power tethers are

@@ -20,8 +20,7 @@ A :class:`Requirement` field left as ``None`` takes its value from the requireme
 Every limit is a fraction of the tether length (= the operating altitude), never one absolute
 length for every altitude.
 
-Design margins and operating limits are two things (docs/methods.md, "Design margins and
-operating limits"):
+Design margins and operating limits are two things (docs/methods.md §1.16):
 
 * the **design margins** (free lift 15 % of gross lift, tether safety factor 3, envelope safety
   factor 4, weathervane margin...) are what sizing applies, at the end of a top-up interval

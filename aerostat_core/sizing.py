@@ -1,5 +1,5 @@
 """Hull sizing: the smallest volume that meets every constraint of the table at the design wind
-(docs/methods.md, "Exact sizing").
+(docs/methods.md §1.15).
 
 Vectorised over a batch of design variables (the optimiser's nested V*(x), docs/methods.md
 §1.12). Feasibility need not be monotone in volume: blow-by and free lift improve with volume

@@ -113,8 +113,7 @@ def allowable_pressure(strength, safety_factor, radius, moment=0.0):
     return np.minimum(hoop, long)
 
 
-# --- the hull as a pressurised beam (issue 22 item 5; docs/methods.md "Envelope as a
-# pressurised beam") --------------------------------------------------------------------------
+# --- the hull as a pressurised beam (issue 22 item 5; docs/methods.md §1.17) ---------------
 #: Stations along the hull of the beam model (the shear and moment integrals).
 BEAM_STATIONS = 31
 #: Share of the hull length over which the confluence lines spread the tether's pull [-], a hat
@@ -202,7 +201,7 @@ def beam_moment(x, load, point_loads=(), couples=()):
 def envelope_loads(af, cfg, ev, stations: int = BEAM_STATIONS) -> dict:
     """Pressure, membrane loads, bending and wrinkling moments of the envelope, the hull taken as
     a pressurised beam at the trim of an evaluation (Carichner & Nicolai 2013 vol. 2; Burgess
-    1927 ch. 9; docs/methods.md "Envelope as a pressurised beam").
+    1927 ch. 9; docs/methods.md §1.17).
 
     Loads normal to the hull axis, along ``stations`` stations from nose to tail:
 

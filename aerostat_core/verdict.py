@@ -1,5 +1,5 @@
 """The verdict an engineer can sign: design margins, operating limits and the probability of
-meeting them (issue 22 items 2-4; docs/methods.md, "Design margins and operating limits").
+meeting them (issue 22 items 2-4; docs/methods.md §1.16).
 
 * :func:`operating_requirement`: the requirement and configuration whose limits are the rule
   set's operating limits (:class:`aerostat_core.rules.OperatingLimits`) instead of its design
