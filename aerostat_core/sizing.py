@@ -54,6 +54,7 @@ _LOG_RTOL = float(np.log1p(RTOL))
 #: Root-finder rounds before a bracket is accepted at its current width.
 _MAX_ROUNDS = 12
 _TOL = np.array([c.tolerance for c in CONSTRAINTS])
+_DEBUG = False
 
 
 @dataclass(frozen=True)
@@ -229,23 +230,73 @@ def _secant_coordinate(g, tol):
     return np.where(pos, np.log1p(np.maximum(g, -0.9)) - np.log1p(tol), g - tol)
 
 
-def _refine(req, cfg, f, dsf, pos, k, x_lo, x_hi, r_lo, r_hi, s_lo, s_hi, states):
+def _cubic_guess(grid, gg, d_idx, k, j):
+    """First guess of each bracket's root [ln m3]: the cubic through the row's secant
+    coordinate (:func:`_secant_coordinate`) at four consecutive grid points around the interval
+    j (where the coordinate is defined at all four, else g - tol), its root inside the interval
+    by bisection. Brackets (d_idx, k, j) as in :func:`_grid_brackets`."""
+    n_grid = grid.size
+    i0 = np.clip(j - 1, 0, n_grid - 4)
+    nodes = i0[:, None] + np.arange(4)[None, :]  # (M, 4)
+    g = gg[nodes, d_idx[:, None], k[:, None]]
+    tol = _TOL[k][:, None]
+    h = np.where((g > -0.9).all(axis=1, keepdims=True), _secant_coordinate(g, tol), g - tol)
+    u = np.arange(4, dtype=float)
+    coef = np.linalg.solve(np.vander(u, 4, increasing=True)[None], h[..., None])[..., 0]
+    a, b = (j - i0).astype(float), (j - i0 + 1).astype(float)
+    fa = ((coef[:, 3] * a + coef[:, 2]) * a + coef[:, 1]) * a + coef[:, 0]
+    for _ in range(30):
+        m = 0.5 * (a + b)
+        fm = ((coef[:, 3] * m + coef[:, 2]) * m + coef[:, 1]) * m + coef[:, 0]
+        same = np.sign(fm) == np.sign(fa)
+        a, fa = np.where(same, m, a), np.where(same, fm, fa)
+        b = np.where(same, b, m)
+    xg = np.log(grid)
+    return xg[i0] + 0.5 * (a + b) * (xg[1] - xg[0])
+
+
+def _prune(open_, x_lo, x_hi, group, up):
+    """Brackets that can no longer decide the answer, closed: a lower boundary (``up``: the row
+    becomes met) whose bracket lies wholly below another of its design's lower boundaries (it
+    is not the largest), and an upper boundary whose bracket lies wholly above every lower
+    boundary of its design (it cannot cut the window)."""
+    n = int(group.max()) + 1
+    lo_up = np.full(n, -np.inf)
+    hi_up = np.full(n, -np.inf)
+    np.maximum.at(lo_up, group[up], x_lo[up])
+    np.maximum.at(hi_up, group[up], x_hi[up])
+    below = up & (x_hi < lo_up[group])
+    above = ~up & (x_lo > hi_up[group]) & np.isfinite(hi_up[group])
+    return open_ & ~below & ~above
+
+
+def _refine(req, cfg, f, dsf, pos, k, x_lo, x_hi, r_lo, r_hi, s_lo, s_hi, states, guess=None,
+            ladder=False, group=None, up=None):
     """Shrink brackets of constraint boundaries to a width of :data:`RTOL` in volume.
 
     A flat set of M brackets: bracket m has constraint ``k[m]`` met at one end of
     [exp(x_lo), exp(x_hi)] and broken at the other, design variables ``f, dsf, pos`` [m] (M,),
     the table's g rows at its ends ``r_lo, r_hi`` (M, n) and where they were evaluated
     ``s_lo, s_hi`` (M, 2: state id in ``states``, index). Each round evaluates three points per
-    open bracket in one call: the secant root of :func:`_secant_coordinate` between the ends,
-    +-d about it (d = max(0.4 RTOL, 0.002 width): a tight bracket when the secant is good) and
-    the middle of the larger side (at least halves the bracket when it is not), and keeps the
-    first sub-interval from the low end whose ends differ. Returns the updated arrays.
+    open bracket in one call: the secant root of :func:`_secant_coordinate` between the ends
+    (in the first round ``guess`` where given), +-d about it (d = max(0.4 RTOL, 0.002 width): a
+    tight bracket when the secant is good) and the middle of the larger side (at least halves
+    the bracket when it is not), and keeps the first sub-interval from the low end whose ends
+    differ. ``ladder``: the first round also evaluates +-3d and +-9d (a few designs, where a
+    call costs more than its points). ``group`` (design of each bracket) and ``up`` (a lower
+    boundary): brackets that cannot decide the smallest feasible volume stop early
+    (:func:`_prune`). Returns the updated arrays.
     """
     n = len(NAMES)
     x_lo, x_hi, r_lo, r_hi, s_lo, s_hi = (np.array(a) for a in (x_lo, x_hi, r_lo, r_hi,
                                                                s_lo, s_hi))
     for _ in range(_MAX_ROUNDS):
-        act = np.nonzero(x_hi - x_lo > _LOG_RTOL)[0]
+        if _DEBUG:
+            print("widths", np.round(x_hi - x_lo, 7), "k", k)
+        open_ = x_hi - x_lo > _LOG_RTOL
+        if group is not None:
+            open_ = _prune(open_, x_lo, x_hi, group, up)
+        act = np.nonzero(open_)[0]
         if act.size == 0:
             break
         ma = act.size
@@ -259,26 +310,33 @@ def _refine(req, cfg, f, dsf, pos, k, x_lo, x_hi, r_lo, r_hi, s_lo, s_hi, states
             t = np.where(den != 0, h_lo / np.where(den != 0, den, 1.0), 0.5)
         t = np.clip(np.nan_to_num(t, nan=0.5), 0.0, 1.0)
         xp = a_lo + w * t
+        if guess is not None:
+            xp = np.clip(guess[act], a_lo, a_hi)
+            t = (xp - a_lo) / np.maximum(w, 1e-300)
         d = np.maximum(0.4 * _LOG_RTOL, 2e-3 * w)
         mid = np.where(t > 0.5, 0.5 * (a_lo + xp), 0.5 * (xp + a_hi))
-        pts = np.clip(np.stack([xp - d, xp + d, mid], axis=1), a_lo[:, None], a_hi[:, None])
+        steps = (-9.0, -3.0, -1.0, 1.0, 3.0, 9.0) if ladder and guess is not None else (-1.0, 1.0)
+        pts = np.stack([xp + c * d for c in steps] + [mid], axis=1)
+        pts = np.clip(pts, a_lo[:, None], a_hi[:, None])
         pts.sort(axis=1)
+        guess = None
         npts = pts.size
-        f3, dsf3, pos3 = (np.repeat(a[act], 3) for a in (f, dsf, pos))
+        n_in = pts.shape[1]
+        f3, dsf3, pos3 = (np.repeat(a[act], n_in) for a in (f, dsf, pos))
         st = _state(req, cfg, np.exp(pts).reshape(-1), f3, dsf3, pos3)
         sid = len(states)
         states.append((st, npts))
-        g = np.broadcast_to(st.g, (npts, n)).reshape(ma, 3, n)
+        g = np.broadcast_to(st.g, (npts, n)).reshape(ma, n_in, n)
         rows = np.arange(ma)
-        met_pts = g[rows[:, None], np.arange(3)[None, :], kk[:, None]] <= tol[:, None]
+        met_pts = g[rows[:, None], np.arange(n_in)[None, :], kk[:, None]] <= tol[:, None]
         met_lo = glo <= tol
-        seq = np.concatenate([met_pts, ~met_lo[:, None]], axis=1)  # p0, p1, p2, high end
+        seq = np.concatenate([met_pts, ~met_lo[:, None]], axis=1)  # the points, the high end
         j = np.argmax(seq != met_lo[:, None], axis=1)  # the first that differs from the low end
         xs = np.concatenate([a_lo[:, None], pts, a_hi[:, None]], axis=1)
         rs = np.concatenate([r_lo[act][:, None], g, r_hi[act][:, None]], axis=1)
-        flat = (rows[:, None] * 3 + np.arange(3)[None, :])
+        flat = (rows[:, None] * n_in + np.arange(n_in)[None, :])
         ss = np.concatenate([s_lo[act][:, None],
-                             np.stack([np.full((ma, 3), sid), flat], axis=-1),
+                             np.stack([np.full((ma, n_in), sid), flat], axis=-1),
                              s_hi[act][:, None]], axis=1)
         x_lo[act], x_hi[act] = xs[rows, j], xs[rows, j + 1]
         r_lo[act], r_hi[act] = rs[rows, j], rs[rows, j + 1]
@@ -487,7 +545,9 @@ def size_volume(req: Requirement, cfg: Configuration, fineness_ratio=None, area_
         jj = i[d_idx]
         x_lo, x_hi, r_lo, r_hi, s_lo, s_hi = _refine(
             req, cfg, fb[d_idx], db[d_idx], pb[d_idx], k,
-            *_grid_brackets(grid, gg, d_idx, k, jj), states)
+            *_grid_brackets(grid, gg, d_idx, k, jj), states,
+            guess=_cubic_guess(grid, gg, d_idx, k, jj), ladder=nb <= _FEW, group=d_idx,
+            up=met[jj + 1, d_idx, k])
         up = met[jj + 1, d_idx, k]  # met at the upper end: a lower boundary of the window
         for pos_b, b in enumerate(bsel):
             mine = np.nonzero((bi == pos_b) & up)[0]
