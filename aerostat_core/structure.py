@@ -115,7 +115,7 @@ def allowable_pressure(strength, safety_factor, radius, moment=0.0):
 
 # --- the hull as a pressurised beam (issue 22 item 5; docs/methods.md §1.17) ---------------
 #: Stations along the hull of the beam model (the shear and moment integrals).
-BEAM_STATIONS = 31
+BEAM_STATIONS = 25
 #: Share of the hull length over which the confluence lines spread the tether's pull [-], a hat
 #: centred on the centre of buoyancy: engineering choice (the patch lines of tactical aerostats
 #: span about a third of the hull; a point load would be the conservative limit).
@@ -270,9 +270,15 @@ def envelope_loads(af, cfg, ev, stations: int = BEAM_STATIONS) -> dict:
     r = np.broadcast_to(h.radius_at(x), x.shape)
     area = np.pi * r**2
     dx = length / (t.shape[0] - 1)
+    wts = np.ones_like(t)
+    wts[0] = wts[-1] = 0.5
+
+    def integral(a):  # trapezoid rule on the uniform stations
+        return (wts * a).sum(axis=0) * dx
+
     d_area = np.gradient(area, axis=0) / np.maximum(dx, 1e-12)
     per = 2.0 * np.pi * r
-    per_int = np.maximum(np.trapezoid(per, x, axis=0), 1e-12)
+    per_int = np.maximum(integral(per), 1e-12)
     ca = np.cos(alpha)
     drho = af.air_density - af.gas_density
     load = drho * g * area * ca
@@ -284,13 +290,14 @@ def envelope_loads(af, cfg, ev, stations: int = BEAM_STATIONS) -> dict:
         # the hull's aerodynamic load along it: the Jones & DeLaurier shapes (potential flow
         # ahead of the cut-off station, cross-flow aft of it), scaled so that their force and
         # moment are the model's own hull lift and couple (what the trim balanced)
-        aero = aero_loads(af, cfg.aero, alpha, speed)
+        # (cd0 = 0: the axial drag's share of the normal load, A sin alpha, is left out)
+        aero = aero_loads(af, cfg.aero, alpha, speed, cd0=0.0)
         ahead = x <= af.cutoff_station
         shape_1 = np.where(ahead, np.sin(2.0 * alpha) * d_area, 0.0)
         shape_2 = np.where(ahead, 0.0, 2.0 * r * np.ones_like(alpha))
         arm = x - af.xi_m
-        f1, f2 = np.trapezoid(shape_1, x, axis=0), np.trapezoid(shape_2, x, axis=0)
-        m1, m2 = np.trapezoid(shape_1 * arm, x, axis=0), np.trapezoid(shape_2 * arm, x, axis=0)
+        f1, f2 = integral(shape_1), integral(shape_2)
+        m1, m2 = integral(shape_1 * arm), integral(shape_2 * arm)
         lift_h, couple_h = aero.hull_lift * ca, -aero.hull_moment  # moment of upward loads
         det = f1 * m2 - f2 * m1
         ok = np.abs(det) > 1e-9 * (np.abs(f1 * m2) + np.abs(f2 * m1) + 1e-30)
@@ -301,11 +308,16 @@ def envelope_loads(af, cfg, ev, stations: int = BEAM_STATIONS) -> dict:
         # where the two shapes cannot carry it (alpha ~ 0), the hull load as a force and couple
         couples.append((np.where(ok, 0.0, aero.hull_moment), af.xi_m))
         hull_point = (np.where(ok, 0.0, lift_h), af.xi_m)
-    points = []
+    # the carried items as point weights (those at one station, as the payload, miscellaneous,
+    # battery and ballonet under the centre of buoyancy, summed into one load)
+    at: dict = {}
     for k, m in items.items():
         if k in ("hull", "lifting gas", "tether") or k not in positions:
             continue
-        points.append((-np.asarray(m) * g * ca, positions[k][0]))
+        xk = positions[k][0]
+        key = id(xk)
+        at[key] = (at[key][0] + np.asarray(m), xk) if key in at else (np.asarray(m), xk)
+    points = [(-m * g * ca, xk) for m, xk in at.values()]
     if streamlined:
         points.append((aero.fin_lift * ca, af.fins.xi_ac))
         points.append(hull_point)
@@ -315,12 +327,11 @@ def envelope_loads(af, cfg, ev, stations: int = BEAM_STATIONS) -> dict:
     # (the fore and aft lines pull unequally so that the resultant passes through the
     # confluence point, as they do to hold the trim)
     patch = np.maximum(1.0 - np.abs(x - h.xi_cb) / (0.5 * CONFLUENCE_SPAN * length), 0.0)
-    w0 = np.maximum(np.trapezoid(patch, x, axis=0), 1e-12)
-    x_bar = np.trapezoid(patch * x, x, axis=0) / w0
-    w2 = np.maximum(np.trapezoid(patch * (x - x_bar) ** 2, x, axis=0), 1e-12)
-    force = np.trapezoid(load, x, axis=0) + sum(np.asarray(p) for p, _ in points)
-    first = (np.trapezoid(load * x, x, axis=0)
-             + sum(np.asarray(p) * np.asarray(xp) for p, xp in points))
+    w0 = np.maximum(integral(patch), 1e-12)
+    x_bar = integral(patch * x) / w0
+    w2 = np.maximum(integral(patch * (x - x_bar) ** 2), 1e-12)
+    force = integral(load) + sum(np.asarray(p) for p, _ in points)
+    first = integral(load * x) + sum(np.asarray(p) * np.asarray(xp) for p, xp in points)
     c = sum(np.asarray(cc) for cc, _ in couples) - first + force * x_bar
     load = load - force * patch / w0 + c * (x - x_bar) * patch / w2
     moment = beam_moment(x, load, points, couples)
