@@ -1,14 +1,15 @@
 """The verdict at the top of the Design page (issue 22 item 3): "meets", "meets nominally
 only" or "fails", the probability of meeting the operating limits from a seeded sample, and for
 a failing design what binds and what to change. No physics here: the verdict is
-:func:`aerostat_core.verdict.assess`."""
+:func:`aerostat_core.studies.robust.assess`."""
 
 from __future__ import annotations
 
 import streamlit as st
 
-from aerostat_core.constraints import BY_NAME
-from aerostat_core.design import Design
+from aerostat_core.model.constraints import BY_NAME
+from aerostat_core.model.design import Design
+from aerostat_core.studies.robust import assess
 
 from .text import plain
 
@@ -22,7 +23,7 @@ def _verdict(inputs_json: str):
     from .cache import cached_design
 
     d = cached_design(inputs_json)
-    return d.verdict(PAGE_SAMPLES, PAGE_SEED)
+    return assess(d, PAGE_SAMPLES, PAGE_SEED)
 
 
 def verdict_of(inputs_json: str, d: Design):

@@ -14,10 +14,10 @@ import numpy as np
 import pytest
 
 from aerostat_core import LiftingGas, Requirement, size_volume
-from aerostat_core.airframe import build_airframe
-from aerostat_core.constraints import NAMES, constraint_state
-from aerostat_core.presets import rules_configuration
-from aerostat_core.sizing import RTOL, VOLUME_MAX, VOLUME_MIN
+from aerostat_core.model.airframe import build_airframe
+from aerostat_core.model.constraints import NAMES, constraint_state
+from aerostat_core.model.presets import rules_configuration
+from aerostat_core.model.sizing import RTOL, VOLUME_MAX, VOLUME_MIN
 
 DENSE = np.geomspace(VOLUME_MIN, VOLUME_MAX, 400)
 

@@ -10,14 +10,15 @@ import numpy as np
 import pytest
 
 from aerostat_core import Requirement, design
-from aerostat_core.cli import main
-from aerostat_core.constraints import NAMES
-from aerostat_core.presets import rules_configuration
-from aerostat_core.rules import PRACTICE, PRACTICE_OPERATING, THESIS
-from aerostat_core.structure import beam_moment, envelope_loads, wrinkling_moment
-from aerostat_core.uncertainty import limit_probabilities
-from aerostat_core.validation import InputError
-from aerostat_core.verdict import VERDICTS, operating_requirement, robust_size
+from aerostat_core.base.validation import InputError
+from aerostat_core.cli.entry import main
+from aerostat_core.model.constraints import NAMES
+from aerostat_core.model.presets import rules_configuration
+from aerostat_core.model.rules import PRACTICE, PRACTICE_OPERATING, THESIS
+from aerostat_core.model.verdict import VERDICTS, operating_requirement
+from aerostat_core.structures.membrane import beam_moment, envelope_loads, wrinkling_moment
+from aerostat_core.studies.robust import assess, robust_size
+from aerostat_core.studies.uncertainty import limit_probabilities
 
 
 @pytest.fixture(scope="module")
@@ -69,7 +70,7 @@ def test_default_design_flies_with_high_probability_and_meets_its_margin_on_a_co
 def test_verdict_of_the_default_design(default):
     v = default.verdict()
     assert v.verdict == "meets" and v.probability_meets_operating_limits is None
-    v = default.verdict(1000, 0)
+    v = assess(default, 1000, 0)
     assert v.verdict == "meets" and v.probability_meets_operating_limits >= 0.9
     assert v.verdict in VERDICTS
 
@@ -79,14 +80,14 @@ def test_a_design_on_a_coin_flip_is_meets_nominal_only():
     # met, but met in flight on a coin flip
     from dataclasses import replace
 
-    from aerostat_core import rules as rules_mod
+    from aerostat_core.model import rules as rules_mod
 
     strict = replace(PRACTICE_OPERATING, free_lift_fraction=PRACTICE.free_lift_fraction)
     old = rules_mod.RULE_SETS["practice"]
     rules_mod.RULE_SETS["practice"] = replace(PRACTICE, operating=strict)
     try:
         d = design(Requirement())
-        v = d.verdict(1000, 0)
+        v = assess(d, 1000, 0)
     finally:
         rules_mod.RULE_SETS["practice"] = old
     assert v.meets_design_margins
@@ -157,7 +158,9 @@ def test_robust_sizing_reaches_the_confidence_with_the_smallest_hull():
 
 
 def test_confidence_through_design_and_the_summary():
-    d = design(Requirement(confidence=0.99))
+    from aerostat_core.studies.robust import design_with_confidence
+
+    d = design_with_confidence(Requirement(confidence=0.99))
     s = d.summary()
     assert d.robust is not None and s.probability_meets_operating_limits >= 0.99
     assert s.binding_constraint in ("confidence", "endurance")
