@@ -60,7 +60,6 @@ _LOG_RTOL = float(np.log1p(RTOL))
 #: Root-finder rounds before a bracket is accepted at its current width.
 _MAX_ROUNDS = 12
 _TOL = np.array([c.tolerance for c in CONSTRAINTS])
-_DEBUG = False
 
 
 @dataclass(frozen=True)
@@ -297,8 +296,6 @@ def _refine(req, cfg, f, dsf, pos, k, x_lo, x_hi, r_lo, r_hi, s_lo, s_hi, states
     x_lo, x_hi, r_lo, r_hi, s_lo, s_hi = (np.array(a) for a in (x_lo, x_hi, r_lo, r_hi,
                                                                s_lo, s_hi))
     for _ in range(_MAX_ROUNDS):
-        if _DEBUG:
-            print("widths", np.round(x_hi - x_lo, 7), "k", k)
         open_ = x_hi - x_lo > _LOG_RTOL
         if group is not None:
             open_ = _prune(open_, x_lo, x_hi, group, up)
