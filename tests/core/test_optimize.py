@@ -199,10 +199,13 @@ def test_thesis_calibration_and_preset_constants(thesis_results) -> None:
     # of equal weathervane margin (the three solvers stop at different points of it, within
     # 0.05 % in mass), so the recorded point is checked on the valley: near it within 3 % of the
     # bounds' span, and as heavy as the best found within 0.05 %.
+    # (the recorded point is SLSQP's, presets.THESIS_OPTIMUM; since sizing is exact the
+    # surrogate can end 4e-5 lighter elsewhere on the flat valley, so nearness is SLSQP's)
+    slsqp = next(r for r in thesis_results if r.solver == "slsqp")
     for k, v in THESIS_OPTIMUM.items():
         scale = np.ptp(DEFAULT_BOUNDS[k])
         tol = 0.01 if k == "fineness_ratio" else 0.03
-        assert best.x[k] == pytest.approx(v, abs=tol * scale)
+        assert slsqp.x[k] == pytest.approx(v, abs=tol * scale)
     recorded = design(*thesis_optimized())
     assert recorded.feasible
     assert recorded.total_mass == pytest.approx(best.objective, rel=5e-4)
