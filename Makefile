@@ -85,6 +85,12 @@ test: venv chromium
 lint: venv
 	$(PY) -m ruff check .
 
+# The longer, randomized hypothesis run for developers (CI runs the derandomized profile):
+# every property test with 10x its example budget; a failure is saved in .hypothesis/.
+explore: venv
+	HYPOTHESIS_PROFILE=explore $(THREADS_ENV) $(PY) -m pytest tests/core -m "not e2e" -q \
+	  -k "hypothesis or propert or given or hint or fixed_point" $(PYTEST_ARGS)
+
 # Each benchmarks/<name>.py runs as `python -m benchmarks.<name>` from the repository root, so it
 # imports aerostat_core as the tests do (files starting with "_" are skipped).
 bench: venv

@@ -118,6 +118,8 @@ _NUMBERS: dict[str, tuple[tuple[str, str], ...]] = {
         ("in_survival_sf", "requirement.survival_safety_factor"),
         ("in_max_angle", "requirement.max_tether_angle_deg"),
         ("in_wv_margin", "requirement.weathervane_margin"),
+        ("in_top_up", "requirement.top_up_interval_days"),
+        ("in_confidence", "requirement.confidence"),
     ),
     "gas": (
         ("in_purity", "configuration.gas.purity"),

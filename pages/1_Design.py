@@ -26,6 +26,7 @@ from app_ui import (
     state,
     text,
     unapplied,
+    verdict_view,
 )
 from app_ui.tables import (
     PERF_HELP,
@@ -237,6 +238,8 @@ with col_out:
     stale = bool(st.session_state.get(form_model.ERROR_KEY))
 
     st.subheader("Result", anchor=False)
+    d_now = cache.cached_design(state.current_inputs_key())
+    verdict_view.render(d_now, state.current_inputs_key(), stale)  # the verdict first
     rules = form_model.RULE_SETS[rep.inputs["requirement"]["rules"]]
     st.caption(
         f"Rule set: **{rules.name}** ({rules.title}). "
@@ -281,46 +284,42 @@ with col_out:
         help="Gross buoyancy minus total weight, in kilograms "
         f"({s.percent_static_lift:.0f} % of the gross buoyancy).",
     )
-    st.caption(f"At the design wind, {lim.design_wind:g} m/s:")
-    c = show.metric_row(5)
-    bb = s.blow_by_at_design_wind_m
-    c[0].metric(
-        "Blow-by [m]",
-        _fmt(bb, "blow_by"),
-        delta=f"{text.signed(bb - lim.blow_by_limit, formats.decimals('blow_by'))} m",
-        delta_color="inverse",
-        help=f"Downwind offset of the confluence point from the winch; limit "
-        f"{lim.blow_by_limit:g} m (the delta is blow-by minus limit).",
-    )
-    c[1].metric(
-        "α_eq [deg]",
-        _fmt(s.alpha_at_design_wind_deg, "alpha_eq"),
-        help="Equilibrium angle of attack (moment balance about the confluence point).",
-    )
-    c[2].metric(
-        "Tension [N]",
-        _fmt(s.tension_top_at_design_wind_N, "tension"),
-        help="Tether tension at the confluence point.",
-    )
-    sf = s.safety_factor_at_design_wind
-    c[3].metric(
-        "Safety factor [-]",
-        _fmt(sf, "safety_factor"),
-        delta=text.signed(sf - lim.min_safety_factor, formats.decimals("safety_factor")),
-        help="Breaking strength of the tether / largest tension along the tether; required "
-        f"{lim.min_safety_factor:g} (the delta is the margin).",
-    )
-    c[4].metric(
-        "Gas cost [USD]", _fmt(s.gas_cost_USD, "gas_cost"), help="Hull volume × gas price."
-    )
-
-    if rep.feasible:
-        st.success(
-            ("The last valid inputs meet" if stale else "Meets")
-            + " every requirement at the design wind.",
-            icon=":material/check_circle:",
+    # no wind quantity of a hull that sinks means anything: its design-wind row is not shown
+    if not d_now.sinks:
+        st.caption(f"At the design wind, {lim.design_wind:g} m/s:")
+        c = show.metric_row(5)
+        bb = s.blow_by_at_design_wind_m
+        c[0].metric(
+            "Blow-by [m]",
+            _fmt(bb, "blow_by"),
+            delta=f"{text.signed(bb - lim.blow_by_limit, formats.decimals('blow_by'))} m",
+            delta_color="inverse",
+            help=f"Downwind offset of the confluence point from the winch; limit "
+            f"{lim.blow_by_limit:g} m (the delta is blow-by minus limit).",
         )
-    else:
+        c[1].metric(
+            "α_eq [deg]",
+            _fmt(s.alpha_at_design_wind_deg, "alpha_eq"),
+            help="Equilibrium angle of attack (moment balance about the confluence point).",
+        )
+        c[2].metric(
+            "Tension [N]",
+            _fmt(s.tension_top_at_design_wind_N, "tension"),
+            help="Tether tension at the confluence point.",
+        )
+        sf = s.safety_factor_at_design_wind
+        c[3].metric(
+            "Safety factor [-]",
+            _fmt(sf, "safety_factor"),
+            delta=text.signed(sf - lim.min_safety_factor, formats.decimals("safety_factor")),
+            help="Breaking strength of the tether / largest tension along the tether; required "
+            f"{lim.min_safety_factor:g} (the delta is the margin).",
+        )
+        c[4].metric(
+            "Gas cost [USD]", _fmt(s.gas_cost_USD, "gas_cost"), help="Hull volume × gas price."
+        )
+
+    if not rep.feasible:  # the verdict above says it; the table's reasons in full here
         st.error(
             "**Requirements not met:**\n" + "\n".join(f"- {v}" for v in rep.violations),
             icon=":material/error:",

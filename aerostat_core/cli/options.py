@@ -33,6 +33,7 @@ SHORT_NAMES = {
     "configuration.hull.volume": "--volume",
     "configuration.hull.shape": "--shape",
     "configuration.hull.fineness_ratio": "--fineness-ratio",
+    "requirement.top_up_interval_days": "--top-up-interval",
 }
 
 

@@ -55,18 +55,21 @@ CONSTRAINTS: tuple[Constraint, ...] = (
     Constraint("altitude_loss", "Altitude loss", "m",
                "altitude loss at the design wind within the permissible reduction",
                "altitude loss {value:.1f} m exceeds the permissible {limit:.1f} m at {wind:g} m/s",
-               "design"),
+               "design", "a larger hull (more free lift), a higher permissible altitude loss or a "
+               "lower design wind"),
     Constraint("free_lift", "Free lift", "kg", "free lift at rest at least the required share "
                "of gross lift",
                "free lift {value:.2f} kg is below the required {limit:.2f} kg", "static",
-               "choose a lighter fabric, tether or payload, or a lighter gas"),
+               "a larger hull, a lighter payload, fabric or tether, a lower altitude, or hydrogen"),
     Constraint("taut_tether", "Taut tether", "N", "tether taut (upward tension everywhere) at "
                "the design wind",
-               "the tether goes slack at {wind:g} m/s (net upward pull {value:.0f} N)", "design"),
+               "the tether goes slack at {wind:g} m/s (net upward pull {value:.0f} N)", "design",
+               "a larger hull, a lighter payload or a lower altitude"),
     Constraint("tether_angle", "Tether angle", "deg",
                "tether angle from the vertical at the design wind within the limit",
                "tether {value:.0f} deg from the vertical exceeds {limit:.0f} deg at {wind:g} m/s",
-               "design"),
+               "design", "a larger hull (more free lift), a larger tether-angle limit or a lower "
+               "design wind"),
     Constraint("safety_factor", "Tether safety factor", "-",
                "tether safety factor at the design wind at least the required value",
                "tether safety factor {value:.2f} is below the required {limit:g} at {wind:g} m/s",
@@ -79,21 +82,21 @@ CONSTRAINTS: tuple[Constraint, ...] = (
                "a larger hull only pulls harder: choose a stronger tether"),
     Constraint("stall", "Fin stall", "deg", "equilibrium angle of attack below fin stall",
                "angle of attack {value:.1f} deg is past fin stall ({limit:g} deg) at {wind:g} m/s",
-               "design"),
+               "design", "larger fins or a different confluence point"),
     Constraint("stability", "Static stability", "1/rad",
                "statically stable trim about the confluence point (C_m_alpha < 0)",
                "statically unstable about the confluence point at {wind:g} m/s "
                "(C_m_alpha {value:+.3f}/rad; no stable trim within +-80 deg if it is not found)",
-               "design"),
+               "design", "larger fins or a confluence point further forward"),
     Constraint("weathervane", "Weathervane stability", "1/rad",
                "aerodynamically stable hull: C_m_alpha of hull + fins about the centre of volume "
                "at most minus the required margin",
                "aerodynamically unstable about the centre of volume at {wind:g} m/s (C_m_alpha "
                "{value:+.3f}/rad, needs <= {limit:+.3f}/rad): the fins lose to the Munk moment",
-               "design"),
+               "design", "larger fins, fins further aft or a lower fineness ratio"),
     Constraint("fins_on_hull", "Fins on the hull", "m", "fin trailing edge on the hull",
                "fin trailing edge {value:.2f} m from the nose lies behind the tail "
-               "({limit:.2f} m)", "static"),
+               "({limit:.2f} m)", "static", "smaller fins or fins further forward"),
     # mission rows (issue 13, aerostat_core.model.mission); met by today's designs unless the user asks
     Constraint("envelope_stress", "Envelope stress", "N/m",
                "envelope fabric strength at least the safety factor times the membrane load at "
@@ -101,6 +104,15 @@ CONSTRAINTS: tuple[Constraint, ...] = (
                "envelope fabric needs {value:.0f} N/m (load x safety factor) but has "
                "{limit:.0f} N/m at {wind:g} m/s", "design",
                "a larger hull only loads its fabric harder: choose a stronger fabric"),
+    Constraint("envelope_wrinkling", "Envelope wrinkling", "N m",
+               "envelope bending moment (the hull as a pressurised beam) below the wrinkling "
+               "moment pi p r^3/2 of its governing section at the largest pressure the fabric "
+               "carries with its safety factor, at the design wind",
+               "the envelope bending moment {value:.0f} N m exceeds the wrinkling moment "
+               "{limit:.0f} N m at the largest pressure the fabric carries, at {wind:g} m/s: "
+               "the hull creases", "design",
+               "a stronger envelope fabric, a lower fineness ratio, or confluence lines spread "
+               "along more of the hull"),
     Constraint("survival_envelope_pressure", "Survival envelope pressure", "Pa",
                "the fabric carries, with its safety factor, the internal pressure the hull needs "
                "at the survival wind",
@@ -108,11 +120,12 @@ CONSTRAINTS: tuple[Constraint, ...] = (
                "carries only {limit:.0f} Pa with its safety factor", "survival",
                "choose a stronger fabric, or reel the aerostat in below the survival wind"),
     Constraint("endurance", "Endurance", "day",
-               "free lift still at least the required share of gross lift after the required "
-               "days of helium permeation",
+               "free lift still at least the required share of gross lift after the top-up "
+               "interval (or the endurance asked, if longer) of helium permeation",
                "the free-lift margin lasts {value:.1f} days of permeation, not the required "
                "{limit:g} days", "static",
-               "choose a fabric of lower helium permeability or a shorter time between top-ups"),
+               "a larger hull, a fabric of lower helium permeability or a shorter time between "
+               "top-ups"),
 )
 
 #: Constraint names in table order (the column order of every g array).
@@ -195,6 +208,11 @@ def wind_quantities(req: Requirement, cfg: Configuration, ev: Evaluation) -> dic
     st = structure_quantities(req, cfg, ev)
     need, fab = st["strength_required"] * one, st["strength"] * one
     out["envelope_stress"] = (need, fab, need / fab - 1.0, fab - need)
+    mb, mw = st["moment_at_governing"] * one, st["wrinkling_moment_allowable"] * one
+    if req.rule_set.check_wrinkling:
+        out["envelope_wrinkling"] = (mb, mw, mb / np.maximum(mw, 1e-12) - 1.0, mw - mb)
+    else:  # off in the rule set (the thesis preset): reported, never binding
+        out["envelope_wrinkling"] = (mb, mw, -one, np.inf * one)
     p_req, p_ok = st["pressure_required"] * one, st["pressure_allowable"] * one
     g_p = np.where(p_ok > 0, p_req / np.where(p_ok > 0, p_ok, 1.0) - 1.0, 1.0 + p_req / fab)
     out["survival_envelope_pressure"] = (p_req, p_ok, g_p, p_ok - p_req)
@@ -217,7 +235,7 @@ def static_quantities(req: Requirement, af: Airframe, cfg: Configuration | None 
         out["endurance"] = (np.inf * one, 0.0 * one, -one, np.inf * one)
     else:
         e = endurance_quantities(req, cfg, af)
-        out["endurance"] = (e["days_to_top_up"] * one, float(req.endurance_days) * one,
+        out["endurance"] = (e["days_to_top_up"] * one, req.days_without_top_up * one,
                             e["g"] * one, e["margin"] * one)
     return out
 

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import functools
 from collections.abc import Mapping
-from dataclasses import dataclass, fields
+from dataclasses import dataclass, fields, replace
 
 import numpy as np
 
@@ -88,8 +88,16 @@ class DesignSummary(FrozenMapping):
 
     ``feasible``: every constraint of the table met; ``binding_constraint``: what sets the
     size (``"given volume"`` when the volume was given); ``violations``: plain-language
-    reasons; ``rules``: the rule set; ``mission``: the mission rows (None: not computed, and
-    then absent from :meth:`to_dict`). Read it as attributes or, as before, ``s["volume_m3"]``.
+    reasons; ``rules``: the rule set; ``verdict``: "meets", "meets_nominal_only" or "fails"
+    (:func:`aerostat_core.studies.robust.assess`); ``probability_meets_operating_limits``: from a
+    seeded sample when one was asked for, else None; ``bending_moment_Nm``,
+    ``wrinkling_moment_Nm``, ``envelope_pressure_Pa``: the envelope as a pressurised beam at the
+    design wind (:func:`aerostat_core.structures.membrane.envelope_loads`: the largest bending moment,
+    the wrinkling moment at the governing station, the pressure at the top of the hull);
+    ``mission``: the mission rows (None: not computed, and then absent from :meth:`to_dict`).
+    Quantities with no physical meaning are None: every wind quantity of a hull that sinks
+    (free lift <= 0), and an altitude loss not smaller than the altitude. Read it as attributes
+    or, as before, ``s["volume_m3"]``.
     """
 
     volume_m3: float
@@ -115,6 +123,11 @@ class DesignSummary(FrozenMapping):
     binding_constraint: str
     violations: tuple[str, ...]
     rules: str
+    verdict: str
+    probability_meets_operating_limits: float | None
+    bending_moment_Nm: float
+    wrinkling_moment_Nm: float
+    envelope_pressure_Pa: float
     mission: MissionSummary | None = None
 
     def to_dict(self) -> dict:
@@ -160,6 +173,9 @@ class Design:
         Plain-language reasons when not feasible.
     mission : MissionReport or None
         Power, endurance, ballonet, envelope, survival and winch outputs (aerostat_core.model.mission).
+    robust : RobustSizing or None
+        Set when the volume was sized for a confidence (``Requirement.confidence``,
+        :func:`aerostat_core.studies.robust.design_with_confidence`).
     """
 
     requirement: Requirement
@@ -179,6 +195,7 @@ class Design:
     feasible: bool
     violations: tuple
     mission: MissionReport | None = None
+    robust: object | None = None
 
     # --- convenience views -------------------------------------------------------------
     @property
@@ -252,9 +269,43 @@ class Design:
         rows.append({"item": "total", "mass_kg": tot, "share_pct": 100.0})
         return rows
 
-    def summary(self) -> DesignSummary:
-        """Headline numbers (floats, SI units in the names): :class:`DesignSummary`."""
+    @property
+    def sinks(self) -> bool:
+        """The hull cannot lift its weight at rest (free lift <= 0): no tether tension, blow-by
+        or safety factor means anything."""
+        return self.free_lift <= 0.0
+
+    def verdict(self):
+        """The nominal verdict (:func:`aerostat_core.model.verdict.nominal_verdict`): "meets"
+        or "fails", with what binds and what to change; with a robust sizing, its probability.
+        The verdict with a seeded sample is :func:`aerostat_core.studies.robust.assess`."""
+        from aerostat_core.model.verdict import nominal_verdict
+
+        v = nominal_verdict(self)
+        r = self.robust
+        if r is not None and r.reached and v.verdict == "meets":
+            v = replace(v, probability_meets_operating_limits=r.probability,
+                        samples=r.samples, seed=r.seed)
+        return v
+
+    def envelope_loads(self) -> dict:
+        """The envelope as a pressurised beam at the design wind
+        (:func:`aerostat_core.structures.membrane.envelope_loads`): floats."""
+        from aerostat_core.structures.membrane import envelope_loads
+
+        out = envelope_loads(self.airframe, self.configuration, self.constraints.evaluation)
+        return {k: float(np.asarray(v).reshape(-1)[0]) for k, v in out.items()}
+
+    def summary(self, verdict=None) -> DesignSummary:
+        """Headline numbers (floats, SI units in the names): :class:`DesignSummary`.
+        ``verdict``: a :class:`aerostat_core.model.verdict.Verdict` already computed (with its
+        sample); default the nominal one."""
         dp = self.design_point
+        v = self.verdict() if verdict is None else verdict
+        env = self.envelope_loads()
+        sinks = self.sinks
+        keep = (lambda x: None if sinks else x)  # noqa: E731 - meaningless when it sinks
+        loss = dp["altitude_loss_m"]
         return DesignSummary(
             volume_m3=float(self.volume),
             length_m=_f(self.airframe.hull.length),
@@ -265,24 +316,36 @@ class Design:
             free_lift_kg=self.free_lift_kg,
             percent_static_lift=self.percent_static_lift,
             design_wind_m_s=self.requirement.design_wind,
-            blow_by_at_design_wind_m=dp["blow_by_m"],
-            alpha_at_design_wind_deg=dp["alpha_eq_deg"],
-            tension_top_at_design_wind_N=dp["tension_top_N"],
-            safety_factor_at_design_wind=dp["safety_factor"],
+            blow_by_at_design_wind_m=keep(dp["blow_by_m"]),
+            alpha_at_design_wind_deg=keep(dp["alpha_eq_deg"]),
+            tension_top_at_design_wind_N=keep(dp["tension_top_N"]),
+            safety_factor_at_design_wind=keep(dp["safety_factor"]),
             gas_cost_USD=self.gas_cost,
             feasible=self.feasible,
             hull_mass_kg=_f(self.airframe.mass.items["hull"]),
             tether_mass_kg=_f(self.airframe.mass.items["tether"]),
-            altitude_loss_m=dp["altitude_loss_m"],
+            altitude_loss_m=(None if sinks or loss >= self.requirement.altitude else loss),
             survival_wind_m_s=self.requirement.survival_wind,
-            safety_factor_at_survival_wind=self.constraints.value[
-                CONSTRAINT_NAMES.index("survival_safety_factor")].item(),
-            binding_constraint=(str(np.asarray(self.sizing.binding).reshape(-1)[0])
-                                if self.sizing is not None else "given volume"),
+            safety_factor_at_survival_wind=keep(self.constraints.value[
+                CONSTRAINT_NAMES.index("survival_safety_factor")].item()),
+            binding_constraint=self._binding(),
             violations=tuple(self.violations),
             rules=self.requirement.rules,
+            verdict=v.verdict,
+            probability_meets_operating_limits=v.probability_meets_operating_limits,
+            bending_moment_Nm=env["bending_moment"],
+            wrinkling_moment_Nm=env["wrinkling_moment"],
+            envelope_pressure_Pa=env["pressure"],
             mission=self._mission_summary(),
         )
+
+    def _binding(self) -> str:
+        r = self.robust
+        if r is not None and r.reached and r.volume > r.nominal_volume:
+            return "confidence"
+        if self.sizing is not None:
+            return str(np.asarray(self.sizing.binding).reshape(-1)[0])
+        return "given volume"
 
     def _mission_summary(self) -> MissionSummary | None:
         m = self.mission

@@ -28,7 +28,7 @@ MATERIAL_MODES = ("given", "catalogue")
 RULE_FIELDS = (
     "design_wind", "survival_wind", "blow_by_limit", "altitude_loss_limit",
     "free_lift_fraction", "min_tether_safety_factor", "survival_safety_factor",
-    "max_tether_angle_deg", "weathervane_margin",
+    "max_tether_angle_deg", "weathervane_margin", "top_up_interval_days",
 )
 
 
@@ -100,6 +100,15 @@ class Requirement:
     deployment_days : float
         Deployment length over which the helium top-up gas and its cost are reported [day],
         valid [0, 3650].
+    top_up_interval_days : float or None
+        Days between helium top-ups [day], valid [0, 365]: the free-lift margin must still hold
+        at the end of one (practice 7, thesis 0: at the fill); the endurance row checks the
+        longer of this and ``endurance_days``.
+    confidence : float or None
+        Robust sizing [-], valid [0.5, 0.999]: size the smallest hull whose probability of
+        meeting the operating limits under the Monte Carlo spreads is at least this
+        (:func:`aerostat_core.studies.robust.robust_size`); ``None`` (the default) sizes to the
+        design margins alone.
     """
 
     payload_mass: float = number(
@@ -182,6 +191,15 @@ class Requirement:
     deployment_days: float = number(
         30.0, "Deployment length (top-up gas)", "day", 0, 3650, step=1.0, fmt="%.0f",
         help="Period over which the helium top-up gas and its cost are reported.")
+    top_up_interval_days: float | None = number(
+        None, "Top-up interval", "day", 0, 365, empty="rule set", step=1.0, fmt="%.1f",
+        help="Days between helium top-ups; the free-lift margin must still hold at the end of "
+        "one (practice 7 days, thesis 0).", source="aerostat_core.model.rules")
+    confidence: float | None = number(
+        None, "Sizing confidence", "", 0.5, 0.999, empty="design margins only", step=0.01,
+        fmt="%.3f", help="Size the smallest hull that meets the operating limits with at least "
+        "this probability under the model's uncertainties (e.g. 0.95). Empty: size to the "
+        "design margins.", source="aerostat_core.studies.robust")
 
     def __post_init__(self) -> None:
         validate(self)
@@ -208,6 +226,15 @@ class Requirement:
                 field="altitude", value=self.altitude, unit="m", reason=reason,
                 label=field_spec(self, "altitude").label,
             )
+
+    @property
+    def days_without_top_up(self) -> float:
+        """Days the free-lift margin must last [day]: the longer of ``endurance_days`` and the
+        top-up interval (the rule set's when left open)."""
+        t = self.top_up_interval_days
+        if t is None:
+            t = self.rule_set.top_up_interval_days
+        return max(float(self.endurance_days), float(t))
 
     @property
     def rule_set(self) -> RuleSet:
@@ -253,6 +280,7 @@ class Requirement:
             "survival_safety_factor": r.survival_safety_factor,
             "max_tether_angle_deg": r.max_tether_angle_deg,
             "weathervane_margin": r.weathervane_margin,
+            "top_up_interval_days": r.top_up_interval_days,
         }
         for k, v in defaults.items():
             if getattr(self, k) is None:

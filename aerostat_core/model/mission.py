@@ -37,7 +37,7 @@ from aerostat_core.base.fields import choice, field_spec, integer, number, valid
 from aerostat_core.base.validation import InputError
 from aerostat_core.structures.ballonet import ballonet_fabric_mass, ballonet_fraction
 from aerostat_core.structures.materials import POWER_TETHER_CONDUCTORS, TetherSpec
-from aerostat_core.structures.membrane import allowable_pressure, membrane_loads, required_pressure
+from aerostat_core.structures.membrane import allowable_pressure, envelope_loads, wrinkling_moment
 from aerostat_core.tether.power import Conductors, battery_mass, power_tether, size_conductors
 
 POWER_ROUTES = ("onboard", "tether")
@@ -302,7 +302,7 @@ def endurance_quantities(req, cfg, af) -> dict:
         days_to_top_up(af.free_lift - need, h.volume, af.g, rho_a, rho_p, k0, tau), DAYS_CAP
     )
     fb = np.maximum(np.abs(af.buoyancy), 1e-9)
-    d_req = float(req.endurance_days)
+    d_req = req.days_without_top_up  # the endurance asked, or the top-up interval
     if d_req > 0:
         lost = lift_loss_after(h.volume, af.g, rho_a, rho_p, k0, d_req, tau)
         g = (need + lost - af.free_lift) / fb
@@ -319,25 +319,28 @@ def structure_quantities(req, cfg, ev) -> dict:
     -------
     dict of arrays (broadcast over designs and speeds)
         pressure_required [Pa] (at the top of the hull: factor q + hydrostatic head, or the gas
-        superpressure if higher), moment [N m] (aerodynamic moment of hull + fins about the
-        centre of volume, |dM/dalpha alpha|, a linear estimate of the envelope bending moment),
-        hoop, longitudinal [N/m], strength_required (SF x the larger load) [N/m], strength
-        (fabric) [N/m], pressure_allowable [Pa] (largest pressure the fabric carries with SF
-        under that moment).
+        superpressure if higher), moment [N m] (largest envelope bending moment of the hull as
+        a pressurised beam, :func:`aerostat_core.structures.membrane.envelope_loads`), hoop, longitudinal
+        [N/m] (the longitudinal load at the worst station), strength_required (SF x the larger
+        load) [N/m], strength (fabric) [N/m], pressure_allowable [Pa] (largest pressure the
+        fabric carries with SF under that moment), wrinkling_moment [N m] (pi p r^3/2 at the
+        governing station, at the hull's pressure), wrinkling_moment_allowable [N m] (the same
+        at the allowable pressure: the row's limit) and moment_at_governing [N m] (the bending
+        moment there).
     """
     af = ev.airframe
     m = cfg.mission
-    q = 0.5 * af.air_density * np.asarray(ev.speed, float) ** 2
-    p = required_pressure(
-        q, af.air_density, af.gas_density, af.g, af.hull.diameter, m.pressure_dynamic_factor
-    )
-    p = np.maximum(p, cfg.gas.superpressure)
-    moment = np.abs(ev.weathervane_slope * ev.equilibrium.alpha)
+    loads = envelope_loads(af, cfg, ev)  # the hull as a pressurised beam
+    p = loads["pressure"]
+    moment = loads["bending_moment"]
     r = af.hull.b
-    hoop, long = membrane_loads(p, r, moment)
+    hoop, long = loads["hoop_load"], loads["longitudinal_load"]
     need = m.envelope_safety_factor * np.maximum(hoop, long)
     strength = float(cfg.hull_fabric.tensile_strength)
     allow = allowable_pressure(strength, m.envelope_safety_factor, r, moment)
+    # the wrinkling moment at the largest pressure the fabric carries with its safety factor
+    wrinkle_allow = wrinkling_moment(np.maximum(allow - loads["head"], 0.0),
+                                     loads["governing_radius"])
     return {
         "pressure_required": p,
         "moment": moment,
@@ -346,6 +349,9 @@ def structure_quantities(req, cfg, ev) -> dict:
         "strength_required": need,
         "strength": strength,
         "pressure_allowable": allow,
+        "wrinkling_moment": loads["wrinkling_moment"],
+        "wrinkling_moment_allowable": wrinkle_allow,
+        "moment_at_governing": loads["moment_at_governing"],
     }
 
 

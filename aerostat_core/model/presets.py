@@ -123,13 +123,13 @@ def thesis_baseline() -> tuple[Requirement, Configuration]:
 #: Design variables of the optimised configuration found by aerostat_core.optimize with the
 #: thesis preset ("thesis" rules: the whole constraint table), default bounds f [2.5, 4.5],
 #: Delta S_f [-50, 100] %, Delta l_f [0.60, 0.75] (SLSQP, normal setting, seed 0; fineness ratio
-#: [-], fin-area change [%], fin position [-]); the volume is sized (120.6 m3, 64.8 kg). Active
+#: [-], fin-area change [%], fin position [-]); the volume is sized (120.2 m3, 64.7 kg; re-found when sizing became exact, issue 22). Active
 #: constraints: blow-by, weathervane stability and the lower fineness bound. Fin area and fin
 #: position trade along a flat valley of equal weathervane margin (the surrogate and the swarm
 #: stop elsewhere on it within 0.4 % of the mass). Kept to 5 digits: the optimum sits on the
-#: weathervane boundary, and a coarser rounding (f = 2.5, -32.41 %) falls just outside it, where
+#: weathervane boundary, and a coarser rounding can fall just outside it, where
 #: weathervane stability caps the volume below what blow-by needs. PREDICTED, not calibrated.
-THESIS_OPTIMUM = {"fineness_ratio": 2.5027, "area_change": -32.405, "position": 0.68504}
+THESIS_OPTIMUM = {"fineness_ratio": 2.5, "area_change": -31.787, "position": 0.67983}
 
 
 def thesis_optimized_label() -> str:

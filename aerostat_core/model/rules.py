@@ -19,6 +19,17 @@ A :class:`Requirement` field left as ``None`` takes its value from the requireme
 
 Every limit is a fraction of the tether length (= the operating altitude), never one absolute
 length for every altitude.
+
+Design margins and operating limits are two things (docs/methods.md §1.16):
+
+* the **design margins** (free lift 15 % of gross lift, tether safety factor 3, envelope safety
+  factor 4, weathervane margin...) are what sizing applies, at the end of a top-up interval
+  (``top_up_interval_days``): the margins cover what the model does not know;
+* the **operating limits** (:class:`OperatingLimits`) are what physics needs in flight: free
+  lift enough to keep the tether taut through a night's gas cooling, a tether and a fabric that
+  do not break, an aerodynamically stable hull. The Monte Carlo reports the probability of
+  meeting each set (:func:`aerostat_core.studies.uncertainty.limit_probabilities`), and the design's
+  verdict asks that probability of the operating limits to reach ``required_probability``.
 """
 
 from __future__ import annotations
@@ -26,6 +37,56 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from aerostat_core.base.validation import InputError, shown_value
+
+
+@dataclass(frozen=True)
+class OperatingLimits:
+    """What must hold in flight (not a margin): each value with its source.
+
+    Parameters
+    ----------
+    free_lift_fraction : float
+        Least free lift / gross lift in flight [-], after permeation over the top-up interval.
+    tether_safety_factor : float
+        Least breaking load / tension at the design and survival winds [-] (1: the tether holds).
+    envelope_safety_factor : float
+        Least fabric strength / membrane load [-] (1: the fabric holds).
+    weathervane_margin : float
+        C_m_alpha about the centre of volume at most minus this [1/rad] (0: stable).
+    required_probability : float
+        Probability of meeting every operating limit, under the Monte Carlo spreads
+        (:mod:`aerostat_core.studies.uncertainty`), that a "meets" verdict asks for [-].
+    sources : dict
+        Field -> where the value comes from.
+    """
+
+    free_lift_fraction: float
+    tether_safety_factor: float
+    envelope_safety_factor: float
+    weathervane_margin: float
+    required_probability: float
+    sources: dict
+
+
+#: Operating limits of the practice rule set.
+PRACTICE_OPERATING = OperatingLimits(
+    free_lift_fraction=0.05,
+    tether_safety_factor=1.0,
+    envelope_safety_factor=1.0,
+    weathervane_margin=0.0,
+    required_probability=0.9,
+    sources={
+        "free_lift_fraction": "engineering estimate: the lifting gas can cool up to ~15 K below "
+        "the air at night (supercooling; Khoury 2012, Airships and Aerostats ch. 4), which "
+        "takes dT/T = 15/288 = 5 % of gross lift; the tether stays taut only if the free lift "
+        "covers it. No published standard found.",
+        "tether_safety_factor": "definition: the tether breaks at a safety factor of 1",
+        "envelope_safety_factor": "definition: the fabric tears at a safety factor of 1",
+        "weathervane_margin": "definition: aerodynamically stable hull, C_m_alpha < 0",
+        "required_probability": "engineering choice: a design that flies in 9 of 10 draws of "
+        "the model's uncertain inputs; none of the peer tools states one",
+    },
+)
 
 
 @dataclass(frozen=True)
@@ -58,6 +119,14 @@ class RuleSet:
     weathervane_margin : float
         Required margin of aerodynamic (weathervane) stability: C_m_alpha about the centre of
         volume must be at most ``-weathervane_margin`` [1/rad].
+    top_up_interval_days : float
+        Days between helium top-ups [day]: the free-lift margin must still hold at the end of
+        one (0: checked at the fill).
+    operating : OperatingLimits or None
+        What must hold in flight; ``None``: the design margins themselves (no separate rows).
+    check_wrinkling : bool
+        Check the envelope wrinkling row (the hull as a pressurised beam); off in the thesis
+        preset, whose method has no envelope structure.
     """
 
     name: str
@@ -71,6 +140,9 @@ class RuleSet:
     survival_safety_factor: float
     max_tether_angle_deg: float
     weathervane_margin: float
+    top_up_interval_days: float = 0.0
+    operating: OperatingLimits | None = None
+    check_wrinkling: bool = True
 
 
 #: "practice": limits for real missions.
@@ -88,7 +160,11 @@ class RuleSet:
 #: * tether safety factor 3 at the design wind (the thesis' value, docs/methods.md G10);
 #: * weathervane margin 0.02 /rad: about 10 % of the C_m_alpha of a statistical fin set, so the
 #:   hull stays aerodynamically stable within the uncertainty of the Munk-moment estimate
-#:   (engineering choice).
+#:   (engineering choice);
+#: * top-up interval 7 days: the free-lift margin must hold a week after the fill - tactical
+#:   aerostats stay up 5-7 days between helium top-ups (thesis §2.3, citing TCOM and ILC
+#:   Dover), and a weekly top-up is the common field practice;
+#: * operating limits: :data:`PRACTICE_OPERATING` (each with its source).
 PRACTICE = RuleSet(
     name="practice",
     title="Practice: free lift 15 % of gross lift, limits scaled to the tether length",
@@ -101,13 +177,16 @@ PRACTICE = RuleSet(
     survival_safety_factor=1.5,
     max_tether_angle_deg=60.0,
     weathervane_margin=0.02,
+    top_up_interval_days=7.0,
+    operating=PRACTICE_OPERATING,
 )
 
 #: Thesis blow-by limit as a fraction of the 300 m tether: 53.4 m / 300 m. CALIBRATED (not in the
 #: thesis, docs/methods.md G5): the value at which the optimiser finds the thesis' 120 m3 optimum.
 THESIS_BLOW_BY_FRACTION = 53.4 / 300.0
 
-#: "thesis": the calibrated preset that reproduces the thesis' 170 -> 120 m3 (docs/validation.md).
+#: "thesis": the calibrated preset that reproduces the thesis' 170 -> 120 m3 (docs/validation.md);
+#: no top-up interval and no separate operating limits (the thesis states neither).
 THESIS = RuleSet(
     name="thesis",
     title="Thesis preset (Mahmood 2020): positive free lift, calibrated blow-by limit 0.178 h",
@@ -120,6 +199,7 @@ THESIS = RuleSet(
     survival_safety_factor=1.0,
     max_tether_angle_deg=45.0,
     weathervane_margin=0.0,
+    check_wrinkling=False,
 )
 
 #: The rule sets by name; the first is the default.

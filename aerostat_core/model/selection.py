@@ -1,4 +1,4 @@
-"""Materials chosen by the loads they carry (docs/methods.md §1.15, issue 23 item 2).
+"""Materials chosen by the loads they carry (docs/methods.md §1.19, issue 23 item 2).
 
 With ``Configuration.materials == "catalogue"`` (the practice configuration) the hull fabric,
 the fin fabric and the tether are not fixed inputs: each is the lightest item of its catalogue

@@ -1,25 +1,34 @@
-"""Hull sizing: the smallest volume that meets every constraint of the table at the design wind.
+"""Hull sizing: the smallest volume that meets every constraint of the table at the design wind
+(docs/methods.md §1.15).
 
 Vectorised over a batch of design variables (the optimiser's nested V*(x), docs/methods.md
-§1.12). Every design is evaluated on a 28-point logarithmic volume grid (ratio 1.49 between
-points) in one numpy call, with the whole constraint table (aerostat_core.model.constraints) at the
-design and the survival wind. Feasibility need not be monotone in volume: blow-by and free lift
-improve with volume while the tether safety factor gets worse (a bigger hull pulls harder), so
-the feasible set can be an interval or empty. The first feasible grid volume brackets the
-smallest feasible one; the answer is the first feasible volume of the lattice that splits that
-bracket into 9^4 equal steps in log volume, 1.49^(1/9^4) - 1 = 6e-5 relative (what four nested
-rounds of 8 interior points find). A cubic through four grid values of the last constraint
-broken below the bracket (in log(1 + g), where a power law is a straight line) predicts the
-crossing, and one batch of 32 lattice points around it finds it: two evaluations in all. Where
-those points do not contain the crossing (a g that is not smooth there), the nested rounds run.
-The constraint table, trim and tether at the chosen volume come from the search itself (no
-evaluation after it). A feasible window narrower than one grid step (a factor 1.49 in volume)
-below the first feasible grid point can be missed; this is stated, and tested on a window that
-the grid brackets.
+§1.12). Feasibility need not be monotone in volume: blow-by and free lift improve with volume
+while the tether safety factor gets worse (a bigger hull pulls harder), so the feasible set can
+be an interval, several, or empty. The search therefore locates each constraint's own boundary
+in volume and intersects them:
 
-No scipy root-finder is involved, so nothing raises on an infeasible case: the result names the
-constraint that cannot be met, or the pair that cannot be met together, with the volume range
-searched.
+1. the whole table on a 28-point logarithmic grid from 2 m3 to 1e5 m3 (ratio 1.49 between
+   points), one numpy call;
+2. the first grid interval [V_i, V_i+1] where every constraint is met at one end or the other
+   (the only intervals that can hold a feasible volume when each g crosses its tolerance at
+   most once between grid points);
+3. in it, the boundary of every constraint that changes between the two ends, found by a
+   bracketing root finder (a safeguarded secant in log volume on log(1 + g), where a power law
+   is a straight line, with a bisection point each round) to a relative width of
+   :data:`RTOL` in volume;
+4. the intersection: the largest lower boundary L and the smallest upper boundary U of that
+   interval. Where L <= U the answer is the evaluated point just above L (every row of the
+   table is checked there, so the answer is feasible by evaluation, not by inference);
+   otherwise the next candidate interval is tried.
+
+The table, trim and tether at the chosen volume are those of the evaluation that found it (no
+evaluation after the search). A design with no feasible volume gets each constraint's true
+feasible interval (its boundaries found the same way) and the change that would help most, in
+the words of the requirement (:func:`infeasibility_message`). Assumption, tested against a
+dense scan of 400 volumes over 240 random requirements (tests/core/test_sizing_exact.py): no
+constraint crosses its tolerance twice within one grid step (a factor 1.49 in volume).
+
+No scipy root-finder is involved, so nothing raises on an infeasible case.
 """
 
 from __future__ import annotations
@@ -40,20 +49,24 @@ from aerostat_core.model.constraints import (
     constraint_state,
 )
 from aerostat_core.model.inputs import Configuration, Requirement
-from aerostat_core.tether.statics import interpolated_heights
 
 #: Volume search range [m3]: from 2 m3 to the top of the hull-volume field's range (the field
 #: registry, 1e5 m3: the strategic class of thesis Table 2.3 and above).
 VOLUME_MIN = 2.0
 VOLUME_MAX = float(field_spec(HullSpec, "volume").hi)
-#: Grid points: a ratio of about 1.49 between neighbours over the whole range.
-_GRID = np.geomspace(VOLUME_MIN, VOLUME_MAX, 1 + round(np.log(VOLUME_MAX / VOLUME_MIN) / np.log(1.49)))
-#: Points per refinement round inside the bracket.
-_REFINE = 8
-#: Lattice points evaluated around the predicted crossing (one batch).
-_CLUSTER = 32
-#: The same for batches of designs (the misses, ~15 %, run the nested rounds alone).
-_CLUSTER_BATCH = 8
+_DECADES = float(np.log(VOLUME_MAX / VOLUME_MIN))
+#: The grid: a ratio of about 1.49 between neighbours over the whole range.
+_GRID = np.geomspace(VOLUME_MIN, VOLUME_MAX, 1 + round(_DECADES / np.log(1.49)))
+#: The grid of a batch of more than :data:`_FEW` designs (ratio about 2.15: the optimiser's
+#: batches, where the grid is most of the cost; the same boundaries are found from it).
+_GRID_BATCH = np.geomspace(VOLUME_MIN, VOLUME_MAX, 1 + round(_DECADES / np.log(2.15)))
+_FEW = 8
+#: Relative precision of every constraint boundary in volume [-] (the bracket width at the end).
+RTOL = 1e-5
+_LOG_RTOL = float(np.log1p(RTOL))
+#: Root-finder rounds before a bracket is accepted at its current width.
+_MAX_ROUNDS = 12
+_TOL = np.array([c.tolerance for c in CONSTRAINTS])
 
 
 @dataclass(frozen=True)
@@ -61,13 +74,13 @@ class SizingResult:
     """Sized volume(s) [m3] and why.
 
     volume : ndarray
-        The smallest feasible volume; where none is feasible, the grid volume of least total
-        violation.
+        The smallest feasible volume (within :data:`RTOL`); where none is feasible, the grid
+        volume of least total violation.
     feasible : ndarray of bool
     binding : ndarray of str
         Where feasible: the constraint that sets the size (violated just below ``volume``, or
         ``"none"`` at the bottom of the range). Where infeasible: the constraint that no volume
-        meets, or ``"a+b"`` for two that no single volume meets together.
+        meets, or ``"a+b"`` for two whose feasible volumes do not overlap.
     blow_by : ndarray
         Design-wind blow-by at ``volume`` [m].
     state : ConstraintState
@@ -75,7 +88,11 @@ class SizingResult:
         evaluated in the search: its ``evaluation`` (trim and tether at the design and survival
         winds) and that evaluation's airframe are the sized design's.
     message : ndarray of str
-        Plain-language reason where infeasible ("" where feasible).
+        Plain-language reason where infeasible ("" where feasible): each constraint's feasible
+        volumes and the change that would help most.
+    intervals : tuple
+        Per design (flattened batch order) where infeasible: {constraint: [(lo, hi), ...]} its
+        feasible volume intervals [m3] (boundaries within :data:`RTOL`); None where feasible.
     """
 
     volume: np.ndarray
@@ -84,95 +101,12 @@ class SizingResult:
     blow_by: np.ndarray
     state: ConstraintState
     message: np.ndarray
+    intervals: tuple = ()
 
 
 def _state(req, cfg, volume, f, dsf, pos, heights_hint=None) -> ConstraintState:
     return constraint_state(req, cfg, build_airframe(req, cfg, volume, f, dsf, pos),
                             heights_hint)
-
-
-def _lines_hint(cfg, st, first, pad: int = 0):
-    """Warm start of the tether height passes of a finer set of volumes (sheared wind;
-    docs/methods.md §1.9), from a state ``st`` evaluated at a set of volumes (the axis after
-    the wind axis of its tether arrays): a callable ``(T_x, T_z) -> heights`` that
-    interpolates its converged lines at volumes ``first``, ``first + 1`` and ``first + 2``
-    (int array of the batch shape; per wind, quadratic) in the top elevation
-    (:func:`aerostat_core.tether.statics.interpolated_heights`); ``pad`` trailing axes are added for
-    the new volumes' batch. None in a uniform wind (one march is exact).
-
-    Only a start: a poor hint (a bracket where the line changes, as where the trim jumps
-    to another branch) costs passes, not accuracy. The lines above a bracket's lower end,
-    not below, because the line below a first feasible volume is more often on another
-    branch (smaller hulls trim at larger angles; two grid points below is often slack)."""
-    if cfg.wind_profile.kind == "uniform":
-        return None
-    t = st.evaluation.tether
-    shape = np.shape(first)
-    idx = np.stack([first, first + 1, first + 2]).reshape((1, 3, 1, 1) + shape)
-
-    def known(a):  # (nodes, 2 winds, volumes) + batch -> (nodes, 3, 2 winds, 1) + batch
-        a = np.broadcast_to(a, a.shape[:3] + shape)[:, None, :, :]
-        k = np.take_along_axis(a, idx, axis=3)
-        return k.reshape(k.shape + (1,) * pad)
-
-    el, z = known(t.elevation), known(t.z)
-    length = float(np.asarray(st.evaluation.airframe.tether_length).reshape(-1)[0])
-    return lambda tx, tz: interpolated_heights(tx, tz, el, z, length)
-
-
-def _infeasible_reason(st, met, shape, skip=None):
-    """Binding name and message per design from the grid's per-constraint feasibility
-    (designs where ``skip`` holds, the feasible ones, get "none" and "")."""
-    any_met = met.any(axis=0)  # (..., n): constraint met at some grid volume
-    full = met.shape
-    g = np.broadcast_to(st.g, full)
-    value = np.broadcast_to(st.value, full)
-    limit = np.broadcast_to(st.limit, full)
-    lo_txt = f"{VOLUME_MIN:g}-{VOLUME_MAX:g} m3"
-    binding = np.full(shape, "none", dtype=object)
-    message = np.full(shape, "", dtype=object)
-    for idx in np.ndindex(*shape):
-        if skip is not None and skip[idx]:
-            continue
-        never = [NAMES[k] for k in range(len(NAMES)) if not any_met[idx + (k,)]]
-        if never:
-            binding[idx] = never[0]
-            c = BY_NAME[never[0]]
-            k = NAMES.index(c.name)
-            j = int(np.argmin(g[(slice(None),) + idx + (k,)]))
-            wind = st.survival_wind if c.at == "survival" else st.design_wind
-            best = c.template.format(value=float(value[(j,) + idx + (k,)]),
-                                     limit=float(limit[(j,) + idx + (k,)]), wind=wind)
-            others = [BY_NAME[n].label.lower() for n in never[1:]]
-            also = f"; never met either: {', '.join(others)}" if others else ""
-            advice = f": {c.advice}" if c.advice else ""
-            message[idx] = (f"no hull volume in {lo_txt} meets the {c.label.lower()} limit "
-                            f"(closest, at {_GRID[j]:.3g} m3: {best}){also}{advice}")
-            continue
-        # every constraint is met somewhere, never all together: find the conflicting pair
-        m = met[(slice(None),) + idx]  # (grid, n)
-        pair = None
-        for a in range(len(NAMES)):
-            for b in range(a + 1, len(NAMES)):
-                if not (m[:, a] & m[:, b]).any():
-                    pair = (a, b)
-                    break
-            if pair:
-                break
-        if pair is None:
-            binding[idx] = "combined"
-            message[idx] = f"no single hull volume in {lo_txt} meets every constraint together"
-            continue
-        a, b = pair
-        va, vb = _GRID[m[:, a]], _GRID[m[:, b]]
-        binding[idx] = f"{NAMES[a]}+{NAMES[b]}"
-        message[idx] = (
-            f"{CONSTRAINTS[a].label.lower()} needs a hull of {va.min():.3g}-{va.max():.3g} m3 "
-            f"but {CONSTRAINTS[b].label.lower()} needs {vb.min():.3g}-{vb.max():.3g} m3 "
-            f"(searched {lo_txt}): no volume meets both"
-            + (f"; {CONSTRAINTS[b].advice}" if CONSTRAINTS[b].advice else "")
-        )
-    return binding.astype(str), message.astype(str)
 
 
 #: Field names of each dataclass met by :func:`map_arrays` (``dataclasses.fields`` is slow).
@@ -262,65 +196,6 @@ def _select_state(mask, a: ConstraintState, b: ConstraintState) -> ConstraintSta
     return dataclasses.replace(a, **table, evaluation=_select(mask, a.evaluation, b.evaluation))
 
 
-#: Inverse Vandermonde matrices of the cubic through four consecutive grid points u = o..o+3
-#: (u = 0 at grid[k-1], 1 at grid[k]; the grid is uniform in log volume), o = 0, -1, -2, -3.
-_VANDERMONDE_INV = np.stack([
-    np.linalg.inv(np.vander(np.arange(o, o + 4, dtype=float), 4, increasing=True))
-    for o in (0, -1, -2, -3)
-])
-
-
-def _predicted_fraction(st, lo_k, met):
-    """Where in the grid bracket [grid[k-1], grid[k]] the last constraint broken at grid[k-1]
-    is met, as a fraction u of the bracket in log volume: the root of the cubic through that
-    constraint's g - tolerance at four consecutive grid volumes (it passes through grid[k-1]
-    and grid[k], so the sign change lies inside the bracket), by vectorised bisection."""
-    n_grid = _GRID.size
-    shape = lo_k.shape
-    tol = np.array([c.tolerance for c in CONSTRAINTS])
-    g = np.broadcast_to(st.g, (n_grid,) + shape + (len(NAMES),))
-    i0 = np.clip(lo_k, 0, n_grid - 4)  # nodes i0..i0+3 contain k-1 and k (feasible side first)
-    nodes = i0[None] + np.arange(4).reshape((4,) + (1,) * len(shape))
-    gn = np.take_along_axis(g, nodes[..., None], axis=0)  # (4, ..., n)
-    # an upper limit q/q_max - 1 of a power law in volume is linear in log(1 + g): interpolate
-    # that where it is defined at every node (the root is the same), else g itself
-    pos = (gn > -1.0).all(axis=0)
-    gn = np.where(pos, np.log1p(np.maximum(gn, -0.5)) - np.log1p(tol), gn - tol)
-    inv = _VANDERMONDE_INV[lo_k - i0]  # (..., 4, 4), offset o = i0 - (k - 1)
-    coef = np.einsum("...ij,j...n->i...n", inv, gn)  # c0 + c1 u + c2 u^2 + c3 u^3
-    broken = ~np.take_along_axis(met, lo_k[None, ..., None], axis=0)[0]  # (..., n)
-    a = np.zeros(broken.shape)
-    b = np.ones(broken.shape)
-    for _ in range(20):  # 2^-20 of the bracket: below one lattice step (9^-4)
-        u = 0.5 * (a + b)
-        above = ((coef[3] * u + coef[2]) * u + coef[1]) * u + coef[0] > 0.0
-        a = np.where(above, u, a)
-        b = np.where(above, b, u)
-    return np.where(broken, 0.5 * (a + b), -np.inf).max(axis=-1)
-
-
-def _nested_rounds(req, cfg, lo, hi, f, dsf, pos, rounds, hint=None):
-    """Nested rounds of 8 interior points on brackets [lo, hi] (1-D batch): the volume, the
-    state there and which constraints are met at the last infeasible volume below it.
-    ``hint``: the first round's tether warm start (:func:`_lines_hint`); each later round
-    starts from the round before it."""
-    t = np.linspace(0.0, 1.0, _REFINE + 2)[1:-1].reshape(-1, 1)
-    idx = np.arange(lo.size)
-    for _ in range(rounds):
-        vr = np.exp(np.log(lo) + (np.log(hi) - np.log(lo)) * t)
-        rst = _state(req, cfg, vr, f, dsf, pos, hint)
-        oks = np.broadcast_to(rst.feasible, vr.shape)
-        first = np.where(oks.any(axis=0), np.argmax(oks, axis=0), vr.shape[0])
-        last = vr.shape[0] - 1
-        hi = np.where(first <= last, vr[np.minimum(first, last), idx], hi)
-        lo = np.where(first > 0, vr[np.maximum(first - 1, 0), idx], lo)
-        hint = _lines_hint(cfg, rst, np.clip(first - 1, 0, _REFINE - 3))
-    pair = np.stack([lo, hi])
-    pst = _state(req, cfg, pair, f, dsf, pos, hint)
-    met = np.broadcast_to(pst.met, pair.shape + (len(NAMES),))[0]
-    return hi, _take_state(pst, np.ones(lo.shape, int), 2), met
-
-
 def _scatter_state(full: ConstraintState, sel, sub: ConstraintState) -> ConstraintState:
     """``full`` with the designs at ``sel`` (np.nonzero of the batch shape) taken from ``sub``
     (a 1-D batch of those designs)."""
@@ -342,16 +217,276 @@ def _scatter_state(full: ConstraintState, sel, sub: ConstraintState) -> Constrai
                                evaluation=map_arrays(put, full.evaluation, sub.evaluation))
 
 
+def _gather_flat(st: ConstraintState, idx, n: int) -> ConstraintState:
+    """The table and evaluation of a flat batch of ``n`` points (the batch the last axis of its
+    arrays) at point(s) ``idx`` (an int or an int array of the result's batch shape)."""
+    idx = np.asarray(idx)
+    scalar = idx.ndim == 0
+
+    def take(a):
+        if a.ndim == 0 or a.shape[-1] not in (1, n):
+            return a
+        if a.shape[-1] == 1:
+            return a[..., 0] if scalar else a
+        return a[..., idx]
+
+    table = {k: np.broadcast_to(getattr(st, k), (n, len(NAMES)))[idx] for k in _TABLE}
+    return dataclasses.replace(st, **table, evaluation=map_arrays(take, st.evaluation))
+
+
+def _secant_coordinate(g, tol):
+    """The coordinate in which the root finder interpolates g - tol: log(1 + g) - log(1 + tol)
+    where g > -0.9 (an upper limit q/q_max - 1 of a power law in volume is then a straight line
+    in log volume), else g - tol (same root)."""
+    pos = g > -0.9
+    return np.where(pos, np.log1p(np.maximum(g, -0.9)) - np.log1p(tol), g - tol)
+
+
+def _cubic_guess(grid, gg, d_idx, k, j):
+    """First guess of each bracket's root [ln m3]: the cubic through the row's secant
+    coordinate (:func:`_secant_coordinate`) at four consecutive grid points around the interval
+    j (where the coordinate is defined at all four, else g - tol), its root inside the interval
+    by bisection. Brackets (d_idx, k, j) as in :func:`_grid_brackets`."""
+    n_grid = grid.size
+    i0 = np.clip(j - 1, 0, n_grid - 4)
+    nodes = i0[:, None] + np.arange(4)[None, :]  # (M, 4)
+    g = gg[nodes, d_idx[:, None], k[:, None]]
+    tol = _TOL[k][:, None]
+    h = np.where((g > -0.9).all(axis=1, keepdims=True), _secant_coordinate(g, tol), g - tol)
+    u = np.arange(4, dtype=float)
+    coef = np.linalg.solve(np.vander(u, 4, increasing=True)[None], h[..., None])[..., 0]
+    a, b = (j - i0).astype(float), (j - i0 + 1).astype(float)
+    fa = ((coef[:, 3] * a + coef[:, 2]) * a + coef[:, 1]) * a + coef[:, 0]
+    for _ in range(30):
+        m = 0.5 * (a + b)
+        fm = ((coef[:, 3] * m + coef[:, 2]) * m + coef[:, 1]) * m + coef[:, 0]
+        same = np.sign(fm) == np.sign(fa)
+        a, fa = np.where(same, m, a), np.where(same, fm, fa)
+        b = np.where(same, b, m)
+    xg = np.log(grid)
+    return xg[i0] + 0.5 * (a + b) * (xg[1] - xg[0])
+
+
+def _prune(open_, x_lo, x_hi, group, up):
+    """Brackets that can no longer decide the answer, closed: a lower boundary (``up``: the row
+    becomes met) whose bracket lies wholly below another of its design's lower boundaries (it
+    is not the largest), and an upper boundary whose bracket lies wholly above every lower
+    boundary of its design (it cannot cut the window)."""
+    n = int(group.max()) + 1
+    lo_up = np.full(n, -np.inf)
+    hi_up = np.full(n, -np.inf)
+    np.maximum.at(lo_up, group[up], x_lo[up])
+    np.maximum.at(hi_up, group[up], x_hi[up])
+    below = up & (x_hi < lo_up[group])
+    above = ~up & (x_lo > hi_up[group]) & np.isfinite(hi_up[group])
+    return open_ & ~below & ~above
+
+
+def _refine(req, cfg, f, dsf, pos, k, x_lo, x_hi, r_lo, r_hi, s_lo, s_hi, states, guess=None,
+            ladder=False, group=None, up=None):
+    """Shrink brackets of constraint boundaries to a width of :data:`RTOL` in volume.
+
+    A flat set of M brackets: bracket m has constraint ``k[m]`` met at one end of
+    [exp(x_lo), exp(x_hi)] and broken at the other, design variables ``f, dsf, pos`` [m] (M,),
+    the table's g rows at its ends ``r_lo, r_hi`` (M, n) and where they were evaluated
+    ``s_lo, s_hi`` (M, 2: state id in ``states``, index). Each round evaluates three points per
+    open bracket in one call: the secant root of :func:`_secant_coordinate` between the ends
+    (in the first round ``guess`` where given), +-d about it (d = max(0.4 RTOL, 0.002 width): a
+    tight bracket when the secant is good) and the middle of the larger side (at least halves
+    the bracket when it is not), and keeps the first sub-interval from the low end whose ends
+    differ. ``ladder``: the first round also evaluates +-3d and +-9d (a few designs, where a
+    call costs more than its points). ``group`` (design of each bracket) and ``up`` (a lower
+    boundary): brackets that cannot decide the smallest feasible volume stop early
+    (:func:`_prune`). Returns the updated arrays.
+    """
+    n = len(NAMES)
+    x_lo, x_hi, r_lo, r_hi, s_lo, s_hi = (np.array(a) for a in (x_lo, x_hi, r_lo, r_hi,
+                                                               s_lo, s_hi))
+    for _ in range(_MAX_ROUNDS):
+        open_ = x_hi - x_lo > _LOG_RTOL
+        if group is not None:
+            open_ = _prune(open_, x_lo, x_hi, group, up)
+        act = np.nonzero(open_)[0]
+        if act.size == 0:
+            break
+        ma = act.size
+        a_lo, a_hi, kk = x_lo[act], x_hi[act], k[act]
+        w = a_hi - a_lo
+        tol = _TOL[kk]
+        glo, ghi = r_lo[act, kk], r_hi[act, kk]
+        h_lo, h_hi = _secant_coordinate(glo, tol), _secant_coordinate(ghi, tol)
+        den = h_lo - h_hi
+        with np.errstate(invalid="ignore", divide="ignore"):
+            t = np.where(den != 0, h_lo / np.where(den != 0, den, 1.0), 0.5)
+        t = np.clip(np.nan_to_num(t, nan=0.5), 0.0, 1.0)
+        xp = a_lo + w * t
+        if guess is not None:
+            xp = np.clip(guess[act], a_lo, a_hi)
+            t = (xp - a_lo) / np.maximum(w, 1e-300)
+        d = np.maximum(0.4 * _LOG_RTOL, 2e-3 * w)
+        mid = np.where(t > 0.5, 0.5 * (a_lo + xp), 0.5 * (xp + a_hi))
+        steps = (-9.0, -3.0, -1.0, 1.0, 3.0, 9.0) if ladder and guess is not None else (-1.0, 1.0)
+        pts = np.stack([xp + c * d for c in steps] + [mid], axis=1)
+        pts = np.clip(pts, a_lo[:, None], a_hi[:, None])
+        pts.sort(axis=1)
+        guess = None
+        npts = pts.size
+        n_in = pts.shape[1]
+        f3, dsf3, pos3 = (np.repeat(a[act], n_in) for a in (f, dsf, pos))
+        st = _state(req, cfg, np.exp(pts).reshape(-1), f3, dsf3, pos3)
+        sid = len(states)
+        states.append((st, npts))
+        g = np.broadcast_to(st.g, (npts, n)).reshape(ma, n_in, n)
+        rows = np.arange(ma)
+        met_pts = g[rows[:, None], np.arange(n_in)[None, :], kk[:, None]] <= tol[:, None]
+        met_lo = glo <= tol
+        seq = np.concatenate([met_pts, ~met_lo[:, None]], axis=1)  # the points, the high end
+        j = np.argmax(seq != met_lo[:, None], axis=1)  # the first that differs from the low end
+        xs = np.concatenate([a_lo[:, None], pts, a_hi[:, None]], axis=1)
+        rs = np.concatenate([r_lo[act][:, None], g, r_hi[act][:, None]], axis=1)
+        flat = (rows[:, None] * n_in + np.arange(n_in)[None, :])
+        ss = np.concatenate([s_lo[act][:, None],
+                             np.stack([np.full((ma, n_in), sid), flat], axis=-1),
+                             s_hi[act][:, None]], axis=1)
+        x_lo[act], x_hi[act] = xs[rows, j], xs[rows, j + 1]
+        r_lo[act], r_hi[act] = rs[rows, j], rs[rows, j + 1]
+        s_lo[act], s_hi[act] = ss[rows, j], ss[rows, j + 1]
+    return x_lo, x_hi, r_lo, r_hi, s_lo, s_hi
+
+
+def _grid_brackets(grid, gg, d_idx, k, j):
+    """Bracket arrays of intervals j of ``grid`` (designs d_idx, constraints k) from the grid
+    table ``gg`` (G, B, n) (see :func:`_refine`)."""
+    xg = np.log(grid)
+    return (xg[j], xg[j + 1], gg[j, d_idx], gg[j + 1, d_idx],
+            np.stack([np.zeros_like(j), j], axis=-1),
+            np.stack([np.zeros_like(j), j + 1], axis=-1))
+
+
+def _row(states, src, b: int, key: str, batch: int) -> np.ndarray:
+    """Row ``key`` (g, value, limit, margin) of the table where ``src`` = (state id, index) was
+    evaluated, for design ``b`` of the flattened batch (state 0 is the grid)."""
+    sid, i = int(src[0]), int(src[1])
+    st, npts = states[sid]
+    a = np.asarray(getattr(st, key))
+    if sid == 0:
+        return np.broadcast_to(a, (npts, batch, len(NAMES)) if batch else
+                               (npts, len(NAMES)))[(i, b) if batch else i]
+    return np.broadcast_to(a, (npts, len(NAMES)))[i]
+
+
+def _fmt_interval(lo: float, hi: float) -> str:
+    if lo <= VOLUME_MIN * (1 + 1e-9) and hi >= VOLUME_MAX * (1 - 1e-9):
+        return "any volume"
+    if lo <= VOLUME_MIN * (1 + 1e-9):
+        return f"at most {hi:.4g} m3"
+    if hi >= VOLUME_MAX * (1 - 1e-9):
+        return f"at least {lo:.4g} m3"
+    return f"{lo:.4g}-{hi:.4g} m3"
+
+
+def _describe(intervals) -> str:
+    return " or ".join(_fmt_interval(a, b) for a, b in intervals) if intervals else "no volume"
+
+
+def _grid_reason(met) -> tuple:
+    """(binding, message, None) of an infeasible design of a large batch, from its grid alone:
+    the first constraint met at no grid volume, else "combined"."""
+    never = [NAMES[k] for k in range(len(NAMES)) if not met[:, k].any()]
+    if never:
+        c = BY_NAME[never[0]]
+        return never[0], f"no hull volume meets the {c.label.lower()} limit", None
+    return "combined", "no single hull volume meets every constraint together", None
+
+
+def _infeasible(req, cfg, grid, fb, db, pb, gg, met, bad, states, design_wind, survival_wind):
+    """Binding name, message and per-constraint feasible intervals of the designs ``bad`` (flat
+    indices) that no volume satisfies: every sign change of every constraint on the grid is
+    refined (:func:`_refine`), the intervals intersected, and the change that would help most
+    chosen (see :func:`infeasibility_message`)."""
+    change = met[:-1, bad] != met[1:, bad]  # (G-1, nb, n)
+    j, bi, k = np.nonzero(change)
+    d_idx = np.asarray(bad)[bi]
+    x_lo, x_hi, r_lo, r_hi, s_lo, s_hi = _refine(
+        req, cfg, fb[d_idx], db[d_idx], pb[d_idx], k, *_grid_brackets(grid, gg, d_idx, k, j),
+        states)
+    batch = fb.size if gg.ndim == 3 and states[0][0].g.ndim > 2 else 0
+    out = {}
+    for pos_b, b in enumerate(bad):
+        sel = np.nonzero(bi == pos_b)[0]
+        ivals, ends = {}, []
+        for kk in range(len(NAMES)):
+            mine = sel[k[sel] == kk]
+            mine = mine[np.argsort(j[mine])]
+            segs, cur, cur_src = [], (VOLUME_MIN if met[0, b, kk] else None), (0, 0)
+            for m in mine:
+                if met[j[m] + 1, b, kk]:  # broken -> met: a segment starts (its feasible end)
+                    cur, cur_src = float(np.exp(x_hi[m])), s_hi[m]
+                elif cur is not None:  # met -> broken: the segment ends
+                    segs.append((cur, float(np.exp(x_lo[m])), cur_src, s_lo[m]))
+                    cur = None
+            if cur is not None:
+                segs.append((cur, VOLUME_MAX, cur_src, (0, grid.size - 1)))
+            ivals[NAMES[kk]] = [(a, c) for a, c, _, _ in segs]
+            for a, c, sa, sc in segs:
+                ends += [(a, sa, kk), (c, sc, kk)]
+        out[b] = _message(ivals, ends, states, b, batch, design_wind, survival_wind)
+    return out
+
+
+def _message(ivals, ends, states, b, batch, design_wind, survival_wind):
+    """(binding, message, intervals) of one infeasible design (see :func:`_infeasible`).
+
+    ``ends``: (volume, source, constraint index) of every end of every feasible segment (the
+    evaluated point on its feasible side, where the whole table is known). The best compromise
+    is the end where the fewest constraints fail (then the least total g); the message gives the
+    true intervals of the constraint met there and of those failing there, and the change that
+    would help most: the failing constraint nearest its limit there, with its advice."""
+    span = f"{VOLUME_MIN:g}-{VOLUME_MAX:g} m3"
+    never = [n for n in NAMES if not ivals[n]]
+    if never:
+        c = BY_NAME[never[0]]
+        others = [BY_NAME[n].label.lower() for n in never[1:]]
+        also = f"; no volume meets {', '.join(others)} either" if others else ""
+        msg = (f"no hull volume in {span} meets the {c.label.lower()} limit{also}. "
+               f"What would help most: {c.advice or 'relax that limit'}")
+        return never[0], msg, ivals
+    best = None
+    for v, src, k in ends:
+        g = _row(states, src, b, "g", batch)
+        bad = g > _TOL
+        key = (int(bad.sum()), float(np.clip(g, 0.0, None).sum()))
+        if best is None or key < best[0]:
+            best = (key, v, src, k, g, bad)
+    _, v, src, k, g, bad = best
+    failing = [int(i) for i in np.nonzero(bad)[0]]
+    if not failing:  # a window narrower than the search's precision
+        return "combined", (f"no hull volume in {span} meets every constraint together "
+                            f"(the constraints meet only within {RTOL:g} of {v:.4g} m3)"), ivals
+    c0 = CONSTRAINTS[k]
+    needs = "; ".join(f"{CONSTRAINTS[i].label.lower()} needs {_describe(ivals[NAMES[i]])}"
+                      for i in failing)
+    nearest = min(failing, key=lambda i: g[i])
+    c = CONSTRAINTS[nearest]
+    wind = survival_wind if c.at == "survival" else design_wind
+    where = c.template.format(value=float(_row(states, src, b, "value", batch)[nearest]),
+                              limit=float(_row(states, src, b, "limit", batch)[nearest]),
+                              wind=wind)
+    msg = (f"{c0.label.lower()} needs a hull of {_describe(ivals[c0.name])} but {needs}: no "
+           f"volume in {span} meets them together. What would help most: at {v:.4g} m3, "
+           f"{where}; {c.advice or 'relax that limit'}"
+           + (f". Otherwise: {c0.advice}" if c0.advice and c0 is not c else ""))
+    return f"{c0.name}+{NAMES[failing[0]]}", msg, ivals
+
+
 def size_volume(req: Requirement, cfg: Configuration, fineness_ratio=None, area_change=None,
-                position=None, rounds: int = 4) -> SizingResult:
+                position=None, rounds=None, explain=None) -> SizingResult:
     """Smallest hull volume that meets every constraint of the table.
 
-    The answer is the first feasible volume of the lattice that splits the grid bracket into
-    9^rounds equal steps in log volume (what ``rounds`` nested rounds of 8 interior points
-    find). It is found with one evaluation of a few lattice points around the crossing that a
-    cubic through the grid's g values predicts; where those points do not contain the crossing
-    (a g that is not smooth there), the nested rounds run as the fallback. The constraint table
-    at the chosen volume is the one evaluated in the search (no second evaluation).
+    Each constraint's boundary in volume is bracketed on the grid and found by a root finder to
+    :data:`RTOL`; the boundaries are intersected and the smallest feasible volume is the
+    evaluated point just above the largest lower boundary of the first window (module
+    docstring). The constraint table at that volume is the one evaluated in the search.
 
     Parameters
     ----------
@@ -359,14 +494,28 @@ def size_volume(req: Requirement, cfg: Configuration, fineness_ratio=None, area_
         ``req`` is resolved against its rule set first.
     fineness_ratio, area_change, position : array_like or None
         Design variables (broadcast together); ``None`` takes ``cfg``'s values.
-    rounds : int
-        Bracket refinement rounds (8 interior points each): the lattice has 9^rounds steps.
+    rounds : None
+        Unused (kept for callers of the former lattice search).
+    explain : bool, optional
+        Refine every constraint's boundaries of an infeasible design for its message and
+        ``intervals`` (default: for batches of at most 8 designs; a larger batch gets the
+        constraint never met on the grid, or "combined", and a short message).
 
     Returns
     -------
     SizingResult
         Arrays of the broadcast shape of the design variables; ``state`` (with its evaluation
         and airframe) at ``volume``.
+
+    Examples
+    --------
+    The default mission (10 kg at 300 m, practice rules):
+
+    >>> from aerostat_core import Requirement
+    >>> from aerostat_core.model.presets import practice_configuration
+    >>> s = size_volume(Requirement(), practice_configuration())
+    >>> bool(s.feasible), str(s.binding)
+    (True, 'endurance')
     """
     req = req.resolved()
     f = cfg.hull.fineness_ratio if fineness_ratio is None else fineness_ratio
@@ -374,72 +523,81 @@ def size_volume(req: Requirement, cfg: Configuration, fineness_ratio=None, area_
     pos = cfg.fins.position if position is None else position
     f, dsf, pos = (np.asarray(a, float) for a in np.broadcast_arrays(f, dsf, pos))
     shape = f.shape
-    n_grid = _GRID.size
-    grid = _GRID.reshape((-1,) + (1,) * len(shape))
-    st = _state(req, cfg, grid, f, dsf, pos)
-    met = np.broadcast_to(st.met, (n_grid,) + shape + (len(NAMES),))
+    fb, db, pb = (a.reshape(-1) for a in (f, dsf, pos))
+    nb, n = fb.size, len(NAMES)
+    grid = _GRID if nb <= _FEW else _GRID_BATCH
+    n_grid = grid.size
+    explain = nb <= _FEW if explain is None else bool(explain)
+    st = _state(req, cfg, grid.reshape((-1,) + (1,) * len(shape)), f, dsf, pos)
+    gg = np.broadcast_to(st.g, (n_grid,) + shape + (n,)).reshape(n_grid, nb, n)
+    met = gg <= _TOL
     ok = met.all(axis=-1)
-    any_ok = ok.any(axis=0)
-    k = np.argmax(ok, axis=0)
-    # infeasible designs: the grid volume of least total violation, and the reason
-    viol = np.broadcast_to(np.clip(st.g, 0.0, None), met.shape).sum(axis=-1)
-    j_grid = np.where(any_ok, k, np.argmin(viol, axis=0))
-    volume = _GRID[j_grid]
-    final = None  # the state at the volume, gathered once from where it was evaluated
-    lo_met = np.take_along_axis(met, np.maximum(k - 1, 0)[None, ..., None], axis=0)[0]
-    refine = any_ok & (k > 0)
-    if refine.any():
-        lo_k = np.maximum(k - 1, 0)
-        lo, hi = _GRID[lo_k], _GRID[k]
-        x_lo, span = np.log(lo), np.log(hi) - np.log(lo)
-        steps = (_REFINE + 1) ** rounds
-        frac = np.where(refine, _predicted_fraction(st, lo_k, met), 1.0)
-        centre = np.clip(np.ceil(frac * steps), 0, steps)
-        m = _CLUSTER if f.size <= 4 else _CLUSTER_BATCH  # a batch: fewer points, more fallbacks
-        j = centre + np.arange(-m // 2, m // 2).reshape((-1,) + (1,) * len(shape))
-        j = np.clip(j, 0, steps)
-        vs = np.where(refine, np.exp(x_lo + span * j / steps), volume)
-        # the cluster's tether passes start from the grid's lines around the bracket
-        first_line = np.minimum(np.where(refine, lo_k, j_grid), n_grid - 3)
-        cst = _state(req, cfg, vs, f, dsf, pos, _lines_hint(cfg, st, first_line))
-        cok = np.broadcast_to(cst.feasible, vs.shape)
-        valid = refine & ~cok[0] & cok[-1]
-        first = np.argmax(cok, axis=0)
-        c_met = np.broadcast_to(cst.met, vs.shape + (len(NAMES),))
-        prev_met = np.take_along_axis(c_met, np.maximum(first - 1, 0)[None, ..., None], axis=0)[0]
-        volume = np.where(valid, np.take_along_axis(vs, first[None], axis=0)[0], volume)
-        if valid.all():
-            final = _take_state(cst, first, vs.shape[0])
-        elif valid.any():
-            final = _select_state(valid, _take_state(cst, first, vs.shape[0]),
-                                  _take_state(st, j_grid, n_grid))
-        lo_met = np.where(valid[..., None], prev_met, lo_met)
-        fall = refine & ~valid
-        if fall.any():  # the nested rounds on those brackets, then [lo, hi] evaluated once
-            if not shape:  # one design
-                v_sub, st_sub, met_sub = _nested_rounds(
-                    req, cfg, *(np.reshape(a, 1) for a in (lo, hi, f, dsf, pos)), rounds,
-                    _lines_hint(cfg, st, np.minimum(lo_k, n_grid - 3), pad=1))
-                volume, lo_met = v_sub[0], met_sub[0]
-                final = _take_state(st_sub, np.array(0), 1)
-            else:
-                sel = np.nonzero(fall)
-                v_sub, st_sub, met_sub = _nested_rounds(
-                    req, cfg, lo[sel], hi[sel], f[sel], dsf[sel], pos[sel], rounds)
-                volume = np.array(volume)
-                volume[sel] = v_sub
-                if final is None:
-                    final = _take_state(st, j_grid, n_grid)
-                final = _scatter_state(final, sel, st_sub)
-                lo_met = np.array(lo_met)
-                lo_met[sel] = met_sub
-    if final is None:
-        final = _take_state(st, j_grid, n_grid)
-    broken = np.argmax(~lo_met, axis=-1)
-    bind_ok = np.where((k > 0) & ~lo_met.all(axis=-1), np.asarray(NAMES)[broken], "none")
-    bind_bad, msg_bad = _infeasible_reason(st, met, shape, skip=any_ok)
-    binding = np.where(any_ok, bind_ok, bind_bad)
-    message = np.where(any_ok, "", msg_bad)
+    cand = (met[:-1] | met[1:]).all(axis=-1)  # (G-1, B): a window can lie in the interval
+    states = [(st, n_grid)]
+    found = ok[0].copy()
+    volume = np.where(found, grid[0], np.nan)
+    binding = np.full(nb, "none", dtype=object)
+    src = np.zeros((nb, 2), int)
+    start = np.zeros(nb, int)
+    pend = ~found
+    steps = np.arange(n_grid - 1)[:, None]
+    while True:
+        avail = cand & (steps >= start[None])
+        pend &= avail.any(axis=0)
+        if not pend.any():
+            break
+        i = np.argmax(avail, axis=0)
+        bsel = np.nonzero(pend)[0]
+        ib = i[bsel]
+        sw = met[ib, bsel] != met[ib + 1, bsel]  # the constraints that change in the interval
+        bi, k = np.nonzero(sw)
+        d_idx = bsel[bi]
+        jj = i[d_idx]
+        x_lo, x_hi, r_lo, r_hi, s_lo, s_hi = _refine(
+            req, cfg, fb[d_idx], db[d_idx], pb[d_idx], k,
+            *_grid_brackets(grid, gg, d_idx, k, jj), states,
+            guess=_cubic_guess(grid, gg, d_idx, k, jj), ladder=nb <= _FEW, group=d_idx,
+            up=met[jj + 1, d_idx, k])
+        up = met[jj + 1, d_idx, k]  # met at the upper end: a lower boundary of the window
+        for pos_b, b in enumerate(bsel):
+            mine = np.nonzero((bi == pos_b) & up)[0]
+            if mine.size:
+                m = mine[np.argmax(x_hi[mine])]  # the largest lower boundary
+                if bool((r_hi[m] <= _TOL).all()):  # the whole table met at that point
+                    found[b], volume[b], src[b] = True, float(np.exp(x_hi[m])), s_hi[m]
+                    binding[b] = NAMES[k[m]]
+                    continue
+            start[b] = i[b] + 1
+        pend &= ~found
+    feasible = found.reshape(shape)
+    message = np.full(nb, "", dtype=object)
+    intervals = [None] * nb
+    bad = np.nonzero(~found)[0]
+    if bad.size:
+        viol = np.clip(gg[:, bad], 0.0, None).sum(axis=-1)
+        j_bad = np.argmin(viol, axis=0)
+        volume[bad] = grid[j_bad]
+        src[bad, 0], src[bad, 1] = 0, j_bad
+        if explain:
+            why = _infeasible(req, cfg, grid, fb, db, pb, gg, met, bad, states,
+                              float(req.design_wind), float(req.survival_wind))
+        else:
+            why = {b: _grid_reason(met[:, b]) for b in bad}
+        for b, (name, msg, iv) in why.items():
+            binding[b], message[b], intervals[b] = name, msg, iv
+    # the state at each volume, from the evaluation that found it
+    final = None
+    for sid in np.unique(src[:, 0]):
+        mask = src[:, 0] == sid
+        s_st, npts = states[sid]
+        if sid == 0:
+            part = _take_state(s_st, np.where(mask, src[:, 1], 0).reshape(shape), npts)
+        else:
+            part = _gather_flat(s_st, np.where(mask, src[:, 1], src[mask, 1][0]).reshape(shape),
+                                npts)
+        final = part if final is None else _select_state(mask.reshape(shape), part, final)
     bb = np.broadcast_to(final.value[..., NAMES.index("blow_by")], shape)
-    return SizingResult(volume=volume, feasible=any_ok, binding=binding, blow_by=np.array(bb),
-                        state=final, message=message)
+    return SizingResult(volume=volume.reshape(shape), feasible=feasible,
+                        binding=binding.astype(str).reshape(shape), blow_by=np.array(bb),
+                        state=final, message=message.astype(str).reshape(shape),
+                        intervals=tuple(intervals))

@@ -70,7 +70,7 @@ class OptimizationProblem:
         cfg = configuration.with_design_variables(volume=None)
         if cfg.materials == "catalogue":
             # fabrics and tether chosen by load at the starting design, then held while the
-            # shape varies (issue 23; docs/methods.md §1.15)
+            # shape varies (issue 23; docs/methods.md §1.19)
             from aerostat_core.model.selection import select_materials
 
             cfg = select_materials(self.requirement, cfg).configuration

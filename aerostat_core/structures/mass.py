@@ -215,8 +215,8 @@ def systems_mass(volume, per_volume: float, exponent: float = 0.0):
     -----
     Valid over the classes of thesis Table 2.3 (30-25,000 m3). Why linear in V: the blower flow
     and the ballonet scale with V; the rigging's mass is small (SF T l / (sigma/rho): 3 x 100 kN
-    x 24 m / 2.2e6 m is 3 kg on a strategic hull, docs/methods.md §1.15) and is inside k_sys.
-    Source: docs/methods.md §1.15 (the law), docs/validation.md (the fit).
+    x 24 m / 2.2e6 m is 3 kg on a strategic hull, docs/methods.md §1.19) and is inside k_sys.
+    Source: docs/methods.md §1.19 (the law), docs/validation.md (the fit).
 
     Examples
     --------

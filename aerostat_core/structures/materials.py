@@ -328,7 +328,7 @@ POWER_TETHER_CONDUCTORS: dict[str, float] = {
 }
 
 
-# --- catalogue for selection by load (issue 23; docs/methods.md §1.15) -------------------------
+# --- catalogue for selection by load (issue 23; docs/methods.md §1.19) -------------------------
 #: DSM Dyneema fact sheet "UHMWPE fiber from DSM Dyneema" (ref. CIS YA100, issued 15-11-2010):
 #: tensile strength of SK75/SK78 fibre 3.4-4.0 N/tex; the lower end is used [N/(kg/m)].
 HMPE_TENACITY = 3.4e6

@@ -129,3 +129,265 @@ def allowable_pressure(strength, safety_factor, radius, moment=0.0):
     hoop = n / r
     long = 2.0 * (n - np.abs(np.asarray(moment, float)) / (np.pi * r**2)) / r
     return np.minimum(hoop, long)
+
+
+# --- the hull as a pressurised beam (issue 22 item 5; docs/methods.md §1.17) ---------------
+#: Stations along the hull of the beam model (the shear and moment integrals).
+BEAM_STATIONS = 25
+#: Share of the hull length over which the confluence lines spread the tether's pull [-], a hat
+#: centred on the centre of buoyancy: engineering choice (the patch lines of tactical aerostats
+#: span about a third of the hull; a point load would be the conservative limit).
+CONFLUENCE_SPAN = 1.0 / 3.0
+#: Sections checked for wrinkling: radius at least this share of the largest [-].
+WRINKLE_MIN_RADIUS = 0.5
+
+
+def wrinkling_moment(pressure, radius):
+    """Bending moment at which a pressurised circular envelope section starts to wrinkle [N m].
+
+    M_w = pi p r^3 / 2: the axial membrane tension of the pressure, p r / 2 per unit length of
+    circumference, is cancelled on the compression side by the bending load M / (pi r^2) (thin
+    circular section of second moment pi r^3 per unit wall thickness). Past M_w that side
+    carries no tension and the fabric folds; the collapse moment of a fabric tube is about twice
+    this (Comer & Levy 1963, AIAA J. 1(7)), so M_w is the onset, the design value. Source:
+    Carichner & Nicolai (2013), *Fundamentals of Aircraft and Airship Design* vol. 2, envelope
+    structure (the wrinkling criterion of non-rigid airship practice, Burgess 1927 *Airship
+    Design* ch. 9).
+
+    Parameters
+    ----------
+    pressure : array_like
+        Pressure difference across the fabric at the section [Pa], >= 0.
+    radius : array_like
+        Section radius [m], > 0.
+
+    Examples
+    --------
+    >>> round(float(wrinkling_moment(200.0, 2.0)), 1)  # pi 200 8 / 2
+    2513.3
+    """
+    return 0.5 * np.pi * np.asarray(pressure, float) * np.asarray(radius, float) ** 3
+
+
+def beam_moment(x, load, point_loads=(), couples=()):
+    """Bending moment along a free-free beam in equilibrium [N m] (pure function).
+
+    V(x) = int_0^x w dx' + sum_i P_i H(x - x_i); M(x) = int_0^x V dx' + sum_j C_j H(x - x_j),
+    by the trapezoid rule on the stations ``x``. Loads from a simplified distribution do not
+    close exactly: the force residual is the caller's (it sets the reaction), and the moment
+    residual at the tail, M(L), is removed as a linear ramp M(x) - M(L) x / L (the "closing"
+    of airship load curves, Burgess 1927 ch. 9), so M(0) = M(L) = 0.
+
+    Parameters
+    ----------
+    x : ndarray, shape (N, ...)
+        Stations from the nose [m], increasing along the first axis.
+    load : ndarray, shape (N, ...)
+        Distributed load normal to the axis [N/m] (positive up).
+    point_loads : sequence of (P, x_P)
+        Point loads [N] (positive up) at stations [m] (arrays broadcast with x[0]).
+    couples : sequence of (C, x_C)
+        Point couples [N m] (nose-up positive) at stations [m].
+
+    Returns
+    -------
+    ndarray, shape of ``x``
+
+    Examples
+    --------
+    A uniform load w on a beam of length L held by a point load -wL at mid-length: the largest
+    moment is w L^2 / 8.
+
+    >>> x = np.linspace(0.0, 2.0, 201)
+    >>> m = beam_moment(x, np.ones_like(x), [(-2.0, 1.0)])
+    >>> round(float(np.abs(m).max()), 4)
+    0.5
+    """
+    x = np.asarray(x, float)
+    dx = np.diff(x, axis=0)
+    w = np.asarray(load, float)
+    v = np.concatenate([np.zeros_like(w[:1]), np.cumsum(0.5 * (w[1:] + w[:-1]) * dx, axis=0)])
+    m = np.concatenate([np.zeros_like(v[:1]), np.cumsum(0.5 * (v[1:] + v[:-1]) * dx, axis=0)])
+    for p, xp in point_loads:
+        m = m + np.asarray(p, float) * np.maximum(x - np.asarray(xp, float), 0.0)
+    for c, xc in couples:
+        m = m + np.asarray(c, float) * (x >= np.asarray(xc, float))
+    span = x[-1] - x[0]
+    return m - m[-1] * (x - x[0]) / np.where(span > 0, span, 1.0)
+
+
+def envelope_loads(af, cfg, ev, stations: int = BEAM_STATIONS) -> dict:
+    """Pressure, membrane loads, bending and wrinkling moments of the envelope, the hull taken as
+    a pressurised beam at the trim of an evaluation (Carichner & Nicolai 2013 vol. 2; Burgess
+    1927 ch. 9; docs/methods.md §1.17).
+
+    Loads normal to the hull axis, along ``stations`` stations from nose to tail:
+
+    * net buoyancy of the gas (rho_air - rho_gas) g A(x) cos(alpha), A the section area;
+    * the envelope fabric weight, the hull item mass spread over the perimeter 2 pi r(x);
+    * the fins, payload and every other item as point weights at their stations;
+    * the aerodynamic load along the hull in the shapes of Jones & DeLaurier: the potential-flow
+      (Munk) part, proportional to sin(2 alpha) dA/dx, ahead of the viscous cut-off station, the
+      cross-flow part, proportional to r(x), aft of it; the two scaled so that their force and
+      moment are the model's own hull normal force and couple (Jones & DeLaurier forces,
+      what the trim balanced);
+    * the fin lift (aerodynamics.fin_lift_drag) at the fin aerodynamic centre;
+    * the confluence lines: the tether's pull enters the hull along the patch line of the
+      lines (a hat of base :data:`CONFLUENCE_SPAN` of the hull length on the centre of
+      buoyancy; the confluence point itself lies below the hull, often ahead of the nose). Its
+      resultant is what closes the balance of all the other loads: a uniform part, the force,
+      and a linear part, the moment (the fore and aft lines pull unequally, and their
+      horizontal pull acts below the axis, so that the resultant passes through the confluence
+      point). So M(0) = M(L) = 0 without a closing ramp.
+
+    The hull's pressure (at the top) is the largest of what it needs against nose dimpling
+    (:func:`required_pressure`), what keeps the governing section from wrinkling (the pressure
+    whose M_w is the bending moment there, times the same factor, plus the gas head from the
+    section's centre to the top) and the gas superpressure: the pressure is chosen to prevent
+    wrinkling and the fabric is then sized for it (Carichner & Nicolai 2013). Whether the fabric
+    can carry a pressure that high is the constraint table's wrinkling row
+    (:func:`aerostat_core.model.mission.structure_quantities`). The governing section is where
+    |M| / r^3 is largest among the sections of radius at least :data:`WRINKLE_MIN_RADIUS` of the
+    largest (the nose and tail caps carry their loads as shells of double curvature, not as a
+    beam).
+
+    Parameters
+    ----------
+    af : Airframe
+    cfg : Configuration
+        ``cfg.aero`` (efficiency, cross-flow drag), ``cfg.mission.pressure_dynamic_factor``,
+        ``cfg.gas.superpressure``.
+    ev : Evaluation
+        Trim and tether at the speed(s) of interest (arrays broadcast over designs and speeds).
+    stations : int
+        Stations of the integrals, >= 11.
+
+    Returns
+    -------
+    dict of ndarray (the broadcast shape of designs and speeds)
+        ``pressure`` [Pa] (top of the hull, the largest of the three needs),
+        ``pressure_dimpling``, ``pressure_wrinkling`` [Pa] (the two needs), ``hoop_load``
+        p r_max [N/m], ``longitudinal_load`` [N/m] (largest p r/2 + |M|/(pi r^2) along the
+        hull), ``bending_moment`` [N m] (largest |M(x)|), ``wrinkling_moment`` [N m]
+        (pi p r^3 / 2 at the governing section, at the section's mean pressure),
+        ``moment_at_governing`` [N m], ``governing_station`` [m from the nose],
+        ``governing_radius`` [m], ``head`` [Pa] (gas head from the axis to the top).
+    """
+    from aerostat_core.aerodynamics.forces import fin_lift_drag, hull_crossflow, hull_inviscid
+    from aerostat_core.geometry.shapes import SHAPE_INFO
+
+    h, g = af.hull, af.g
+    alpha = np.asarray(ev.equilibrium.alpha, float)
+    speed = np.asarray(ev.speed, float)
+    q = 0.5 * af.air_density * speed**2
+    shape = np.broadcast_shapes(np.shape(alpha), np.shape(q), np.shape(h.length))
+    # the geometry once per hull (not per speed): stations, radius, area and its slope
+    t = np.linspace(0.0, 1.0, max(int(stations), 11)).reshape((-1,) + (1,) * len(shape))
+    length = np.asarray(h.length, float)
+    x = t * length
+    r = np.broadcast_to(h.radius_at(x), x.shape)
+    area = np.pi * r**2
+    dx = length / (t.shape[0] - 1)
+    wts = np.ones_like(t)
+    wts[0] = wts[-1] = 0.5
+
+    def integral(a):  # trapezoid rule on the uniform stations
+        return (wts * a).sum(axis=0) * dx
+
+    d_area = np.gradient(area, axis=0) / np.maximum(dx, 1e-12)
+    per = 2.0 * np.pi * r
+    per_int = np.maximum(integral(per), 1e-12)
+    ca = np.cos(alpha)
+    drho = af.air_density - af.gas_density
+    load = drho * g * area * ca
+    items, positions = af.mass.items, af.mass.positions
+    load = load - np.asarray(items["hull"]) * g * ca * per / per_int
+    streamlined = SHAPE_INFO[h.shape].streamlined
+    couples = []
+    if streamlined:
+        # the hull's aerodynamic load along it: the Jones & DeLaurier shapes (potential flow
+        # ahead of the cut-off station, cross-flow aft of it), scaled so that their force and
+        # moment are the model's own hull lift and couple (what the trim balanced)
+        # the model's hull normal force and couple (Jones & DeLaurier), and the fin lift
+        ae, fn = cfg.aero, af.fins
+        n_i, _, m_i = hull_inviscid(q, alpha, h.k2 - h.k1, ae.hull_efficiency, af.i1, af.i3)
+        n_c, m_c = hull_crossflow(q, alpha, ae.hull_crossflow_drag, af.j1, af.j2)
+        fin_lift = fin_lift_drag(q, alpha, fn.lift_slope, ae.fin_efficiency,
+                                 np.radians(ae.fin_stall_angle_deg), fn.lifting_area,
+                                 fn.area_total, ae.fin_zero_lift_drag, fn.aspect_ratio,
+                                 fn.oswald)[0]
+        ahead = x <= af.cutoff_station
+        shape_1 = np.where(ahead, np.sin(2.0 * alpha) * d_area, 0.0)
+        shape_2 = np.where(ahead, 0.0, 2.0 * r * np.ones_like(alpha))
+        arm = x - af.xi_m
+        f1, f2 = integral(shape_1), integral(shape_2)
+        m1, m2 = integral(shape_1 * arm), integral(shape_2 * arm)
+        hull_moment = m_i + m_c
+        lift_h, couple_h = n_i + n_c, -hull_moment  # the moment of upward loads
+        det = f1 * m2 - f2 * m1
+        ok = np.abs(det) > 1e-9 * (np.abs(f1 * m2) + np.abs(f2 * m1) + 1e-30)
+        safe = np.where(ok, det, 1.0)
+        s1 = np.where(ok, (lift_h * m2 - f2 * couple_h) / safe, 0.0)
+        s2 = np.where(ok, (f1 * couple_h - m1 * lift_h) / safe, 0.0)
+        load = load + s1 * shape_1 + s2 * shape_2
+        # where the two shapes cannot carry it (alpha ~ 0), the hull load as a force and couple
+        couples.append((np.where(ok, 0.0, hull_moment), af.xi_m))
+        hull_point = (np.where(ok, 0.0, lift_h), af.xi_m)
+    # the carried items as point weights (those at one station, as the payload, miscellaneous,
+    # battery and ballonet under the centre of buoyancy, summed into one load)
+    at: dict = {}
+    for k, m in items.items():
+        if k in ("hull", "lifting gas", "tether") or k not in positions:
+            continue
+        xk = positions[k][0]
+        key = id(xk)
+        at[key] = (at[key][0] + np.asarray(m), xk) if key in at else (np.asarray(m), xk)
+    points = [(-m * g * ca, xk) for m, xk in at.values()]
+    if streamlined:
+        points.append((fin_lift * ca, af.fins.xi_ac))
+        points.append(hull_point)
+    # the confluence lines' reaction closes the balance: its force the residual force, spread
+    # over their patch line (a hat of base CONFLUENCE_SPAN of the hull length on the centre of
+    # buoyancy, where the patches of the lines sit), with a linear part that carries the moment
+    # (the fore and aft lines pull unequally so that the resultant passes through the
+    # confluence point, as they do to hold the trim)
+    patch = np.maximum(1.0 - np.abs(x - h.xi_cb) / (0.5 * CONFLUENCE_SPAN * length), 0.0)
+    w0 = np.maximum(integral(patch), 1e-12)
+    x_bar = integral(patch * x) / w0
+    w2 = np.maximum(integral(patch * (x - x_bar) ** 2), 1e-12)
+    force = integral(load) + sum(np.asarray(p) for p, _ in points)
+    first = integral(load * x) + sum(np.asarray(p) * np.asarray(xp) for p, xp in points)
+    c = sum(np.asarray(cc) for cc, _ in couples) - first + force * x_bar
+    load = load - force * patch / w0 + c * (x - x_bar) * patch / w2
+    moment = beam_moment(x, load, points, couples)
+    rr = np.maximum(r, 1e-3 * h.b)
+    head = drho * g * h.b  # top of the hull less the section's mean
+    # governing section: the largest |M| / r^3 (the pressure is uniform along the hull)
+    ratio = np.where(r >= WRINKLE_MIN_RADIUS * h.b, np.abs(moment) / rr**3, 0.0)
+    ratio = np.broadcast_to(ratio, np.broadcast_shapes(ratio.shape, np.shape(moment)))
+    k = np.argmax(ratio, axis=0)[None]
+    full = np.shape(moment)
+
+    def take(a):
+        return np.take_along_axis(np.broadcast_to(a, full), k, axis=0)[0]
+
+    m_gov, r_gov = take(np.abs(moment)), take(rr)
+    factor = cfg.mission.pressure_dynamic_factor
+    p_dimple = required_pressure(q, af.air_density, af.gas_density, g, h.diameter, factor)
+    # the pressure that keeps the governing section from wrinkling, with the same factor
+    p_wrinkle = factor * 2.0 * m_gov / (np.pi * r_gov**3) + head
+    p_top = np.maximum(np.maximum(p_dimple, p_wrinkle), cfg.gas.superpressure)
+    n_long = 0.5 * p_top * rr + np.abs(moment) / (np.pi * rr**2)
+    return {
+        "pressure": np.broadcast_to(p_top, shape),
+        "pressure_dimpling": np.broadcast_to(p_dimple, shape),
+        "pressure_wrinkling": np.broadcast_to(p_wrinkle, shape),
+        "hoop_load": np.broadcast_to(p_top * h.b, shape),
+        "longitudinal_load": n_long.max(axis=0),
+        "bending_moment": np.abs(moment).max(axis=0),
+        "wrinkling_moment": wrinkling_moment(np.maximum(p_top - head, 0.0), r_gov),
+        "moment_at_governing": m_gov,
+        "governing_station": take(x),
+        "governing_radius": r_gov,
+        "head": np.broadcast_to(head, shape),
+    }

@@ -259,7 +259,8 @@ def size_fielded(system: FieldedSystem, rules: str = "practice",
                       survival_wind=system.class_survival_wind if mission else None,
                       payload_power=system.payload_power,
                       power_via="tether" if system.payload_power > 0 else "onboard",
-                      endurance_days=system.class_endurance_days if mission else 0.0)
+                      endurance_days=system.class_endurance_days if mission else 0.0,
+                      top_up_interval_days=0.0)  # the calibration's sizing: class endurance only
     cfg = None
     if mission:
         cfg = replace(rules_configuration(rules), mission=MissionSpec(ballonet="auto"))

@@ -577,3 +577,79 @@ def rule_set_spread(req: Requirement, n: int = 2000, seed: int = 0, client=None)
             }
         )
     return rows
+
+
+# --- verdict: probability of meeting the design margins and the operating limits (issue 22) --
+def limits_block(req: Requirement, cfg: Configuration, volume: float, specs, seed, n: int,
+                 spread: float = 1.0) -> dict:
+    """The constraint table of ``n`` samples at the design margins and at the operating limits
+    (:func:`aerostat_core.model.verdict.operating_requirement`), from the same draws as
+    :func:`sample_block` with the same seed: {"design": met (n, K), "operating": met (n, K)}."""
+    from aerostat_core.model.verdict import operating_requirement
+
+    rng = np.random.default_rng(seed)
+    s = draw(cfg, specs, n, rng, spread)
+    vol = np.full((n, 1), float(volume))
+    af0 = build_airframe(req, cfg, float(volume))
+    factor = s.get("hull_axial_drag", np.ones(n))[:, None]
+    if cfg.aero.hull_axial_drag is None:
+        base_c = axial_drag_coefficient(af0, cfg.aero, np.array([req.design_wind,
+                                                                 req.survival_wind]))
+    else:
+        base_c = np.full(2, float(cfg.aero.hull_axial_drag))
+    axial = factor[None] * base_c.reshape(2, 1, 1)
+    req_op, cfg_op = operating_requirement(req, cfg)
+    c_c = sampled_configuration(cfg, specs, s, axial=axial)
+    af = build_airframe(req, c_c, vol)
+    out = {"design": np.asarray(constraint_state(req, c_c, af).met, bool).reshape(n, len(NAMES))}
+    if req_op is req and cfg_op is cfg:
+        out["operating"] = out["design"]
+    else:
+        c_op = sampled_configuration(cfg_op, specs, s, axial=axial)
+        out["operating"] = np.asarray(constraint_state(req_op, c_op, af).met,
+                                      bool).reshape(n, len(NAMES))
+    return out
+
+
+def limit_probabilities(d: Design, n: int = 1000, seed: int = 0, specs=None,
+                        spread: float = 1.0, chunk: int = DEFAULT_CHUNK) -> dict:
+    """Probability that the built aerostat ``d`` meets its design margins and, separately, its
+    operating limits, over a seeded sample of the uncertain inputs (:data:`DEFAULT_UNCERTAINTIES`;
+    the hull volume and every design choice held).
+
+    Parameters
+    ----------
+    d : Design
+    n : int
+        Samples, valid [2, 1e7].
+    seed : int
+        Valid [0, 2^32).
+
+    Returns
+    -------
+    dict
+        ``design``, ``operating`` [-] (every row met), ``design_by_constraint``,
+        ``operating_by_constraint`` ({name: probability}), ``n``, ``seed``.
+    """
+    n = check_int("limit_probabilities", "n", n, 2, 10_000_000)
+    seed = check_int("limit_probabilities", "seed", seed, 0, 2**32 - 1)
+    specs = DEFAULT_UNCERTAINTIES if specs is None else tuple(specs)
+    req = d.requirement
+    sizes = [chunk] * (n // chunk) + ([n % chunk] if n % chunk else [])
+    seeds = np.random.SeedSequence(seed).spawn(len(sizes))
+    met = {"design": np.zeros(len(NAMES)), "operating": np.zeros(len(NAMES))}
+    every = {"design": 0, "operating": 0}
+    for s, k in zip(seeds, sizes):
+        b = limits_block(req, d.configuration, d.volume, specs, s, k, spread)
+        for key in met:
+            met[key] += b[key].sum(axis=0)
+            every[key] += int(b[key].all(axis=1).sum())
+    return {
+        "design": every["design"] / n,
+        "operating": every["operating"] / n,
+        "design_by_constraint": {nm: float(met["design"][i] / n) for i, nm in enumerate(NAMES)},
+        "operating_by_constraint": {nm: float(met["operating"][i] / n)
+                                    for i, nm in enumerate(NAMES)},
+        "n": n,
+        "seed": seed,
+    }

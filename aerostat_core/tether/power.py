@@ -3,7 +3,10 @@
 Onboard: the battery stores the payload energy over the time between recharges. Through the
 tether: a go-and-return pair of copper conductors, sized for a supply voltage and an allowed
 resistive loss (with a current-density ceiling), is bundled with the strength member; it adds
-mass per metre, diameter (drag) and some strength.
+mass per metre and diameter (drag), and no strength: the breaking load is the strength member's
+alone (copper yields at a strain of ~0.1-0.2 %, long before an aramid or UHMWPE member breaks at
+2-4 %, so at the member's breaking load the copper has long stopped carrying its share; docs/methods.md
+§1.18).
 
 No power or electro-optic tether product with a published mass per metre, diameter and
 breaking load was found (docs/methods.md §1.14, S18): the catalogue's power tethers are
@@ -74,7 +77,8 @@ class Conductors:
     area : copper cross-section of one conductor [m2]; diameter : its bare diameter [m];
     insulated_diameter [m]; current [A]; supply_power : power at the ground [W]; loss : resistive
     loss in the pair [W]; loop_resistance [ohm]; linear_density : added mass per metre, copper +
-    insulation of both conductors [kg/m]; strength : added breaking load [N].
+    insulation of both conductors [kg/m]; strength : the copper's own load at yield [N]
+    (reported, not added to the tether's breaking load: see :func:`power_tether`).
     """
 
     area: float
@@ -102,8 +106,8 @@ def size_conductors(
     I^2 R = eps P_s, so the loop resistance is R = eps V_s^2/P_s and one conductor's area is
     A = 2 rho_Cu L / R = 2 rho_Cu L P_s/(eps V_s^2), raised if needed so that I/A <= J_max
     (then the current that delivers P, from P = V_s I - I^2 R, and the loss are smaller).
-    Mass per metre 2 (A rho_Cu + A_ins rho_ETFE); strength 2 A sigma_y,Cu (copper at its yield
-    when the strength member breaks).
+    Mass per metre 2 (A rho_Cu + A_ins rho_ETFE); strength 2 A sigma_y,Cu (the copper's load at
+    yield: reported for the record, never counted in the tether's breaking load).
 
     .. math::
 
@@ -204,8 +208,12 @@ def power_tether(base: TetherSpec, k: Conductors) -> TetherSpec:
     Valid for a round bundle of the same total cross-section. Source: docs/methods.md §1.14.
 
     d = sqrt(d_base^2 + 2 d_ins^2) (a round bundle of the same total cross-section);
-    mass per metre and breaking load add; the axial stiffness is the strength member's (copper
-    past yield adds little). ``k.area == 0`` returns ``base`` unchanged.
+    mass per metre adds; the breaking load is the strength member's alone: copper yields at a
+    strain of about 0.1-0.2 % (sigma_y / E = 70 MPa / 117 GPa for annealed copper), an aramid or
+    UHMWPE member breaks at 2-4 %, so when the member reaches its breaking load the copper has
+    long yielded, and conductors that have yielded lose their conductivity and fatigue life:
+    counting them is unconservative (issue 22 item 6). The axial stiffness is the strength
+    member's too. ``k.area == 0`` returns ``base`` unchanged.
     """
     if k.area <= 0.0:
         return base
@@ -216,5 +224,5 @@ def power_tether(base: TetherSpec, k: Conductors) -> TetherSpec:
         name=name,
         linear_density=base.linear_density + k.linear_density,
         diameter=d,
-        breaking_strength=base.breaking_strength + k.strength,
+        breaking_strength=base.breaking_strength,
     )
