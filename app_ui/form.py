@@ -14,6 +14,7 @@ from typing import Any
 import streamlit as st
 
 from aerostat_core import FABRICS, TETHERS
+from app_ui import cache
 
 from .form_model import (
     CHOICES,
@@ -35,7 +36,7 @@ from .form_model import (
     build_inputs,
     widget_values,
 )
-from .state import DESIGN_KEY, init_state, set_current_inputs
+from .state import DESIGN_KEY, init_state
 from .text import plain
 
 
@@ -63,7 +64,9 @@ def _on_submit() -> None:
         s[ERROR_KEY] = {"group": exc.group, "text": str(exc), "key": exc.key}
         return
     s.pop(ERROR_KEY, None)
-    set_current_inputs(req, cfg, s)  # written through to the workspace store
+    # The frozen inputs are built here, once; the page, the cache and the plots read these
+    # objects (the dict beside them is for the workspace store and the widgets).
+    cache.set_current(req, cfg, s)
     sync_widgets(s, force=True)  # show the canonical values (catalogue materials, rounding)
 
 

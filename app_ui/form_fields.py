@@ -181,13 +181,18 @@ class Choice:
     group: str
     options: Mapping[str, str]
 
+    @cached_property
+    def entry(self) -> PathSpec:
+        """The registry entry (looked up once: the form draws every choice on every run)."""
+        return spec_for_path(self.path)
+
     @property
     def label(self) -> str:
-        return spec_for_path(self.path).label
+        return self.entry.label
 
     @property
     def help(self) -> str:
-        return spec_for_path(self.path).spec.help
+        return self.entry.spec.help
 
 
 CHOICES: dict[str, Choice] = {

@@ -192,50 +192,16 @@ def _tether_tab(rep: DesignReport) -> None:
     )
 
 
-col_in, col_out = st.columns([1, 2.7], gap="large")
+# --- results ---------------------------------------------------------------------------------
+# A fragment: a tab switch, the case form and the tether speeds rerun the results alone, not the
+# input form (half of a full run's script time and elements); "Update design" reruns the page.
 
-# --- inputs ------------------------------------------------------------------------------------
-with col_in:
-    st.subheader("Inputs", anchor=False)
-    st.button(
-        "Load thesis baseline",
-        on_click=_load_baseline,
-        icon=":material/restart_alt:",
-        help="10 kg payload at 300 m, 170 m³ NPL hull with fineness ratio 4.0, thesis "
-        "constants (helium 0.169 kg/m³, 130 g/m² fabric, 20 g/m tether).",
-    )
-    with st.expander("Design file: export / import", icon=":material/folder_open:"):
-        req_cur, cfg_cur = state.current_inputs()
-        st.download_button(
-            "Download design inputs (JSON)",
-            data=design_to_json(req_cur, cfg_cur),
-            file_name="aerostat-design.json",
-            mime="application/json",
-            on_click="ignore",
-            icon=":material/download:",
-            key="dl_design_json",
-            help="Every input, including those not shown in the form. Upload it again to "
-            "restore the design.",
-        )
-        st.file_uploader(
-            "Upload a design or cases file (JSON)",
-            type=["json"],
-            key="design_upload",
-            on_change=_on_upload,
-            help="A design file replaces the current inputs; a cases file adds saved cases. "
-            "A file with a problem changes nothing.",
-        )
-    import_box = st.container()  # always present: the form below keeps its place
-    fb = state.pop_import_feedback("design")  # shown once: never next to a later file
-    if fb:
-        with import_box:
-            show.feedback(fb["level"], fb["text"])
-    form.input_form()
 
-# --- results -----------------------------------------------------------------------------------
-with col_out:
+@st.fragment
+def _results() -> None:
     try:
-        rep = cache.cached_report(state.current_inputs_key())
+        frozen = cache.current_inputs()  # built once by the form; no JSON on the way
+        rep = cache.report_of(*frozen)
     except Exception as exc:  # noqa: BLE001 - never show a traceback
         st.error(
             f"The design could not be evaluated with these inputs: {exc}", icon=":material/error:"
@@ -318,9 +284,7 @@ with col_out:
         help="Breaking strength of the tether / largest tension along the tether; required "
         f"{lim.min_safety_factor:g} (the delta is the margin).",
     )
-    c[4].metric(
-        "Gas cost [USD]", _fmt(s.gas_cost_USD, "gas_cost"), help="Hull volume × gas price."
-    )
+    c[4].metric("Gas cost [USD]", _fmt(s.gas_cost_USD, "gas_cost"), help="Hull volume × gas price.")
 
     if rep.feasible:
         st.success(
@@ -394,10 +358,56 @@ with col_out:
             _tether_tab(rep)
     with tabs["Mission"]:
         if tabs["Mission"].open:
-            mission_view.render(cache.cached_design(state.current_inputs_key()))
+            mission_view.render(cache.design_of(*frozen))
     with tabs["Envelope"]:
         if tabs["Envelope"].open:
             envelope_view.render(state.current_inputs_key(), rep)
+
+
+col_in, col_out = st.columns([1, 2.7], gap="large")
+# The results are drawn first (the columns keep their places): their messages reach the browser
+# before the form's 60 widgets, so the first result paints while the form is still arriving.
+with col_out:
+    _results()
+
+# --- inputs ------------------------------------------------------------------------------------
+with col_in:
+    st.subheader("Inputs", anchor=False)
+    st.button(
+        "Load thesis baseline",
+        on_click=_load_baseline,
+        icon=":material/restart_alt:",
+        help="10 kg payload at 300 m, 170 m³ NPL hull with fineness ratio 4.0, thesis "
+        "constants (helium 0.169 kg/m³, 130 g/m² fabric, 20 g/m tether).",
+    )
+    with st.expander("Design file: export / import", icon=":material/folder_open:"):
+        req_cur, cfg_cur = state.current_inputs()
+        st.download_button(
+            "Download design inputs (JSON)",
+            data=design_to_json(req_cur, cfg_cur),
+            file_name="aerostat-design.json",
+            mime="application/json",
+            on_click="ignore",
+            icon=":material/download:",
+            key="dl_design_json",
+            help="Every input, including those not shown in the form. Upload it again to "
+            "restore the design.",
+        )
+        st.file_uploader(
+            "Upload a design or cases file (JSON)",
+            type=["json"],
+            key="design_upload",
+            on_change=_on_upload,
+            help="A design file replaces the current inputs; a cases file adds saved cases. "
+            "A file with a problem changes nothing.",
+        )
+    import_box = st.container()  # always present: the form below keeps its place
+    fb = state.pop_import_feedback("design")  # shown once: never next to a later file
+    if fb:
+        with import_box:
+            show.feedback(fb["level"], fb["text"])
+    form.input_form()
+
 
 # Last element: the chart and grid code loads while the user reads the first result.
 preload.warm_bundles()
