@@ -23,7 +23,7 @@ solution is the nested optimum: V = V*(x_opt). The Pareto front (:mod:`.pareto`)
 formulation with the blow-by limit varied.
 
 The volume's unit coordinate is logarithmic over the sizing range [2, 2e4] m3
-(:data:`aerostat_core.sizing.VOLUME_MIN`, :data:`~aerostat_core.sizing.VOLUME_MAX`).
+(:data:`aerostat_core.model.sizing.VOLUME_MIN`, :data:`~aerostat_core.model.sizing.VOLUME_MAX`).
 """
 
 from __future__ import annotations
@@ -32,9 +32,9 @@ import math
 
 import numpy as np
 
+from aerostat_core.model.sizing import VOLUME_MAX, VOLUME_MIN
 from aerostat_core.optimize.batch import VARIABLES, DesignBatch, evaluate_designs
 from aerostat_core.optimize.problem import OptimizationProblem
-from aerostat_core.sizing import VOLUME_MAX, VOLUME_MIN
 
 _LOGV = (math.log(VOLUME_MIN), math.log(VOLUME_MAX))
 
