@@ -75,6 +75,8 @@ def _fmt(v: float, quantity: str) -> str:
 
 TABS = ("Geometry", "3-D view", "Mass", "Performance", "Tether profiles", "Mission", "Envelope")
 TAB_KEY = "design_tab"
+#: Session-state key of the Geometry tab's export section (open: True).
+EXPORTS_KEY = "design_exports"
 
 
 def _geometry_tab(rep: DesignReport) -> None:
@@ -105,8 +107,17 @@ def _geometry_tab(rep: DesignReport) -> None:
             icon=":material/download:",
             key="dl_geometry",
         )
-    st.markdown("**Build it:** STL for CAD and cutting patterns")
-    shapes_view.export_panel(state.current_inputs_key())
+    # Lazy: the files (STL, DXF, SVG, CSV of the gores) took 0.3-0.8 s to make for every new
+    # design, longer than the design itself, and were made on every "Update design".
+    build = st.expander(
+        "Build it: STL for CAD and cutting patterns",
+        key=EXPORTS_KEY,
+        on_change="rerun",
+        icon=":material/precision_manufacturing:",
+    )
+    if build.open:
+        with build:
+            shapes_view.export_panel(state.current_inputs_key())
 
 
 def _mass_tab(rep: DesignReport) -> None:
