@@ -33,3 +33,13 @@ __all__ = [
 DEPRECATED_NAMES = {"thesis_optimised": "thesis_optimized"}
 
 __getattr__ = deprecated_aliases(__name__, globals(), DEPRECATED_NAMES)
+
+# Ranges in docstrings come from the field registry: now that every input class is defined, each
+# "{range:Owner.field}" in a loaded core module's docstrings becomes the field's range
+# (base/fields.py fill_range_docs; a physics function may so quote an input of a package above).
+import sys as _sys  # noqa: E402
+
+from aerostat_core.base.fields import fill_range_docs as _fill_range_docs  # noqa: E402
+
+_fill_range_docs([_m for _n, _m in list(_sys.modules.items())
+                  if _n.startswith("aerostat_core.") and _m is not None])

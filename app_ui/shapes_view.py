@@ -23,6 +23,7 @@ from aerostat_core.model.input_paths import column_label
 from aerostat_core.output.export import design_stl, gore_csv, gore_dxf, gore_pattern, gore_svg
 from aerostat_core.studies.shape_comparison import (
     TABLE_SHAPES,
+    THESIS_SHAPE_PRESET,  # noqa: F401 - re-exported for pages/7_Shapes.py
     comparison_notes,
     full_model_shape_comparison,
     shape_dimensions_rows,

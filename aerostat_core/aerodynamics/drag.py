@@ -28,18 +28,34 @@ SPHERE_DRAG_TABLE = (
 
 
 def sphere_drag_coefficient(reynolds_d):
-    """Drag coefficient of a smooth sphere on frontal area, C_D(Re_d) (Achenbach 1972).
+    r"""Drag coefficient of a smooth sphere on frontal area, C_D(Re_d) (Achenbach 1972).
+
+    .. math::
+
+        C_D = \operatorname{interp}_{\log_{10} Re_d}\left(\text{SPHERE\_DRAG\_TABLE}\right)
 
     Parameters
     ----------
     reynolds_d : array_like
         Reynolds number on diameter [-]; valid 1e4-1e7 (clamped outside).
 
+    Returns
+    -------
+    ndarray [-]
+
     Notes
     -----
     A tethered sphere in natural (turbulent) wind measured C_D = 0.56 (Coulombe-Pontbriand &
     Nahon 2009, thesis §2.2.1(a)); pass that as ``AeroModel.hull_axial_drag`` (on V^(2/3):
-    0.56 x 1.209) to model a rough, gusty site.
+    0.56 x 1.209) to model a rough, gusty site. Source: Achenbach (1972), J. Fluid Mech. 54(3);
+    Hoerner (1965) ch. 3 for the subcritical 0.47.
+
+    Examples
+    --------
+    Subcritical 0.47 (Hoerner) and Achenbach's drag-crisis minimum about 0.09 at 4e5:
+
+    >>> float(sphere_drag_coefficient(1e5)), float(sphere_drag_coefficient(4e5))
+    (0.47, 0.09)
     """
     re = np.clip(np.asarray(reynolds_d, dtype=float), 1e4, 1e7)
     lr, cd = np.log10([r for r, _ in SPHERE_DRAG_TABLE]), [c for _, c in SPHERE_DRAG_TABLE]
@@ -47,24 +63,41 @@ def sphere_drag_coefficient(reynolds_d):
 
 
 def volumetric_drag_coefficient(shape: str, fineness_ratio, reynolds):
-    """Zero-lift hull drag coefficient on V^(2/3) versus l/d and length Reynolds number.
+    r"""Zero-lift hull drag coefficient on V^(2/3) versus l/d and length Reynolds number.
 
-    Streamlined shapes (NPL, Gertler): Hoerner's C_DV(f, Re_l) (:func:`aerostat_core.aerodynamics.forces.hoerner_volumetric_drag`).
-    Bluff shapes (sphere, oblate, Helikite hull): C_DV = C_D,sphere(Re_d) (pi d^2/4)/V^(2/3)
-    with Re_d = Re_l / f (frontal area of the spheroid; Achenbach 1972 for the sphere, used for
-    spheroids of l/d 0.5-1.6 as Hoerner 1965 ch. 3 shows supercritical ellipsoid drag of the
-    same order).
+    .. math::
+
+        C_{DV} = \begin{cases}
+        C_{DV}^{Hoerner}(f, Re_l) & \text{streamlined (NPL, Gertler, GNVR)} \\
+        C_{D,sphere}(Re_l/f)\, \dfrac{\pi/4}{\left(\pi f/6\right)^{2/3}} & \text{bluff (sphere,
+        oblate, Helikite hull)}
+        \end{cases}
+
+    (the bluff ratio is the frontal area pi d^2/4 of a spheroid of l/d = f over V^(2/3)).
 
     Parameters
     ----------
     shape : str
+        A name of ``SHAPES``.
     fineness_ratio : array_like
-        l/d [-].
+        l/d [-], valid in the shape's range.
     reynolds : array_like
-        Reynolds number on hull length [-].
+        Reynolds number on hull length [-]; valid as :func:`hoerner_volumetric_drag` or
+        :func:`sphere_drag_coefficient`.
+
+    Returns
+    -------
+    ndarray [-]
+
+    Notes
+    -----
+    Source: Hoerner (1965) ch. 6 (streamlined) and ch. 3 (supercritical ellipsoid drag of the same
+    order as the sphere's); Achenbach (1972) for the sphere; docs/methods.md §1.7, §1.13.
 
     Examples
     --------
+    The sphere at Re 5e6: 0.20 x (pi/4)/(pi/6)^(2/3) = 0.20 x 1.2090 = 0.242 (by hand):
+
     >>> round(float(volumetric_drag_coefficient("npl", 4.0, 1.72e7)), 4)
     0.0215
     >>> round(float(volumetric_drag_coefficient("sphere", 1.0, 5e6)), 3)

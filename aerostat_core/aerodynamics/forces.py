@@ -19,7 +19,11 @@ from aerostat_core.base.fields import choice, number, validate
 
 
 def reynolds_number(density, speed, length, viscosity):
-    """Length-based Reynolds number Re = rho V l / mu, floored at ``MIN_REYNOLDS``.
+    r"""Length-based Reynolds number, floored at ``MIN_REYNOLDS``.
+
+    .. math::
+
+        Re = \max\left(\frac{\rho |V| l}{\mu}, Re_{min}\right)
 
     Parameters
     ----------
@@ -32,18 +36,33 @@ def reynolds_number(density, speed, length, viscosity):
     viscosity : array_like
         Dynamic viscosity [Pa s].
 
+    Returns
+    -------
+    ndarray [-]
+
     Notes
     -----
-    The floor only matters as V -> 0, where the dynamic pressure (and so the drag) is zero.
+    Valid for any speed; the floor only matters as V -> 0, where the dynamic pressure (and so the
+    drag) is zero. Source: definition (e.g. Hoerner 1965 ch. 1); docs/methods.md §1.7.
+
+    Examples
+    --------
+    10 m at 10 m/s in ISA sea-level air (mu = 1.7894e-5 Pa s): 1.225 x 100/1.7894e-5 = 6.846e6
+    (by hand):
+
+    >>> round(float(reynolds_number(1.225, 10.0, 10.0, 1.7894e-5)) / 1e6, 3)
+    6.846
     """
     re = np.asarray(density) * np.abs(speed) * np.asarray(length) / np.asarray(viscosity)
     return np.maximum(re, MIN_REYNOLDS)
 
 
 def hoerner_volumetric_drag(fineness_ratio, reynolds):
-    """Zero-lift volumetric drag coefficient of a streamlined body (Hoerner).
+    r"""Zero-lift volumetric drag coefficient of a streamlined body (Hoerner), on V^(2/3).
 
-    C_DV = [0.172 f^(1/3) + 0.252 f^(-1.2) + 1.032 f^(-2.7)] / Re^(1/6), on V^(2/3), Re on length.
+    .. math::
+
+        C_{DV} = \frac{0.172 f^{1/3} + 0.252 f^{-1.2} + 1.032 f^{-2.7}}{Re_l^{1/6}}
 
     Parameters
     ----------
@@ -52,12 +71,18 @@ def hoerner_volumetric_drag(fineness_ratio, reynolds):
     reynolds : array_like
         Length Reynolds number [-], valid about 1e6-1e9 (turbulent boundary layer).
 
+    Returns
+    -------
+    ndarray [-]
+
     Notes
     -----
     Source: Hoerner, *Fluid-Dynamic Drag* (1965) ch. 6; docs/methods.md §1.7 (confirmed in S5).
 
     Examples
     --------
+    l/d 4 at Re 1.72e7: (0.2730 + 0.0477 + 0.0245)/16.07 = 0.0215 (by hand):
+
     >>> round(float(hoerner_volumetric_drag(4.0, 1.72e7)), 4)
     0.0215
     """
@@ -67,11 +92,15 @@ def hoerner_volumetric_drag(fineness_ratio, reynolds):
 
 
 def hull_inviscid(q, alpha, dk, eta_k, i1, i3):
-    """Potential-flow (Munk-type) hull terms of Jones & DeLaurier.
+    r"""Potential-flow (Munk-type) hull terms of Jones & DeLaurier.
 
-    N = q (k3 - k1) eta_k I1 sin 2alpha cos(alpha/2)
-    A = -q (k3 - k1) eta_k I1 sin 2alpha sin(alpha/2)
-    M = q (k3 - k1) eta_k I3 sin 2alpha cos(alpha/2)       (about the station used for I3)
+    .. math::
+
+        N = q (k_3 - k_1) \eta_k I_1 \sin 2\alpha \cos\frac{\alpha}{2}, \quad
+        A = -q (k_3 - k_1) \eta_k I_1 \sin 2\alpha \sin\frac{\alpha}{2}, \quad
+        M = q (k_3 - k_1) \eta_k I_3 \sin 2\alpha \cos\frac{\alpha}{2}
+
+    (the moment about the station used for I3).
 
     Parameters
     ----------
@@ -82,13 +111,25 @@ def hull_inviscid(q, alpha, dk, eta_k, i1, i3):
     dk : array_like
         k3 - k1, Lamb transverse minus axial factor [-].
     eta_k : float
-        Hull efficiency factor [-].
+        Hull efficiency factor [-], valid {range:AeroModel.hull_efficiency}.
     i1, i3 : array_like
         Shape integrals [m2], [m3] (:func:`aerostat_core.geometry.hull.shape_integrals`).
 
     Returns
     -------
     N [N], A [N], M [N m]
+
+    Notes
+    -----
+    Source: Jones & DeLaurier (1983), docs/methods.md §1.7 (S1, S6).
+
+    Examples
+    --------
+    At 45 deg, sin 2 alpha = 1: N = 100 x 0.8 x 2 cos(22.5 deg) = 147.82 N (by hand):
+
+    >>> n, a, m = hull_inviscid(100.0, np.radians(45.0), 0.8, 1.0, 2.0, 3.0)
+    >>> round(float(n), 2), round(float(m), 2)
+    (147.82, 221.73)
     """
     s2 = np.sin(2.0 * alpha)
     base = q * dk * eta_k * s2
@@ -98,20 +139,38 @@ def hull_inviscid(q, alpha, dk, eta_k, i1, i3):
 
 
 def hull_crossflow(q, alpha, cdc, j1, j2):
-    """Viscous cross-flow hull terms of Jones & DeLaurier.
+    r"""Viscous cross-flow hull terms of Jones & DeLaurier.
 
-    N = q (C_dc)_h J1 sin alpha |sin alpha|,   M = q (C_dc)_h J2 sin alpha |sin alpha|.
+    .. math::
+
+        N = q\, (C_{dc})_h J_1 \sin\alpha |\sin\alpha|, \qquad
+        M = q\, (C_{dc})_h J_2 \sin\alpha |\sin\alpha|
 
     Parameters
     ----------
     q : array_like
         Dynamic pressure [Pa].
     alpha : array_like
-        Angle of attack [rad].
+        Angle of attack [rad], valid |alpha| <= 90 deg.
     cdc : float
-        Cross-flow drag coefficient [-].
+        Cross-flow drag coefficient [-], valid {range:AeroModel.hull_crossflow_drag}.
     j1, j2 : array_like
         Planform area [m2] and its first moment about the reference station [m3].
+
+    Returns
+    -------
+    N [N], M [N m]
+
+    Notes
+    -----
+    Source: Jones & DeLaurier (1983), docs/methods.md §1.7 (S1).
+
+    Examples
+    --------
+    Broadside (alpha = 90 deg) the hull is a plate of drag C_dc J1: 100 x 0.32 x 10 = 320 N:
+
+    >>> [float(v) for v in hull_crossflow(100.0, np.pi / 2, 0.32, 10.0, 5.0)]
+    [320.0, 160.0]
     """
     s = np.sin(alpha)
     k = q * cdc * s * np.abs(s)
@@ -119,44 +178,74 @@ def hull_crossflow(q, alpha, cdc, j1, j2):
 
 
 def hull_axial(q, alpha, cd0, reference_area):
-    """Axial (zero-lift) hull drag A = q C_D0 V^(2/3) cos^2 alpha [N].
+    r"""Axial (zero-lift) hull drag [N].
+
+    .. math::
+
+        A = q\, C_{D0} V^{2/3} \cos^2\alpha
 
     Parameters
     ----------
-    q : array_like [Pa]
-    alpha : array_like [rad]
+    q : array_like
+        Dynamic pressure [Pa].
+    alpha : array_like
+        Angle of attack [rad], valid |alpha| <= 90 deg.
     cd0 : array_like
-        Volumetric drag coefficient [-] (Hoerner or a given value).
+        Volumetric drag coefficient [-] (Hoerner or a given value, valid
+        {range:AeroModel.hull_axial_drag}).
     reference_area : array_like
         V^(2/3) [m2].
+
+    Returns
+    -------
+    ndarray [N]
+
+    Notes
+    -----
+    Source: Jones & DeLaurier (1983) axial term, docs/methods.md §1.7 (S1).
+
+    Examples
+    --------
+    At 60 deg, cos^2 = 1/4: 100 x 0.02 x 20/4 = 10 N (by hand):
+
+    >>> round(float(hull_axial(100.0, np.pi / 3, 0.02, 20.0)), 9)
+    10.0
     """
     return q * cd0 * reference_area * np.cos(alpha) ** 2
 
 
 def fin_lift_drag(q, alpha, lift_slope, efficiency, stall_angle, lifting_area, total_area,
                   cd0, aspect_ratio, oswald):
-    """Fin lift and drag in wind axes.
+    r"""Fin lift and drag in wind axes.
 
-    C_L = eta_f C_L_alpha clip(alpha, -alpha_s, alpha_s) (held flat past stall),
-    L = q S_lift C_L;  D = q [C_D0 S_total + S_lift C_L^2/(pi e AR)].
+    .. math::
+
+        C_L = \eta_f C_{L_\alpha} \operatorname{clip}(\alpha, -\alpha_s, \alpha_s), \qquad
+        L = q S_{lift} C_L, \qquad
+        D = q \left[C_{D0} S_{total} + S_{lift} \frac{C_L^2}{\pi e A}\right]
+
+    (the lift held flat past stall).
 
     Parameters
     ----------
-    q : array_like [Pa]
+    q : array_like
+        Dynamic pressure [Pa].
     alpha : array_like
         Angle of attack at the fins [rad].
     lift_slope : array_like
         3-D C_L_alpha of the fin pair [1/rad].
     efficiency : float
-        eta_f [-].
+        eta_f [-], valid {range:AeroModel.fin_efficiency}.
     stall_angle : float
-        [rad].
+        alpha_s [rad].
     lifting_area, total_area : array_like
         Horizontal projected planform of the lifting fins and planform of all fins [m2].
     cd0 : float
-        Zero-lift drag coefficient on planform [-].
-    aspect_ratio, oswald : array_like
-        Pair aspect ratio [-] and span efficiency [-].
+        Zero-lift drag coefficient on planform [-], valid {range:AeroModel.fin_zero_lift_drag}.
+    aspect_ratio : array_like
+        Pair aspect ratio A [-].
+    oswald : array_like
+        Span efficiency e [-].
 
     Returns
     -------
@@ -164,7 +253,16 @@ def fin_lift_drag(q, alpha, lift_slope, efficiency, stall_angle, lifting_area, t
 
     Notes
     -----
-    Sources: DATCOM/Raymer (docs/methods.md §1.7, S11).
+    Valid below stall (above it, the lift is only held). Sources: DATCOM/Raymer
+    (docs/methods.md §1.7, S11).
+
+    Examples
+    --------
+    C_L = 2.6 x 0.1 = 0.26: L = 100 x 2 x 0.26 = 52 N,
+    D = 100 (0.005 x 4 + 2 x 0.26^2/(pi 0.9 x 2)) = 4.391 N (by hand):
+
+    >>> [round(float(v), 3) for v in fin_lift_drag(100.0, 0.1, 2.6, 1.0, 0.3, 2.0, 4.0, 0.005, 2.0, 0.9)]
+    [52.0, 4.391]
     """
     cl = efficiency * lift_slope * np.clip(alpha, -stall_angle, stall_angle)
     lift = q * lifting_area * cl
@@ -173,14 +271,67 @@ def fin_lift_drag(q, alpha, lift_slope, efficiency, stall_angle, lifting_area, t
 
 
 def wind_to_body(lift, drag, alpha):
-    """Normal and axial body-axis components of a (lift, drag) pair: N = L cos a + D sin a,
-    A = D cos a - L sin a."""
+    r"""Normal and axial body-axis components of a (lift, drag) pair.
+
+    .. math::
+
+        N = L \cos\alpha + D \sin\alpha, \qquad A = D \cos\alpha - L \sin\alpha
+
+    Parameters
+    ----------
+    lift, drag : array_like
+        Lift and drag [N].
+    alpha : array_like
+        Angle of attack [rad].
+
+    Returns
+    -------
+    N, A : ndarray [N]
+
+    Notes
+    -----
+    Valid for any alpha (a rotation). Source: docs/methods.md §1 (frames and sign conventions).
+
+    Examples
+    --------
+    At 90 deg the lift is axial, forwards:
+
+    >>> [round(float(v), 12) for v in wind_to_body(1.0, 0.0, np.pi / 2)]
+    [0.0, -1.0]
+    """
     ca, sa = np.cos(alpha), np.sin(alpha)
     return lift * ca + drag * sa, drag * ca - lift * sa
 
 
 def body_to_wind(normal, axial, alpha):
-    """Lift and drag of body-axis (N, A): L = N cos a - A sin a, D = N sin a + A cos a."""
+    r"""Lift and drag of body-axis (N, A), the inverse of :func:`wind_to_body`.
+
+    .. math::
+
+        L = N \cos\alpha - A \sin\alpha, \qquad D = N \sin\alpha + A \cos\alpha
+
+    Parameters
+    ----------
+    normal, axial : array_like
+        Normal and axial force [N].
+    alpha : array_like
+        Angle of attack [rad].
+
+    Returns
+    -------
+    L, D : ndarray [N]
+
+    Notes
+    -----
+    Valid for any alpha (a rotation). Source: docs/methods.md §1 (frames and sign conventions).
+
+    Examples
+    --------
+    The round trip returns the pair:
+
+    >>> [round(float(v), 12) for v in body_to_wind(*wind_to_body(3.0, 4.0, 0.3), 0.3)]
+    [3.0, 4.0]
+    """
     ca, sa = np.cos(alpha), np.sin(alpha)
     return normal * ca - axial * sa, normal * sa + axial * ca
 
@@ -196,23 +347,23 @@ class AeroModel:
     Parameters
     ----------
     hull_efficiency : float
-        eta_k on the inviscid (potential-flow) hull term [-], valid [0, 2].
+        eta_k on the inviscid (potential-flow) hull term [-], valid {range:AeroModel.hull_efficiency}.
     hull_crossflow_drag : float
-        (C_dc)_h, viscous cross-flow drag coefficient [-], valid [0, 2].
+        (C_dc)_h, viscous cross-flow drag coefficient [-], valid {range:AeroModel.hull_crossflow_drag}.
     hull_axial_drag : float or None
-        Zero-alpha hull drag on V^(2/3) [-], valid [0, 1]; ``None`` uses Hoerner's C_DV(f, Re).
+        Zero-alpha hull drag on V^(2/3) [-], valid {range:AeroModel.hull_axial_drag}; ``None`` uses Hoerner's C_DV(f, Re).
     cutoff : {"fin", "tail"}
         Station l_h where the potential-flow term is cut off: the fin root leading edge (thesis
         symbol list "l_h: distance of fin from nose") or the tail, where the NPL profile tapers
         fastest (max -dA/dxi); "tail" gives I1 = 0 and the full Munk moment.
     fin_efficiency : float
-        eta_f on the 3-D fin lift slope [-], valid [0, 1.5].
+        eta_f on the 3-D fin lift slope [-], valid {range:AeroModel.fin_efficiency}.
     section_lift_slope : float
-        Fin section lift slope C_l_alpha [1/rad], valid [1, 7].
+        Fin section lift slope C_l_alpha [1/rad], valid {range:AeroModel.section_lift_slope}.
     fin_zero_lift_drag : float
-        C_D0 of the fins on planform area [-], valid [0, 0.1].
+        C_D0 of the fins on planform area [-], valid {range:AeroModel.fin_zero_lift_drag}.
     fin_stall_angle_deg : float
-        Fin stall angle [deg], valid [5, 40]; the fin lift is held flat beyond it.
+        Fin stall angle [deg], valid {range:AeroModel.fin_stall_angle_deg}; the fin lift is held flat beyond it.
     """
 
     hull_efficiency: float = number(

@@ -40,16 +40,37 @@ def kite_coefficients(
     aspect_ratio: float = c.HELIKITE_KITE_ASPECT_RATIO,
     incidence_deg: float = c.HELIKITE_KITE_INCIDENCE_DEG,
 ):
-    """Kite lift and induced-drag coefficients (C_L, C_D) on sail area [-].
+    r"""Kite lift and induced-drag coefficients (C_L, C_D) on sail area [-].
 
-    C_L = C_L_alpha alpha_k with Helmbold's slope for an unswept sail of aspect ratio AR and
-    section slope 2 pi; C_D = C_L^2/(pi e AR). Valid for alpha_k below stall (about 20 deg for
-    AR 1-2, docs/methods.md §1.7).
+    Helmbold's slope for an unswept sail of section slope 2 pi:
+
+    .. math::
+
+        C_L = C_{L_\alpha}(A)\, \alpha_k, \qquad C_D = \frac{C_L^2}{\pi e A}
+
+    Parameters
+    ----------
+    aspect_ratio : float
+        Sail aspect ratio A [-] (ASSUMED 1.5, constants.HELIKITE_KITE_ASPECT_RATIO).
+    incidence_deg : float
+        Bridle incidence alpha_k [deg] (ASSUMED 15).
+
+    Returns
+    -------
+    C_L, C_D : float [-]
+
+    Notes
+    -----
+    Valid for alpha_k below stall (about 20 deg for AR 1-2, docs/methods.md §1.7).
+    Source: DATCOM/Helmbold and Raymer's Oswald fit (S11); the module docstring.
 
     Examples
     --------
+    A = 1.5, 15 deg: 3 pi/(2 + 2.5) x 0.2618 = 0.548; e = 0.95 (clamped), C_D = 0.548^2/(pi x
+    0.95 x 1.5) = 0.067 (by hand):
+
     >>> [round(float(x), 3) for x in kite_coefficients()]
-    [0.548, 0.07]
+    [0.548, 0.067]
     """
     cla = helmbold_lift_slope(aspect_ratio, 0.0, 2.0 * np.pi)
     cl = cla * np.radians(incidence_deg)
@@ -58,9 +79,33 @@ def kite_coefficients(
 
 
 def reference_sail_ratio() -> float:
-    """Sail area / V^(2/3) [-] that gives Table 2.2's 48 kg of dynamic lift at 15 m/s, 300 m.
+    r"""Sail area / V^(2/3) [-] that gives Table 2.2's 48 kg of dynamic lift at 15 m/s, 300 m.
 
-    S_k = m_L g / (q_ref C_L), q_ref = rho_ISA(300 m) 15^2 / 2, over V_ref^(2/3) (100 m3).
+    .. math::
+
+        S_k = \frac{m_L g}{q_{ref} C_L}, \quad q_{ref} = \tfrac12 \rho_{ISA}(300\,\mathrm{m})\, 15^2,
+        \qquad \text{ratio} = \frac{S_k}{V_{ref}^{2/3}}, \; V_{ref} = 100\ \mathrm{m^3}
+
+    Parameters
+    ----------
+    (none)
+
+    Returns
+    -------
+    float [-]
+
+    Notes
+    -----
+    Valid for the Helikite's assumed sail (AR, incidence); a CALIBRATION to one published
+    figure. Source: thesis Table 2.2 (Allsopp Helikites "Aerostar"); docs/methods.md §1.13.
+
+    Examples
+    --------
+    q_ref = 0.5 x 1.1901 x 225 = 133.89 Pa; S_k = 48 x 9.80665/(133.89 x 0.5483) = 6.412 m2, over
+    100^(2/3) = 21.544 (by hand):
+
+    >>> round(reference_sail_ratio(), 4)
+    0.2976
     """
     cl, _ = kite_coefficients()
     q = 0.5 * float(isa(c.HELIKITE_REF_ALTITUDE).density) * c.HELIKITE_REF_WIND**2
@@ -80,8 +125,35 @@ class KiteGeometry:
 
 
 def kite_geometry(volume) -> KiteGeometry:
-    """Kite of a Helikite of hull volume ``volume`` [m3]: S_k = ratio V^(2/3),
-    m_k = 11.38 kg (S_k / S_k,ref) (Table 2.2 reference, scaled by sail area)."""
+    r"""Kite of a Helikite of hull volume ``volume``.
+
+    .. math::
+
+        S_k = \text{ratio}\; V^{2/3}, \qquad m_k = 11.38\,\mathrm{kg}\; \frac{S_k}{S_{k,ref}}
+
+    (geometric similarity from the Table 2.2 reference, mass scaled by sail area).
+
+    Parameters
+    ----------
+    volume : array_like
+        Hull volume V [m3], valid {range:HullSpec.volume}.
+
+    Returns
+    -------
+    KiteGeometry
+
+    Notes
+    -----
+    Source: thesis Table 2.2; :func:`reference_sail_ratio`.
+
+    Examples
+    --------
+    At the reference 100 m3 the kite is Table 2.2's 11.38 kg:
+
+    >>> k = kite_geometry(100.0)
+    >>> round(float(k.mass), 2), round(float(k.area), 3)
+    (11.38, 6.412)
+    """
     ratio = reference_sail_ratio()
     area = ratio * np.asarray(volume, dtype=float) ** (2.0 / 3.0)
     ref_area = ratio * c.HELIKITE_REF_VOLUME ** (2.0 / 3.0)
@@ -95,15 +167,74 @@ def kite_geometry(volume) -> KiteGeometry:
 
 
 def kite_lift_drag(q, kite: KiteGeometry):
-    """Kite lift (up, perpendicular to the wind) and drag (along it) [N] at dynamic pressure
-    ``q`` [Pa]: L = q S_k C_L, D = q S_k C_D."""
+    r"""Kite lift (up, perpendicular to the wind) and drag (along it) [N].
+
+    .. math::
+
+        L = q S_k C_L, \qquad D = q S_k C_D
+
+    Parameters
+    ----------
+    q : array_like
+        Dynamic pressure [Pa].
+    kite : KiteGeometry
+        The kite.
+
+    Returns
+    -------
+    L, D : ndarray [N]
+
+    Notes
+    -----
+    Valid below the sail's stall. Source: the module docstring (thesis §2.2.1).
+
+    Examples
+    --------
+    At the reference dynamic pressure the lift is Table 2.2's 48 kgf = 470.7 N:
+
+    >>> from aerostat_core.atmosphere.standard import isa
+    >>> q = 0.5 * float(isa(300.0).density) * 15.0**2
+    >>> round(float(kite_lift_drag(q, kite_geometry(100.0))[0]), 1)
+    470.7
+    """
     q = np.asarray(q, dtype=float)
     return q * kite.area * kite.lift_coefficient, q * kite.area * kite.drag_coefficient
 
 
 def helikite_limits(payload_mass: float, altitude: float, wind: float) -> list[str]:
-    """Plain-language list of the Table 2.1 Helikite limits a requirement exceeds
-    (payload [kg], altitude [m], wind [m/s]); empty when within them."""
+    r"""Plain-language list of the Table 2.1 Helikite limits a requirement exceeds; empty when within
+    them.
+
+    .. math::
+
+        m_p < m_{max}, \qquad h \le h_{max}, \qquad U \le U_{max}
+
+    with the limits of constants.HELIKITE_MAX_PAYLOAD, _ALTITUDE and _WIND (30 kg, about
+    2 km, 25 m/s in Table 2.1).
+
+    Parameters
+    ----------
+    payload_mass : float
+        Payload [kg].
+    altitude : float
+        Operating altitude [m].
+    wind : float
+        Design wind [m/s].
+
+    Returns
+    -------
+    list of str
+
+    Notes
+    -----
+    Valid for the Helikite of Table 2.1 (limits from constants.HELIKITE_MAX_*).
+    Source: thesis Table 2.1.
+
+    Examples
+    --------
+    >>> helikite_limits(35.0, 300.0, 10.0)
+    ['payload 35 kg is not below the Helikite limit 30 kg (thesis Table 2.1)']
+    """
     out = []
     if payload_mass >= c.HELIKITE_MAX_PAYLOAD:
         out.append(

@@ -11,19 +11,28 @@ from aerostat_core.base.fields import choice, number, validate
 
 
 def gas_density(gas: LiftingGas, pressure, temperature):
-    """Density of the (impure) lifting gas in the hull [kg/m3].
+    r"""Density of the (impure) lifting gas in the hull [kg/m3].
 
-    Ideal model: rho_pure = (P + dP) M_gas/(R_u T); rho = k rho_pure + (1 - k) (P + dP)/(R_air T)
-    (purity k as a volume fraction; the impurity is air at hull pressure).
-    Fixed model: the constant of ``gas.fixed_density_value`` (thesis: 0.169 kg/m3 for helium).
+    Ideal model: the pure gas at hull pressure and ambient temperature, mixed by volume with air
+    at the same state:
+
+    .. math::
+
+        \rho_{pure} = \frac{(P + \Delta P)\, M_{gas}}{R_u T}, \qquad
+        \rho = k\, \rho_{pure} + (1 - k) \frac{P + \Delta P}{R_{air} T}
+
+    with the purity k = ``gas.purity``, valid {range:LiftingGas.purity}, and the superpressure
+    dP = ``gas.superpressure``, valid {range:LiftingGas.superpressure}. Fixed model: the constant
+    ``gas.fixed_density_value`` (thesis: 0.169 kg/m3 for helium).
 
     Parameters
     ----------
     gas : LiftingGas
+        Kind, purity, superpressure and density model.
     pressure : array_like
-        Ambient pressure [Pa].
+        Ambient pressure P [Pa], > 0.
     temperature : array_like
-        Ambient (and gas) temperature [K]; no superheat.
+        Ambient (and gas) temperature T [K], > 0; no superheat.
 
     Returns
     -------
@@ -31,10 +40,15 @@ def gas_density(gas: LiftingGas, pressure, temperature):
 
     Notes
     -----
-    Sources: ideal-gas law; PADS (docs/methods.md S3) for purity and off-standard density.
+    Valid for an ideal gas (pressures near atmospheric, far from condensation) with the gas at
+    ambient temperature. Source: ideal-gas law; PADS (docs/methods.md §1.3, S3) for purity and
+    off-standard density.
 
     Examples
     --------
+    Pure helium at ISA sea level, P M_He/(R_u T) = 101325 x 0.0040026/(8.31446 x 288.15) =
+    0.1693 kg/m3 (by hand; the thesis rounds it to 0.169):
+
     >>> from aerostat_core.model.inputs import LiftingGas
     >>> round(float(gas_density(LiftingGas(purity=1.0), 101325.0, 288.15)), 4)
     0.1693
@@ -51,7 +65,38 @@ def gas_density(gas: LiftingGas, pressure, temperature):
 
 
 def gross_buoyancy(air_density, volume, g=c.G0):
-    """Archimedes buoyancy F_B = rho_air g V [N] (air density [kg/m3], displaced volume [m3])."""
+    r"""Archimedes buoyancy of a displaced volume [N].
+
+    .. math::
+
+        F_B = \rho_{air}\, g\, V
+
+    Parameters
+    ----------
+    air_density : array_like
+        Ambient air density [kg/m3], > 0.
+    volume : array_like
+        Displaced volume V [m3], >= 0.
+    g : float
+        Gravitational acceleration [m/s2] (standard gravity by default).
+
+    Returns
+    -------
+    ndarray [N]
+
+    Notes
+    -----
+    Valid for a body wholly immersed in air of uniform density (the density change over the
+    height of a hull, about 0.1 % per 10 m, is neglected). Source: Archimedes' principle;
+    docs/methods.md §1.3.
+
+    Examples
+    --------
+    100 m3 at the ISA sea-level density 1.225 kg/m3: 1.225 x 9.80665 x 100 = 1201.3 N (by hand):
+
+    >>> round(float(gross_buoyancy(1.225, 100.0)), 1)
+    1201.3
+    """
     return np.asarray(air_density) * g * np.asarray(volume)
 
 
@@ -68,14 +113,14 @@ class LiftingGas:
     ----------
     kind : {"helium", "hydrogen"}
     purity : float
-        Volume (mole) fraction of the lifting gas; the rest is air [-], valid (0, 1].
+        Volume (mole) fraction of the lifting gas; the rest is air [-], valid {range:LiftingGas.purity}.
     superpressure : float
-        Hull pressure above ambient [Pa], valid [0, 5000].
+        Hull pressure above ambient [Pa], valid {range:LiftingGas.superpressure}.
     density_model : {"ideal", "fixed"}
         ``"ideal"``: ideal-gas density at ambient temperature and hull pressure, mixed with air by
         purity. ``"fixed"``: a constant density (the thesis uses 0.169 kg/m3 for helium).
     fixed_density : float or None
-        Density for ``"fixed"`` [kg/m3], valid (0, 1]; ``None`` takes the thesis value of the gas.
+        Density for ``"fixed"`` [kg/m3], valid {range:LiftingGas.fixed_density}; ``None`` takes the thesis value of the gas.
     """
 
     kind: str = choice(

@@ -24,21 +24,29 @@ from aerostat_core.base import constants as c
 
 
 def permeation_time_constant(volume, area, permeability, temperature):
-    """Time constant of the purity decay tau [day].
+    r"""Time constant of the purity decay tau [day].
 
-    dk/dt = -kappa S k (T/T_0)/V, so k(t) = k_0 exp(-t/tau), tau = V T_0/(kappa S T).
+    .. math::
+
+        \frac{dk}{dt} = -\frac{\kappa S k}{V} \frac{T}{T_0}
+        \quad\Rightarrow\quad k(t) = k_0 e^{-t/\tau}, \qquad
+        \tau = \frac{V T_0}{\kappa S T}
 
     Parameters
     ----------
     volume : array_like
-        Hull volume V [m3].
+        Hull volume V [m3], > 0.
     area : array_like
-        Envelope area S [m2].
+        Envelope area S [m2], >= 0.
     permeability : float
         Helium permeability kappa [L/(m2 day atm)] at standard conditions (0 degC, 1 atm),
-        >= 0; 0 gives tau = inf.
+        >= 0 (the input field Fabric.helium_permeability bounds it further); 0 gives tau = inf.
     temperature : array_like
-        Gas temperature in the hull [K].
+        Gas temperature in the hull T [K], > 0.
+
+    Returns
+    -------
+    ndarray [day]
 
     Notes
     -----
@@ -46,6 +54,16 @@ def permeation_time_constant(volume, area, permeability, temperature):
     temperature it is kappa S k (T/T_0) (the hull pressure cancels). Valid while the outside
     helium partial pressure is nil and the fabric's permeability does not change with age
     (Lv et al. 2022 measure it falling by a factor 3-4 over 18 months of weathering).
+    Source: Fick's law with the permeability per atmosphere of partial pressure;
+    docs/methods.md §1.14, S15.
+
+    Examples
+    --------
+    100 m3 in 100 m2 of 2.5 L/(m2 day atm) fabric at 0 degC: tau = 100/(0.0025 x 100) = 400 days
+    (by hand):
+
+    >>> float(permeation_time_constant(100.0, 100.0, 2.5, 273.15))
+    400.0
     """
     kappa = float(permeability) * 1e-3  # m3/(m2 day atm)
     rate = kappa * np.asarray(area, float) * np.asarray(temperature, float) / c.STANDARD_TEMPERATURE
@@ -54,20 +72,81 @@ def permeation_time_constant(volume, area, permeability, temperature):
 
 
 def purity_after(purity0, days, tau):
-    """Helium purity after ``days`` [day] without top-up: k = k_0 exp(-t/tau) [-]."""
+    r"""Helium purity after ``days`` without top-up [-].
+
+    .. math::
+
+        k(t) = k_0\, e^{-t/\tau}
+
+    Parameters
+    ----------
+    purity0 : array_like
+        Purity at the start k_0 [-], valid {range:LiftingGas.purity}.
+    days : array_like
+        Time since the last top-up t [day], >= 0.
+    tau : array_like
+        Time constant [day] (:func:`permeation_time_constant`), > 0 or inf.
+
+    Returns
+    -------
+    ndarray [-]
+
+    Notes
+    -----
+    Valid under the assumptions of :func:`permeation_time_constant`. Source: the solution of its
+    decay equation; docs/methods.md §1.14.
+
+    Examples
+    --------
+    One time constant from 98 %: 0.98/e = 0.3605 (by hand):
+
+    >>> round(float(purity_after(0.98, 400.0, 400.0)), 4)
+    0.3605
+    """
     return np.asarray(purity0, float) * np.exp(-np.asarray(days, float) / np.asarray(tau, float))
 
 
 def lift_loss_after(volume, g, rho_air, rho_helium, purity0, days, tau):
-    """Loss of free lift after ``days`` without top-up [N].
+    r"""Loss of free lift after ``days`` without top-up [N].
 
-    Delta L = V g (rho_air - rho_He) (k_0 - k(t)): each volume of helium replaced by air adds
-    (rho_air - rho_He) of gas mass; the displaced volume (gross buoyancy) is unchanged.
+    Each volume of helium replaced by air adds (rho_air - rho_He) of gas mass; the displaced volume
+    (gross buoyancy) is unchanged:
+
+    .. math::
+
+        \Delta L = V g (\rho_{air} - \rho_{He}) \left(k_0 - k(t)\right)
 
     Parameters
     ----------
-    volume [m3]; g [m/s2]; rho_air, rho_helium : density of air and of pure helium at hull
-    conditions [kg/m3]; purity0 [-]; days [day]; tau [day] (:func:`permeation_time_constant`).
+    volume : array_like
+        Hull volume V [m3], > 0.
+    g : float
+        Gravitational acceleration [m/s2].
+    rho_air, rho_helium : array_like
+        Density of air and of pure helium at hull conditions [kg/m3].
+    purity0 : array_like
+        Purity at the start k_0 [-], valid {range:LiftingGas.purity}.
+    days : array_like
+        Time since the last top-up [day], >= 0.
+    tau : array_like
+        Time constant [day] (:func:`permeation_time_constant`).
+
+    Returns
+    -------
+    ndarray [N]
+
+    Notes
+    -----
+    Valid under the assumptions of :func:`permeation_time_constant`, with the hull volume held by
+    the pressure system. Source: docs/methods.md §1.14 (issue 13 item 2).
+
+    Examples
+    --------
+    Pure helium, half gone after tau ln 2; with a density difference of 1 kg/m3 the loss is
+    100 x 9.80665 x 1 x 0.5 = 490.33 N (by hand):
+
+    >>> round(float(lift_loss_after(100.0, 9.80665, 1.17, 0.17, 1.0, 400.0 * np.log(2.0), 400.0)), 2)
+    490.33
     """
     k = purity_after(purity0, days, tau)
     return (
@@ -79,20 +158,46 @@ def lift_loss_after(volume, g, rho_air, rho_helium, purity0, days, tau):
 
 
 def days_to_top_up(excess_lift, volume, g, rho_air, rho_helium, purity0, tau):
-    """Days until the free lift falls to the required margin [day].
+    r"""Days until the free lift falls to the required margin [day].
 
-    Solves Delta L(t) = excess: k_0 - k(t) = x = excess/(V g (rho_air - rho_He)), so
-    t = -tau ln(1 - x/k_0); 0 when there is no excess, inf when the purity could fall to 0 (or
-    nothing permeates) before the excess is used up.
+    Solves Delta L(t) = excess for t:
+
+    .. math::
+
+        x = \frac{L_{excess}}{V g (\rho_{air} - \rho_{He})}, \qquad
+        t = -\tau \ln\left(1 - \frac{x}{k_0}\right)
+
+    0 when there is no excess, inf when the purity could fall to 0 (or nothing permeates) before
+    the excess is used up.
 
     Parameters
     ----------
     excess_lift : array_like
         Free lift now minus the required free lift [N].
-    volume, g, rho_air, rho_helium, purity0, tau : see :func:`lift_loss_after`.
+    volume : array_like
+        Hull volume [m3], > 0.
+    g : float
+        Gravitational acceleration [m/s2].
+    rho_air, rho_helium : array_like
+        Density of air and of pure helium at hull conditions [kg/m3].
+    purity0 : array_like
+        Purity now [-], valid {range:LiftingGas.purity}.
+    tau : array_like
+        Time constant [day] (:func:`permeation_time_constant`).
+
+    Returns
+    -------
+    ndarray [day]
+
+    Notes
+    -----
+    Valid under the assumptions of :func:`lift_loss_after`. Source: docs/methods.md §1.14.
 
     Examples
     --------
+    1 kgf of excess on 100 m3 (Delta rho = 1.03 kg/m3, 98 % pure, tau = 500 days):
+    x = 1/103 = 0.009709, t = -500 ln(1 - 0.009709/0.98) = 4.978 days (by hand):
+
     >>> round(float(days_to_top_up(9.80665, 100.0, 9.80665, 1.2, 0.17, 0.98, 500.0)), 2)
     4.98
     """
@@ -107,17 +212,40 @@ def days_to_top_up(excess_lift, volume, g, rho_air, rho_helium, purity0, tau):
 
 
 def helium_top_up(area, permeability, purity, hull_pressure, days):
-    """Helium to add over a deployment of ``days`` to replace what permeates [m3 at 0 degC, 1 atm].
+    r"""Helium to add over a deployment of ``days`` to replace what permeates [m3 at 0 degC, 1 atm].
 
-    V_top = kappa S k (P_hull/1 atm) t, with the purity held at k by the top-ups.
+    With the purity held at k by the top-ups:
+
+    .. math::
+
+        V_{top} = \kappa\, S\, k \frac{P_{hull}}{1\,\mathrm{atm}}\, t
 
     Parameters
     ----------
-    area [m2]; permeability kappa [L/(m2 day atm)]; purity k [-]; hull_pressure [Pa];
-    days [day].
+    area : array_like
+        Envelope area S [m2], >= 0.
+    permeability : float
+        Helium permeability kappa [L/(m2 day atm)], >= 0.
+    purity : array_like
+        Purity held by the top-ups k [-], valid {range:LiftingGas.purity}.
+    hull_pressure : array_like
+        Absolute gas pressure in the hull [Pa].
+    days : float
+        Deployment t [day], >= 0.
+
+    Returns
+    -------
+    ndarray [m3] at standard conditions.
+
+    Notes
+    -----
+    Valid under the assumptions of :func:`permeation_time_constant`. Source: Fick's law as
+    there; docs/methods.md §1.14.
 
     Examples
     --------
+    100 m2 at 2.5 L/(m2 day atm) for 30 days at 1 atm: 0.0025 x 100 x 30 = 7.5 m3 (by hand):
+
     >>> round(float(helium_top_up(100.0, 2.5, 1.0, 101325.0, 30.0)), 3)
     7.5
     """

@@ -35,18 +35,24 @@ class AtmosphereState:
 
 
 def isa(altitude, isa_offset=0.0) -> AtmosphereState:
-    """Air state at a geometric altitude.
+    r"""Air state at a geometric altitude (ISA troposphere with a temperature offset).
 
-    H = r0 h/(r0 + h);  T_ISA = T0 - L H;  P = P0 (T_ISA/T0)^(g0/(R L));
-    T = T_ISA + dT;  rho = P/(R T);
-    mu = beta T^1.5/(T + S) (Sutherland).
+    .. math::
+
+        H = \frac{r_0 h}{r_0 + h}, \quad T_{ISA} = T_0 - L H, \quad
+        P = P_0 \left(\frac{T_{ISA}}{T_0}\right)^{g_0/(R L)},
+
+        T = T_{ISA} + \Delta T, \quad \rho = \frac{P}{R T}, \quad
+        \mu = \frac{\beta T^{3/2}}{T + S}
 
     Parameters
     ----------
     altitude : array_like
-        Geometric altitude above mean sea level [m], valid [-500, 11000].
+        Geometric altitude above mean sea level h [m], valid [-500, 11000] (the troposphere;
+        raises ``ValueError`` outside).
     isa_offset : array_like
-        Temperature offset dT [K].
+        Temperature offset dT [K] at constant pressure; the input field is
+        {range:Requirement.isa_offset}.
 
     Returns
     -------
@@ -54,12 +60,17 @@ def isa(altitude, isa_offset=0.0) -> AtmosphereState:
 
     Notes
     -----
-    Source: ISO 2533:1975; U.S. Standard Atmosphere 1976 (Sutherland constants).
+    Valid in the troposphere, dry air. Source: ISO 2533:1975; U.S. Standard Atmosphere 1976
+    (Sutherland constants); docs/methods.md §1.2.
 
     Examples
     --------
+    The ISA table gives 1.1901 kg/m3 at 300 m and 1.2250 at sea level:
+
     >>> round(float(isa(300.0).density), 4)
     1.1901
+    >>> round(float(isa(0.0).density), 4)
+    1.225
     """
     h = np.asarray(altitude, dtype=float)
     _check_altitude(np.atleast_1d(h))

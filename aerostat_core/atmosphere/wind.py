@@ -13,28 +13,42 @@ MIN_PROFILE_HEIGHT = 1.0
 
 
 def profile_speed(profile: WindProfile, z, top_speed, top_height):
-    """Wind speed at height ``z`` for a profile that gives ``top_speed`` at ``top_height``.
+    r"""Wind speed at height ``z`` for a profile that gives ``top_speed`` at ``top_height``.
 
-    uniform: U = U_top;  power: U = U_top (z/z_top)^p;
-    log: U = U_top ln(z/z0)/ln(z_top/z0) (z0 = roughness length).
+    .. math::
+
+        U_{uniform} = U_{top}, \qquad
+        U_{power} = U_{top} \left(\frac{z}{z_{top}}\right)^p, \qquad
+        U_{log} = U_{top} \frac{\ln(z/z_0)}{\ln(z_{top}/z_0)}
+
+    with the exponent p valid {range:WindProfile.exponent} and the roughness length z_0 valid
+    {range:WindProfile.roughness_length}.
 
     Parameters
     ----------
     profile : WindProfile
+        Kind, exponent p and roughness length z_0.
     z : array_like
-        Height above the winch [m] (clipped to >= 1 m).
+        Height above the winch [m] (clipped to >= 1 m; the log law to >= 2 z_0).
     top_speed : array_like
         Wind at the aerostat [m/s].
     top_height : array_like
         Aerostat height above the winch [m].
 
+    Returns
+    -------
+    ndarray [m/s]
+
     Notes
     -----
-    Sources: Hellmann power law (exponent 1/7 for open terrain); logarithmic law of the neutral
-    surface layer (e.g. Stull, *An Introduction to Boundary Layer Meteorology*, 1988).
+    Valid in the surface layer under neutral stability (a few hundred metres). Sources: Hellmann
+    power law (exponent 1/7 for open terrain); logarithmic law of the neutral surface layer (e.g.
+    Stull, *An Introduction to Boundary Layer Meteorology*, 1988); docs/methods.md §1.2.
 
     Examples
     --------
+    Halfway up with the 1/7 law: 10 x 0.5^(1/7) = 9.057 m/s (by hand):
+
     >>> from aerostat_core.model.inputs import WindProfile
     >>> round(float(profile_speed(WindProfile("power"), 150.0, 10.0, 300.0)), 3)
     9.057
@@ -66,9 +80,9 @@ class WindProfile:
     ----------
     kind : {"uniform", "power", "log"}
     exponent : float
-        Power-law exponent p [-], valid [0, 0.6] (1/7 open terrain).
+        Power-law exponent p [-], valid {range:WindProfile.exponent} (1/7 open terrain).
     roughness_length : float
-        Log-law roughness z0 [m], valid [1e-5, 2].
+        Log-law roughness z0 [m], valid {range:WindProfile.roughness_length}.
     """
 
     kind: str = choice(

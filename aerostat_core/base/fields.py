@@ -20,8 +20,12 @@ from __future__ import annotations
 
 import dataclasses
 import functools
+import inspect
 import math
+import re
+from collections.abc import Iterable
 from dataclasses import dataclass
+from types import ModuleType
 from typing import Any
 
 from aerostat_core.base.validation import check_choice, check_int, check_number
@@ -158,6 +162,19 @@ class FieldSpec:
         u = f" {unit}" if unit and unit != "-" else ""
         left, right = "(" if self.lo_open else "[", ")" if self.hi_open else "]"
         return f"{left}{lo:g}, {hi:g}{right}{u}"
+
+    def si_range_text(self) -> str:
+        """The valid range in the SI unit of the value, as a model function takes it, e.g.
+        ``"(0, 2] kg/m2"``, ``"(0, 1]"`` for a fraction; empty when the field has no range.
+
+        >>> FieldSpec("Gas purity", lo=0, hi=1, lo_open=True, scale=100.0).si_range_text()
+        '(0, 1]'
+        """
+        if self.lo is None or self.hi is None:
+            return ""
+        left, right = "(" if self.lo_open else "[", ")" if self.hi_open else "]"
+        u = f" {self.unit}" if self.unit else ""
+        return f"{left}{_clean(self.lo):g}, {_clean(self.hi):g}{right}{u}"
 
 
 def _clean(x: float) -> float:
@@ -309,3 +326,81 @@ def validate(obj: object) -> None:
             continue
         hi = float(getattr(obj, spec.hi_field)) if spec.hi_field else None
         _check(obj, name, spec, value, None, hi)
+
+
+# --- ranges in docstrings -----------------------------------------------------------------------
+
+#: A docstring placeholder for the valid range of a registry field: ``{range:<Owner>.<field>}``
+#: (written here with angle brackets, which the pattern does not match, so that this module's
+#: own docstrings stay as they are).
+RANGE_PLACEHOLDER = re.compile(r"\{range:(\w+)\.(\w+)\}")
+
+
+def range_doc(owner: type, name: str) -> str:
+    """The text that replaces ``{range:<Owner>.<name>}`` in a docstring: the field's SI range and
+    where it comes from.
+
+    >>> from aerostat_core.atmosphere.gas import LiftingGas
+    >>> range_doc(LiftingGas, "purity")
+    '(0, 1] (registry: LiftingGas.purity)'
+    """
+    spec = field_spec(owner, name)
+    text = spec.si_range_text()
+    if not text:
+        raise ValueError(f"{owner.__name__}.{name} has no range to put in a docstring")
+    return f"{text} (registry: {owner.__name__}.{name})"
+
+
+def spec_owners(modules: Iterable[ModuleType]) -> dict[str, type]:
+    """The input dataclasses (those with at least one field spec) defined in ``modules``, by
+    class name; a name defined twice maps to ``None`` (ambiguous, refused by
+    :func:`fill_range_docs`)."""
+    owners: dict[str, Any] = {}
+    for mod in modules:
+        for obj in vars(mod).values():
+            if (inspect.isclass(obj) and obj.__module__ == mod.__name__
+                    and dataclasses.is_dataclass(obj) and _specs(obj)):
+                owners[obj.__name__] = None if owners.get(obj.__name__, obj) is not obj else obj
+    return owners
+
+
+def fill_range_docs(modules: Iterable[ModuleType]) -> int:
+    """Put the registry's ranges into the docstrings of ``modules``: each
+    ``{range:<Owner>.<field>}`` in the docstring of a module-level function or class defined
+    there is replaced by :func:`range_doc`, so a range is typed once, in the field's spec. ``Owner`` is an input
+    dataclass of any of ``modules`` (the library's face passes every loaded core module, so a
+    physics function may name an input class of a package above it without importing it).
+
+    Returns the number of placeholders filled. Raises ``ValueError`` for an unknown or ambiguous
+    owner and ``KeyError`` for a field without a spec, so a typo fails at import.
+
+    >>> import types
+    >>> m = types.ModuleType("demo")
+    >>> def f(purity): pass
+    >>> f.__doc__ = "purity : float, valid {" + "range:LiftingGas.purity}."
+    >>> f.__module__ = "demo"; m.f = f
+    >>> from aerostat_core.atmosphere import gas
+    >>> fill_range_docs([m, gas]), f.__doc__
+    (1, 'purity : float, valid (0, 1] (registry: LiftingGas.purity).')
+    """
+    modules = list(modules)
+    owners = spec_owners(modules)
+
+    def one(match: re.Match) -> str:
+        cls = owners.get(match.group(1))
+        if cls is None:
+            state = "ambiguous" if match.group(1) in owners else "unknown"
+            raise ValueError(f"docstring placeholder {match.group(0)}: {state} input class")
+        return range_doc(cls, match.group(2))
+
+    count = 0
+    for mod in modules:
+        for obj in list(vars(mod).values()):
+            if not (inspect.isfunction(obj) or inspect.isclass(obj)):
+                continue
+            if obj.__module__ != mod.__name__ or not obj.__doc__ or "{range:" not in obj.__doc__:
+                continue
+            doc, n = RANGE_PLACEHOLDER.subn(one, obj.__doc__)
+            obj.__doc__ = doc
+            count += n
+    return count

@@ -19,17 +19,22 @@ from aerostat_core.geometry.shapes import (
 
 
 def lamb_factors(fineness_ratio):
-    """Lamb's inertia (added-mass) factors of a prolate spheroid of the given fineness ratio.
+    r"""Lamb's inertia (added-mass) factors of a prolate spheroid of the given fineness ratio.
 
     With e = sqrt(1 - 1/f^2):
-    alpha0 = (2(1 - e^2)/e^3) (artanh(e) - e),  beta0 = 1/e^2 - ((1 - e^2)/e^3) artanh(e),
-    k1 = alpha0/(2 - alpha0) (axial), k2 = k3 = beta0/(2 - beta0) (transverse),
-    k' = e^4 (beta0 - alpha0) / ((2 - e^2)(2 e^2 - (2 - e^2)(beta0 - alpha0))) (rotation).
+
+    .. math::
+
+        \alpha_0 = \frac{2(1 - e^2)}{e^3} \left(\operatorname{artanh} e - e\right), \quad
+        \beta_0 = \frac{1}{e^2} - \frac{1 - e^2}{e^3} \operatorname{artanh} e,
+
+        k_1 = \frac{\alpha_0}{2 - \alpha_0}, \quad k_2 = k_3 = \frac{\beta_0}{2 - \beta_0}, \quad
+        k' = \frac{e^4 (\beta_0 - \alpha_0)}{(2 - e^2)\left(2 e^2 - (2 - e^2)(\beta_0 - \alpha_0)\right)}
 
     Parameters
     ----------
     fineness_ratio : array_like
-        l/d [-], > 1 (the sphere limit f -> 1 gives k1 = k2 = 0.5, k' = 0).
+        l/d [-], valid > 1 (the sphere limit f -> 1 gives k1 = k2 = 0.5, k' = 0).
 
     Returns
     -------
@@ -37,10 +42,13 @@ def lamb_factors(fineness_ratio):
 
     Notes
     -----
-    Source: Lamb, *Hydrodynamics* (1932) §373; Tuckerman, NACA Report 210 (1926).
+    Source: Lamb, *Hydrodynamics* (1932) §373; Tuckerman, NACA Report 210 (1926);
+    docs/methods.md S9.
 
     Examples
     --------
+    Tuckerman's table (NACA Report 210) at l/d = 4: k1 = 0.082, k2 = 0.860, k' = 0.608:
+
     >>> [round(float(k), 3) for k in lamb_factors(4.0)]
     [0.082, 0.86, 0.608]
     """
@@ -58,19 +66,30 @@ def lamb_factors(fineness_ratio):
 
 # --- spheroids: Lamb's closed forms ----------------------------------------------------------
 def spheroid_lamb_factors(fineness_ratio):
-    """Lamb's inertia factors of a spheroid of revolution about x with l/d = f, prolate or oblate.
+    r"""Lamb's inertia factors of a spheroid of revolution about x with l/d = f, prolate or oblate.
 
-    With a the axial and b the equatorial semi-axis (f = a/b), Lamb's ellipsoid integrals
-    alpha0 (axial) and beta0 (transverse), alpha0 + 2 beta0 = 2:
-      prolate, e = sqrt(1 - 1/f^2): alpha0 = (2(1 - e^2)/e^3)(artanh e - e);
-      oblate,  e = sqrt(1 - f^2):   alpha0 = (2/e^2)(1 - sqrt(1 - e^2) arcsin(e)/e);
-    k1 = alpha0/(2 - alpha0), k2 = beta0/(2 - beta0),
-    k' = (a^2 - b^2)^2 (beta0 - alpha0) / ((a^2 + b^2)(2(a^2 - b^2) - (a^2 + b^2)(beta0 - alpha0))).
+    With a the axial and b the equatorial semi-axis (f = a/b) and Lamb's ellipsoid integrals
+    (alpha0 + 2 beta0 = 2):
+
+    .. math::
+
+        \alpha_0^{prolate} = \frac{2(1 - e^2)}{e^3}(\operatorname{artanh} e - e),\;
+        e = \sqrt{1 - f^{-2}}; \qquad
+        \alpha_0^{oblate} = \frac{2}{e^2}\left(1 - \frac{\sqrt{1 - e^2} \arcsin e}{e}\right),\;
+        e = \sqrt{1 - f^2},
+
+        k_1 = \frac{\alpha_0}{2 - \alpha_0}, \quad k_2 = \frac{\beta_0}{2 - \beta_0}, \quad
+        k' = \frac{(a^2 - b^2)^2 (\beta_0 - \alpha_0)}
+        {(a^2 + b^2)\left(2(a^2 - b^2) - (a^2 + b^2)(\beta_0 - \alpha_0)\right)}
 
     Parameters
     ----------
     fineness_ratio : array_like
-        a/b [-], valid (0.05, 20); f = 1 (sphere) gives 0.5, 0.5, 0.
+        a/b [-], valid 0.05 < f < 20; f = 1 (sphere) gives 0.5, 0.5, 0.
+
+    Returns
+    -------
+    k1, k2, k_rot : ndarray [-]
 
     Notes
     -----
@@ -79,6 +98,10 @@ def spheroid_lamb_factors(fineness_ratio):
 
     Examples
     --------
+    The sphere's added mass is half the displaced mass (Lamb §92):
+
+    >>> [float(k) for k in spheroid_lamb_factors(1.0)]
+    [0.5, 0.5, 0.0]
     >>> [round(float(k), 3) for k in spheroid_lamb_factors(4.0)]
     [0.082, 0.86, 0.608]
     """
@@ -130,31 +153,50 @@ def _body_points(shape: str, f: float, n: int, nose_fraction: float = 0.432):
 def added_mass_numerical(
     shape: str, fineness_ratio: float, segments: int = 48, nose_fraction: float = 0.432
 ):
-    """Inertia factors k1, k2, k' of a body of revolution by potential flow, numerically.
+    r"""Inertia factors k1, k2, k' of a body of revolution by potential flow, numerically.
 
     Axial motion: a line of constant-strength source segments on the axis; transverse and
     pitching motion: a line of transverse doublet segments (cos phi mode). Strengths are fitted
-    by least squares to the body boundary condition dphi/dn = V_body . n at 3 x ``segments``
-    Gauss points of the meridian (von Karman's method, 1927), with a zero-net-source row for the
-    axial case. The added masses follow from the kinetic energy of the flow,
-    m = -rho oint phi (dphi/dn) dS (Lamb 1932 §§117-121), and
-    k1 = m11/(rho V), k2 = m33/(rho V), k' = I55/(rho int ((x - x_cv)^2 + z^2) dV) about the
-    centre of volume.
+    by least squares to the body boundary condition at 3 x ``segments`` Gauss points of the
+    meridian (von Karman's method, 1927), with a zero-net-source row for the axial case; the added
+    masses follow from the kinetic energy of the flow:
+
+    .. math::
+
+        \frac{\partial \phi}{\partial n} = \mathbf{V}_{body} \cdot \mathbf{n}, \qquad
+        m = -\rho \oint \phi \frac{\partial \phi}{\partial n}\, dS,
+
+        k_1 = \frac{m_{11}}{\rho V}, \quad k_2 = \frac{m_{33}}{\rho V}, \quad
+        k' = \frac{I_{55}}{\rho \int \left((x - x_{cv})^2 + z^2\right) dV}
 
     Parameters
     ----------
     shape : str
-        A name of ``SHAPES`` (the method needs an elongated body; f >= 1.5 recommended).
+        A name of ``SHAPES`` (the method needs an elongated body).
     fineness_ratio : float
-        l/d [-].
+        l/d [-], valid about 1.5-8 (f >= 1.5 recommended).
     segments : int
-        Singularity segments. With 48, Lamb's prolate-spheroid factors are reproduced within
-        0.5 % (k2, k') and 2 % (k1) for f in [1.5, 6] (tests/core/test_shapes.py); k1 drifts to
-        +3 % at f = 8, where the thin body needs more segments.
+        Singularity segments [-], >= 8.
+    nose_fraction : float
+        NPL a1/l [-], valid {range:HullSpec.nose_fraction}.
 
     Returns
     -------
     k1, k2, k_rot : float [-]
+
+    Notes
+    -----
+    With 48 segments, Lamb's prolate-spheroid factors are reproduced within 0.5 % (k2, k') and
+    2 % (k1) for f in 1.5-6 (tests/core/test_shapes.py); k1 drifts to +3 % at f = 8, where the
+    thin body needs more segments. Source: von Karman (1927), NACA TM 574; Lamb (1932) §§117-121.
+
+    Examples
+    --------
+    The NPL hull at l/d 4 against Tuckerman's spheroid values 0.082, 0.860, 0.608 (the two shapes
+    differ a little):
+
+    >>> [round(float(k), 2) for k in added_mass_numerical("npl", 4.0)]
+    [0.08, 0.86, 0.61]
     """
     f = float(fineness_ratio)
     n_col = 3 * segments
@@ -215,19 +257,39 @@ def _added_mass_table(shape: str):
 
 
 def added_mass_factors(shape: str, fineness_ratio):
-    """Inertia (added-mass) factors k1 (axial), k2 = k3 (transverse), k' (pitch) [-].
+    r"""Inertia (added-mass) factors k1 (axial), k2 = k3 (transverse), k' (pitch) [-].
 
-    * ``npl``: Lamb's factors of the prolate spheroid of the same l/d (the thesis' method,
-      Appendix C; keeps the engine's established numbers);
-    * sphere, oblate, Helikite hull: Lamb's closed forms (:func:`spheroid_lamb_factors`);
-    * Gertler shapes and GNVR: :func:`added_mass_numerical` tabulated on 33 fineness ratios
-      over the shape's valid range and interpolated linearly (vectorised for batches).
+    .. math::
+
+        (k_1, k_2, k') = \begin{cases}
+        \text{Lamb}(f) & \text{NPL, spheroids (closed form)} \\
+        \text{interp}_f\, \text{numerical}(f_i), \; i = 1..33 & \text{Gertler shapes, GNVR}
+        \end{cases}
+
+    NPL uses Lamb's factors of the prolate spheroid of the same l/d (the thesis' method,
+    Appendix C); sphere, oblate and Helikite hull Lamb's closed forms
+    (:func:`spheroid_lamb_factors`); Gertler shapes and GNVR :func:`added_mass_numerical`
+    tabulated on 33 fineness ratios over the shape's range and interpolated linearly.
 
     Parameters
     ----------
     shape : str
+        A name of ``SHAPES``.
     fineness_ratio : array_like
-        l/d [-], within the shape's range.
+        l/d [-], valid within the shape's range (``SHAPE_INFO``).
+
+    Returns
+    -------
+    k1, k2, k_rot : ndarray [-]
+
+    Notes
+    -----
+    Source: Lamb (1932) §373; thesis Appendix C; docs/methods.md §1.13.
+
+    Examples
+    --------
+    >>> [float(k) for k in added_mass_factors("sphere", 1.0)]
+    [0.5, 0.5, 0.0]
     """
     f = np.asarray(fineness_ratio, dtype=float)
     if shape == "npl" or SHAPE_INFO[shape].family not in ("gertler", "piecewise"):

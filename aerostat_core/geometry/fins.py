@@ -23,19 +23,21 @@ ARRANGEMENT_ANGLES_DEG = {
 
 
 def helmbold_lift_slope(aspect_ratio, sweep_half_chord, section_lift_slope=2.0 * np.pi):
-    """3-D lift-curve slope of a low-aspect-ratio wing, DATCOM/Helmbold form (incompressible).
+    r"""3-D lift-curve slope of a low-aspect-ratio wing, DATCOM/Helmbold form (incompressible).
 
-    C_L_alpha = 2 pi AR / (2 + sqrt((AR^2/kappa^2)(1 + tan^2 Lambda_c/2) + 4)),
-    kappa = C_l_alpha/(2 pi).
+    .. math::
+
+        C_{L_\alpha} = \frac{2 \pi A}{2 + \sqrt{\frac{A^2}{\kappa^2}
+        \left(1 + \tan^2 \Lambda_{c/2}\right) + 4}}, \qquad \kappa = \frac{C_{l_\alpha}}{2\pi}
 
     Parameters
     ----------
     aspect_ratio : array_like
-        Wing aspect ratio b^2/S [-], 0.5-6.
+        Wing aspect ratio A = b^2/S [-], valid about 0.5-6.
     sweep_half_chord : array_like
         Half-chord sweep angle [rad].
     section_lift_slope : float
-        Section C_l_alpha [1/rad].
+        Section C_l_alpha [1/rad], valid {range:AeroModel.section_lift_slope}.
 
     Returns
     -------
@@ -44,10 +46,13 @@ def helmbold_lift_slope(aspect_ratio, sweep_half_chord, section_lift_slope=2.0 *
 
     Notes
     -----
-    Source: USAF DATCOM §4.1.3.2; Raymer, *Aircraft Design*, eq. 12.6 (Mach 0).
+    Valid at Mach 0, below stall. Source: USAF DATCOM §4.1.3.2; Raymer, *Aircraft Design*,
+    eq. 12.6 (Mach 0).
 
     Examples
     --------
+    A = 2 unswept: 4 pi/(2 + sqrt(8)) = 2.603 /rad (by hand):
+
     >>> round(float(helmbold_lift_slope(2.0, 0.0)), 3)
     2.603
     """
@@ -58,17 +63,36 @@ def helmbold_lift_slope(aspect_ratio, sweep_half_chord, section_lift_slope=2.0 *
 
 
 def oswald_efficiency(aspect_ratio, sweep_le):
-    """Oswald span efficiency, Raymer's fits, clamped to [0.7, 0.95].
+    r"""Oswald span efficiency, Raymer's fits, clamped to 0.7..0.95.
 
-    Straight wing: e = 1.78 (1 - 0.045 AR^0.68) - 0.64;
-    swept (Lambda_LE > 30 deg): e = 4.61 (1 - 0.045 AR^0.68) (cos Lambda_LE)^0.15 - 3.1.
-    The fits exceed 1 for AR < 2, hence the clamp (docs/methods.md §1.7). Source: Raymer eq. 12.48-12.49.
+    .. math::
+
+        e = 1.78 \left(1 - 0.045 A^{0.68}\right) - 0.64 \quad (\Lambda_{LE} \le 30^\circ), \qquad
+        e = 4.61 \left(1 - 0.045 A^{0.68}\right) (\cos \Lambda_{LE})^{0.15} - 3.1 \quad
+        (\Lambda_{LE} > 30^\circ)
 
     Parameters
     ----------
-    aspect_ratio : array_like [-]
+    aspect_ratio : array_like
+        Aspect ratio A [-], valid about 0.5-6 (the fits exceed 1 for A < 2, hence the clamp).
     sweep_le : array_like
         Leading-edge sweep [rad].
+
+    Returns
+    -------
+    ndarray [-]
+
+    Notes
+    -----
+    Source: Raymer, *Aircraft Design*, eq. 12.48-12.49; docs/methods.md §1.7.
+
+    Examples
+    --------
+    A = 6 unswept: 1.78 (1 - 0.045 x 6^0.68) - 0.64 = 0.8691 (by hand); A = 2 gives 1.012,
+    clamped to 0.95:
+
+    >>> round(float(oswald_efficiency(6.0, 0.0)), 4), float(oswald_efficiency(2.0, 0.0))
+    (0.8691, 0.95)
     """
     ar = np.asarray(aspect_ratio, dtype=float)
     straight = 1.78 * (1.0 - 0.045 * ar**0.68) - 0.64
@@ -120,30 +144,58 @@ def fin_geometry(
     position=None,
     section_lift_slope: float = 2.0 * np.pi,
 ) -> FinGeometry:
-    """Size the fins from the statistical ratios and the two fin design variables.
+    r"""Size the fins from the statistical ratios and the two fin design variables.
 
-    S_total = area_ratio * S_hull * (1 + Delta S_f/100); S_1 = S_total/n;
-    S_p = sqrt(AR S_1/2); RC = 2 S_1/((1 + lambda) S_p); TC = lambda RC;
-    tan Lambda_LE = (RC - TC)/S_p; MAC = (2/3) RC (1 + lambda + lambda^2)/(1 + lambda);
-    y_mac = (S_p/3)(1 + 2 lambda)/(1 + lambda); xi_ac = l_f + y_mac tan Lambda_LE + MAC/4,
-    l_f = Delta l_f * l; mass = n * GSM_f * fabric_factor * S_1.
+    .. math::
+
+        S_{tot} = k_S S_{hull} \left(1 + \frac{\Delta S_f}{100}\right), \quad S_1 = \frac{S_{tot}}{n},
+        \quad S_p = \sqrt{\frac{A S_1}{2}}, \quad RC = \frac{2 S_1}{(1 + \lambda) S_p}, \quad
+        TC = \lambda RC,
+
+        \tan \Lambda_{LE} = \frac{RC - TC}{S_p}, \quad
+        MAC = \frac23 RC \frac{1 + \lambda + \lambda^2}{1 + \lambda}, \quad
+        y_{mac} = \frac{S_p}{3} \frac{1 + 2\lambda}{1 + \lambda},
+
+        \xi_{ac} = \Delta l_f\, l + y_{mac} \tan \Lambda_{LE} + \frac{MAC}{4}, \quad
+        m = \sigma_f k_{fab} S_1 n
 
     Parameters
     ----------
     hull : HullGeometry
+        The hull.
     spec : FinSpec
-        Ratios and defaults for the design variables.
+        Ratios (k_S valid {range:FinSpec.area_ratio}, A valid {range:FinSpec.aspect_ratio},
+        lambda valid {range:FinSpec.taper_ratio}) and defaults for the design variables.
     fin_areal_density : float
-        Fin fabric mass per area [kg/m2].
-    area_change, position : array_like or None
-        Override Delta S_f [%] and Delta l_f [-] (batch evaluation); ``None`` uses ``spec``.
+        Fin fabric mass per area sigma_f [kg/m2], valid {range:Fabric.areal_density}.
+    area_change : array_like or None
+        Override Delta S_f [%], valid {range:FinSpec.area_change}; ``None`` uses ``spec``.
+    position : array_like or None
+        Override Delta l_f [-], valid {range:FinSpec.position}; ``None`` uses ``spec``.
     section_lift_slope : float
         Section C_l_alpha [1/rad] for the Helmbold slope.
+
+    Returns
+    -------
+    FinGeometry
 
     Notes
     -----
     Sources: docs/methods.md §1.5; planform relations are textbook (Raymer ch. 7); the area ratio
     0.227 is calibrated so that thesis Table 2.2's 100 m3 hull has 7.8 kg of fins (presets.py).
+
+    Examples
+    --------
+    Four fins of A = 2, lambda = 0.5 on 100 m2 of hull with k_S = 0.2: S_1 = 5 m2,
+    S_p = sqrt(5) = 2.236 m, RC = 2 x 5/(1.5 x 2.236) = 2.981 m (by hand):
+
+    >>> import aerostat_core
+    >>> from aerostat_core.geometry.hull import hull_geometry
+    >>> h = hull_geometry(100.0, 4.0)
+    >>> spec = aerostat_core.FinSpec(area_ratio=0.2 * 100 / float(h.surface_area))
+    >>> fg = fin_geometry(h, spec, 0.1)
+    >>> round(float(fg.area_one), 3), round(float(fg.span), 3), round(float(fg.root_chord), 3)
+    (5.0, 2.236, 2.981)
     """
     dsf = spec.area_change if area_change is None else np.asarray(area_change, dtype=float)
     pos = spec.position if position is None else np.asarray(position, dtype=float)
@@ -203,24 +255,24 @@ class FinSpec:
     Parameters
     ----------
     count : int
-        Number of fins, 3 or 4.
+        Number of fins, valid {range:FinSpec.count}.
     arrangement : {"+", "x", "inverted-y"}
         ``"+"``/``"x"`` need 4 fins, ``"inverted-y"`` 3 fins (one on top, two 30 deg below the
         horizontal).
     area_change : float
-        Fin-area change Delta S_f from the statistical size [%], valid [-50, 200] (design
+        Fin-area change Delta S_f from the statistical size [%], valid {range:FinSpec.area_change} (design
         variable 2). Lengths scale with sqrt(1 + Delta S_f/100) at constant aspect ratio and taper.
     position : float
-        Root leading-edge station / hull length, Delta l_f [-], valid [0.4, 0.95] (design
+        Root leading-edge station / hull length, Delta l_f [-], valid {range:FinSpec.position} (design
         variable 3). The trailing edge must stay on the hull (checked by the engine).
     area_ratio : float
-        Statistical total fin planform area / hull surface area [-], valid (0, 1].
+        Statistical total fin planform area / hull surface area [-], valid {range:FinSpec.area_ratio}.
     aspect_ratio : float
-        Aspect ratio of an opposite fin pair taken as one wing, 2 S_p^2 / S_1 [-], valid [0.5, 6].
+        Aspect ratio of an opposite fin pair taken as one wing, 2 S_p^2 / S_1 [-], valid {range:FinSpec.aspect_ratio}.
     taper_ratio : float
-        Tip chord / root chord [-], valid [0.1, 1].
+        Tip chord / root chord [-], valid {range:FinSpec.taper_ratio}.
     fabric_factor : float
-        Fabric area of one fin / its planform area [-], valid [1, 4] (two faces plus ribs/seams).
+        Fabric area of one fin / its planform area [-], valid {range:FinSpec.fabric_factor} (two faces plus ribs/seams).
     """
 
     count: int = integer(4, "Number of fins", 3, 4)

@@ -21,19 +21,25 @@ _GL_X, _GL_W = np.polynomial.legendre.leggauss(48)
 
 
 def hull_dimensions(volume, fineness_ratio, nose_fraction=0.432):
-    """Length, diameter and ellipse semi-axes of an NPL hull of given volume and fineness.
+    r"""Length, diameter and ellipse semi-axes of an NPL hull of given volume and fineness.
 
-    V = (2/3) pi b^2 (a1 + a2) = (pi/6) d^2 l, f = l/d  =>  d = (6V/(pi f))^(1/3), l = f d,
-    a1 = nose_fraction * l, a2 = l - a1, b = d/2.
+    .. math::
+
+        V = \frac23 \pi b^2 (a_1 + a_2) = \frac{\pi}{6} d^2 l, \quad f = \frac{l}{d}
+        \;\Rightarrow\; d = \left(\frac{6V}{\pi f}\right)^{1/3}, \quad l = f d, \quad
+        a_1 = \nu\, l, \quad a_2 = l - a_1, \quad b = \frac d2
+
+    with nu = ``nose_fraction``.
 
     Parameters
     ----------
     volume : array_like
-        Hull volume [m3], > 0.
+        Hull volume [m3], valid {range:HullSpec.volume}.
     fineness_ratio : array_like
-        l/d [-], valid 1.5-8 (the NPL shape is a standard at 4.0).
+        l/d [-], valid in ``SHAPE_INFO["npl"].fineness_range`` (the NPL shape is a standard at 4.0).
     nose_fraction : array_like
-        a1/l [-], 0.432 for the NPL standard (public Gertler-envelope tables, docs/methods.md S7).
+        a1/l [-], valid {range:HullSpec.nose_fraction}; 0.432 for the NPL standard (public
+        Gertler-envelope tables, docs/methods.md S7).
 
     Returns
     -------
@@ -41,10 +47,12 @@ def hull_dimensions(volume, fineness_ratio, nose_fraction=0.432):
 
     Notes
     -----
-    Source: Khoury & Gillett, *Airship Technology* (1999); thesis §3.1.3(a).
+    Source: Khoury & Gillett, *Airship Technology* (1999); thesis §3.1.3(a); docs/methods.md §1.4.
 
     Examples
     --------
+    100 m3 at l/d 2.7: d = (600/(2.7 pi))^(1/3) = 4.135 m, l = 11.17 m (by hand):
+
     >>> l, d, a1, a2, b = hull_dimensions(100.0, 2.7)
     >>> round(float(l), 2), round(float(d), 2)
     (11.17, 4.14)
@@ -58,26 +66,40 @@ def hull_dimensions(volume, fineness_ratio, nose_fraction=0.432):
 
 
 def half_spheroid_area(a, b):
-    """Curved surface of half a spheroid with polar semi-axis ``a`` and equatorial radius ``b``.
+    r"""Curved surface of half a spheroid with polar semi-axis ``a`` and equatorial radius ``b`` [m2].
 
-    Prolate (a > b), e = sqrt(1 - b^2/a^2):  S = pi b^2 + pi a b arcsin(e)/e.
-    Oblate  (a < b), e = sqrt(1 - a^2/b^2):  S = pi b^2 + (pi a^2/e) artanh(e).
-    Sphere (a = b): 2 pi b^2.
+    .. math::
+
+        S = \begin{cases}
+        \pi b^2 + \pi a b \dfrac{\arcsin e}{e}, & e = \sqrt{1 - b^2/a^2} \quad (a > b) \\
+        \pi b^2 + \dfrac{\pi a^2}{e} \operatorname{artanh} e, & e = \sqrt{1 - a^2/b^2} \quad (a < b) \\
+        2 \pi b^2 & (a = b)
+        \end{cases}
 
     Parameters
     ----------
     a, b : array_like
-        Semi-axes [m], > 0.
+        Semi-axes [m], valid > 0.
 
     Returns
     -------
     ndarray
         Area [m2].
 
+    Notes
+    -----
+    Source: the surface of a spheroid of revolution (e.g. Abramowitz & Stegun 1964; docs/methods.md
+    §1.4).
+
     Examples
     --------
+    A hemisphere has 2 pi b^2; a prolate half with a = 2, b = 1 has
+    pi + 2 pi arcsin(0.866)/0.866 = 10.7392 m2 (closed forms):
+
     >>> round(float(half_spheroid_area(1.0, 1.0)), 6) == round(2 * np.pi, 6)
     True
+    >>> round(float(half_spheroid_area(2.0, 1.0)), 4)
+    10.7392
     """
     a = np.asarray(a, dtype=float)
     b = np.asarray(b, dtype=float)
@@ -96,10 +118,32 @@ def half_spheroid_area(a, b):
 
 
 def radius(xi, a1, a2, b):
-    """Local hull radius r(xi) [m] of the NPL profile (zero outside the hull).
+    r"""Local hull radius r(xi) [m] of the NPL profile (zero outside the hull).
 
-    r = b sqrt(1 - ((a1 - xi)/a1)^2) for 0 <= xi <= a1, and b sqrt(1 - ((xi - a1)/a2)^2) for
-    a1 <= xi <= a1 + a2.  Source: thesis Fig. 3.4; docs/methods.md §1.4.
+    .. math::
+
+        r = b \sqrt{1 - \left(\frac{a_1 - \xi}{a_1}\right)^2} \quad (0 \le \xi \le a_1), \qquad
+        r = b \sqrt{1 - \left(\frac{\xi - a_1}{a_2}\right)^2} \quad (a_1 \le \xi \le a_1 + a_2)
+
+    Parameters
+    ----------
+    xi : array_like
+        Station from the nose [m], valid 0 <= xi <= a1 + a2 (clipped outside).
+    a1, a2, b : array_like
+        Fore and aft semi-axes and the maximum radius [m] (:func:`hull_dimensions`).
+
+    Returns
+    -------
+    ndarray [m]
+
+    Notes
+    -----
+    Source: thesis Fig. 3.4; docs/methods.md §1.4.
+
+    Examples
+    --------
+    >>> float(radius(4.32, 4.32, 5.68, 1.25))
+    1.25
     """
     xi = np.asarray(xi, dtype=float)
     a = np.where(xi <= a1, a1, a2)
@@ -108,10 +152,36 @@ def radius(xi, a1, a2, b):
 
 
 def volume_to_station(xi, a1, a2, b):
-    """Hull volume between the nose and station ``xi`` [m3] (closed form).
+    r"""Hull volume between the nose and station ``xi`` [m3] (closed form).
 
-    With u = (xi - a1)/a:  V(xi) = pi b^2 a1 (u - u^3/3 + 2/3) in the forebody and
-    (2/3) pi b^2 a1 + pi b^2 a2 (u - u^3/3) in the afterbody.
+    With u = (xi - a1)/a (a = a1 forward, a2 aft):
+
+    .. math::
+
+        V(\xi) = \pi b^2 a_1 \left(u - \frac{u^3}{3} + \frac23\right) \; (\xi \le a_1), \qquad
+        V(\xi) = \frac23 \pi b^2 a_1 + \pi b^2 a_2 \left(u - \frac{u^3}{3}\right) \; (\xi \ge a_1)
+
+    Parameters
+    ----------
+    xi : array_like
+        Station from the nose [m], valid 0 <= xi <= a1 + a2 (clipped).
+    a1, a2, b : array_like
+        Semi-axes [m] (:func:`hull_dimensions`).
+
+    Returns
+    -------
+    ndarray [m3]
+
+    Notes
+    -----
+    Source: integral of pi r^2 of :func:`radius`; docs/methods.md §1.4.
+
+    Examples
+    --------
+    The forebody is half an ellipsoid: (2/3) pi 1.25^2 4.32 = 14.1372 m3 (closed form):
+
+    >>> round(float(volume_to_station(4.32, 4.32, 5.68, 1.25)), 4)
+    14.1372
     """
     xi = np.asarray(xi, dtype=float)
     fwd = xi <= a1
@@ -220,18 +290,45 @@ def _profile_geometry(volume, fineness_ratio, shape: str) -> HullGeometry:
 
 def hull_geometry(volume, fineness_ratio, nose_fraction=0.432, shape: str = "npl"
                   ) -> HullGeometry:
-    """Build :class:`HullGeometry` from volume [m3], fineness ratio [-], a1/l [-] and shape.
+    r"""Build :class:`HullGeometry` from volume, fineness ratio, a1/l and shape.
 
-    ``shape`` other than ``"npl"`` is integrated from its profile (:func:`_profile_geometry`;
-    ``nose_fraction`` applies to NPL only); the sphere always has l/d = 1.
+    ``shape`` other than ``"npl"`` is integrated from its profile (``nose_fraction`` applies to
+    NPL only); the sphere always has l/d = 1. NPL closed forms:
 
-    Closed forms (docs/methods.md §1.4): S = S_half(a1, b) + S_half(a2, b);
-    xi_CB = [a1 (5 a1/8) + a2 (a1 + 3 a2/8)] / (a1 + a2) (half-ellipsoid centroids 3a/8 from the
-    base, volumes in proportion to a1, a2); planform J1 = pi b l / 2 with centroid
-    [a1 (a1 - 4 a1/(3 pi)) + a2 (a1 + 4 a2/(3 pi))] / l.
+    .. math::
+
+        S = S_{half}(a_1, b) + S_{half}(a_2, b), \qquad
+        \xi_{CB} = \frac{a_1 \frac{5 a_1}{8} + a_2 \left(a_1 + \frac{3 a_2}{8}\right)}{a_1 + a_2},
+
+        J_1 = \frac{\pi b l}{2}, \qquad
+        \xi_{J_1} = \frac{a_1 \left(a_1 - \frac{4 a_1}{3\pi}\right)
+        + a_2 \left(a_1 + \frac{4 a_2}{3 \pi}\right)}{l}
+
+    (half-ellipsoid centroids 3a/8 from the base, volumes in proportion to a1, a2).
+
+    Parameters
+    ----------
+    volume : array_like
+        Hull volume [m3], valid {range:HullSpec.volume}.
+    fineness_ratio : array_like
+        l/d [-], valid in the shape's range (:func:`aerostat_core.geometry.shapes.check_fineness`).
+    nose_fraction : array_like
+        NPL a1/l [-], valid {range:HullSpec.nose_fraction}.
+    shape : str
+        A name of ``aerostat_core.geometry.shapes.SHAPES``.
+
+    Returns
+    -------
+    HullGeometry
+
+    Notes
+    -----
+    Source: Khoury & Gillett (1999) for NPL; docs/methods.md §1.4, §1.13.
 
     Examples
     --------
+    The 100 m3, l/d 2.7 hull: S = S_half(4.825, 2.068) + S_half(6.344, 2.068) = 119.97 m2:
+
     >>> g = hull_geometry(100.0, 2.7)
     >>> round(float(g.surface_area), 2)
     119.97
@@ -270,18 +367,25 @@ def hull_geometry(volume, fineness_ratio, nose_fraction=0.432, shape: str = "npl
 
 
 def shape_integrals(g: HullGeometry, cutoff_station, moment_station):
-    """Jones & DeLaurier hull integrals (docs/methods.md §1.4, source S1).
+    r"""Jones & DeLaurier hull integrals.
 
-    I1 = int_0^{l_h} dA/dxi dxi = A(l_h) = pi r(l_h)^2
-    I3 = int_0^{l_h} (xi_m - xi) dA/dxi dxi = (xi_m - l_h) A(l_h) + V(0..l_h)   (by parts)
-    J1 = int_0^l 2 r dxi = pi b l / 2
-    J2 = int_0^l 2 r (xi_m - xi) dxi = J1 (xi_m - xi_J1)
+    .. math::
+
+        I_1 = \int_0^{l_h} \frac{dA}{d\xi} d\xi = A(l_h) = \pi r(l_h)^2, \qquad
+        I_3 = \int_0^{l_h} (\xi_m - \xi) \frac{dA}{d\xi} d\xi = (\xi_m - l_h) A(l_h) + V(0..l_h),
+
+        J_1 = \int_0^l 2 r\, d\xi, \qquad J_2 = \int_0^l 2 r (\xi_m - \xi)\, d\xi
+        = J_1 (\xi_m - \xi_{J_1})
+
+    (I3 by parts; J1 = pi b l/2 for NPL).
 
     Parameters
     ----------
     g : HullGeometry
+        The hull.
     cutoff_station : array_like
-        l_h, station where the potential-flow term is cut off [m], 0 <= l_h <= l.
+        l_h, station where the potential-flow term is cut off [m], valid 0 <= l_h <= l
+        (clipped).
     moment_station : array_like
         xi_m, moment reference station [m].
 
@@ -291,7 +395,17 @@ def shape_integrals(g: HullGeometry, cutoff_station, moment_station):
 
     Notes
     -----
-    Check: l_h = l gives I1 = 0 and I3 = V (Munk's moment).
+    Valid for a slender body of revolution. Source: Jones & DeLaurier (1983), docs/methods.md
+    §1.4 (S1).
+
+    Examples
+    --------
+    Cut off at the tail, l_h = l: I1 = 0 and I3 = V (Munk's moment):
+
+    >>> g = hull_geometry(100.0, 4.0)
+    >>> i1, i3, j1, j2 = shape_integrals(g, g.length, 0.0)
+    >>> round(float(i1), 9), round(float(i3), 9)
+    (0.0, 100.0)
     """
     lh = np.clip(np.asarray(cutoff_station, dtype=float), 0.0, g.length)
     area = np.pi * g.radius_at(lh) ** 2
@@ -303,12 +417,38 @@ def shape_integrals(g: HullGeometry, cutoff_station, moment_station):
 
 
 def profile_quadrature(g: HullGeometry):
-    """Gauss-Legendre nodes along the hull for surface and volume integrals.
+    r"""Gauss-Legendre nodes along the hull for surface and volume integrals.
 
-    Returns stations xi [m], radii r [m], surface weights w_s (so that sum(w_s F(xi)) =
-    int F dS) [m2] and volume weights w_v (sum(w_v F) = int F dV) [m3]; arrays of shape
-    (..., 96) over a batch (NPL) or (..., QUAD_ORDER) (other shapes; GNVR's nodes are
-    composite over its three pieces, shapes.profile_nodes).
+    .. math::
+
+        \sum_j w_{s,j} F(\xi_j) \approx \int F\, dS
+        = \int 2 \pi r \sqrt{1 + r'^2}\, F\, d\xi, \qquad
+        \sum_j w_{v,j} F(\xi_j) \approx \int F\, dV = \int \pi r^2 F\, d\xi
+
+    Parameters
+    ----------
+    g : HullGeometry
+        The hull.
+
+    Returns
+    -------
+    xi [m], r [m], w_s [m2], w_v [m3]
+        Arrays of shape (..., 96) over a batch (NPL) or (..., QUAD_ORDER) (other shapes; GNVR's
+        nodes are composite over its three pieces, shapes.profile_nodes).
+
+    Notes
+    -----
+    Valid for the smooth profiles of the shape library (exact to about 1e-12).
+    Source: Gauss-Legendre quadrature; docs/methods.md §1.6 (inertia integrals).
+
+    Examples
+    --------
+    The weights reproduce the hull's volume and surface area:
+
+    >>> g = hull_geometry(100.0, 4.0)
+    >>> xi, r, ws, wv = profile_quadrature(g)
+    >>> round(float(wv.sum()), 9), bool(np.isclose(ws.sum(), g.surface_area, rtol=1e-12))
+    (100.0, True)
     """
     if g.shape != "npl":
         pd = _shapes.profile_data(g.shape)

@@ -105,31 +105,46 @@ GNVR_TAIL_K = (
 
 
 def gnvr_profile(x):
-    """GNVR profile P(x) = (r/d)^2 and dP/dx at x = xi/l in [0, 1] (values clipped to it).
+    r"""GNVR profile P(x) = (r/d)^2 and dP/dx at x = xi/l (values clipped to 0 <= x <= 1).
 
-    With u = F x (F = 3.05, stations in units of d):
+    With u = F x (F = 3.05, stations in units of d) and k = 0.137371 (GNVR_TAIL_K; the source's
+    0.1373 truncated):
 
-    * nose, u <= 1.25: ellipse, P = 0.25 (1 - (u/1.25 - 1)^2);
-    * middle, 1.25 <= u <= 2.875: circular arc, P = (sqrt(16 - (u - 1.25)^2) - 3.5)^2;
-    * tail, u >= 2.875: parabola, P = k (F - u), with k = 0.137371 (GNVR_TAIL_K; the
-      source's 0.1373 truncated).
+    .. math::
+
+        P = \begin{cases}
+        \tfrac14 \left(1 - (u/1.25 - 1)^2\right) & u \le 1.25 \text{ (ellipse)} \\
+        \left(\sqrt{16 - (u - 1.25)^2} - 3.5\right)^2 & 1.25 \le u \le 2.875 \text{ (arc)} \\
+        k (F - u) & u \ge 2.875 \text{ (parabola)}
+        \end{cases}
 
     The ellipse and the arc meet at the maximum diameter with zero slope (C1). Arc and tail
     meet with equal radius and slopes within 0.4 % (-0.4446 and -0.4430 in dr/dxi), so the
-    join is not exactly C1. Source: docs/methods.md §1.13, S22.
+    join is not exactly C1.
 
     Parameters
     ----------
     x : array_like
         Station from the nose as a fraction of the hull length, xi/l [-]; values outside
-        [0, 1] are clipped. The published profile is the one at l/d = 3.05; other fineness
-        ratios stretch it along the axis (``SHAPE_INFO["gnvr"]`` gives the range, 2-6,
-        enforced by :func:`check_fineness`).
+        0..1 are clipped.
 
     Returns
     -------
     P, dP/dx : ndarray [-]
         (r/d)^2 and its derivative with respect to x, each of the shape of ``x``.
+
+    Notes
+    -----
+    Valid for the published profile at l/d = 3.05; other fineness ratios stretch it along the
+    axis (``SHAPE_INFO["gnvr"].fineness_range``, enforced by :func:`check_fineness`).
+    Source: docs/methods.md §1.13, S22.
+
+    Examples
+    --------
+    At the maximum diameter, u = 1.25, the radius is d/2, so P = 1/4 with zero slope (closed form):
+
+    >>> [round(float(v), 12) for v in gnvr_profile(1.25 / 3.05)]
+    [0.25, -0.0]
     """
     x = np.clip(np.asarray(x, dtype=float), 0.0, 1.0)
     f = GNVR_FINENESS
@@ -150,24 +165,41 @@ def gnvr_profile(x):
 
 
 def gnvr_volume_fraction(x):
-    """Q(x) = int_0^x P dx of the GNVR profile, in closed form for each piece [-].
+    r"""Q(x) = int_0^x P dx of the GNVR profile, in closed form for each piece [-].
 
-    V(0..xi) = pi d^2 l Q(xi/l), and C_p = 4 Q(1).
+    With t = F x/1.25 - 1 (nose), v = F x - 1.25, R = 4, c = 3.5, s = sqrt(R^2 - v^2) (arc) and
+    x_2 = 2.875/F (tail):
 
-    Nose: (1.25/F) (t - t^3/3 + 2/3) / 4 with t = F x/1.25 - 1. Arc: with v = F x - 1.25,
-    int (sqrt(R^2 - v^2) - c)^2 dv = (R^2 + c^2) v - v^3/3 - c (v s + R^2 asin(v/R)),
-    s = sqrt(R^2 - v^2). Tail: k F ((x - x2) - (x^2 - x2^2)/2).
+    .. math::
+
+        Q_{nose} = \frac{1.25}{4F}\left(t - \frac{t^3}{3} + \frac23\right), \qquad
+        \int (s - c)^2 dv = (R^2 + c^2) v - \frac{v^3}{3} - c\left(v s + R^2 \arcsin\frac{v}{R}\right),
+
+        Q_{tail} = Q(x_2) + k F \left((x - x_2) - \frac{x^2 - x_2^2}{2}\right)
+
+    so that V(0..xi) = pi d^2 l Q(xi/l) and C_p = 4 Q(1).
 
     Parameters
     ----------
     x : array_like
-        Station xi/l [-], clipped to [0, 1] (validity as :func:`gnvr_profile`).
+        Station xi/l [-], clipped to 0..1 (validity as :func:`gnvr_profile`).
 
     Returns
     -------
     ndarray [-]
-        Q(x); Q(1) = C_p / 4 = 0.1544. Source: docs/methods.md §1.13, S22 (the integrals of
-        the three pieces of :func:`gnvr_profile`).
+
+    Notes
+    -----
+    Valid as :func:`gnvr_profile`. Source: docs/methods.md §1.13, S22 (the integrals of the three
+    pieces of :func:`gnvr_profile`).
+
+    Examples
+    --------
+    Q(1) = C_p/4; the public Gertler table S14 gives GNVR C_p = 0.6163, this profile 0.6175
+    (0.2 % apart, docs/methods.md §1.13):
+
+    >>> round(4 * float(gnvr_volume_fraction(1.0)), 4)
+    0.6175
     """
     x = np.clip(np.asarray(x, dtype=float), 0.0, 1.0)
     f, a, rr, c = GNVR_FINENESS, GNVR_NOSE, GNVR_ARC_RADIUS, GNVR_ARC_CENTRE
@@ -191,21 +223,37 @@ def gnvr_volume_fraction(x):
 
 
 def profile_function(shape: str, x):
-    """P(x) = (r/d)^2 and dP/dx [-] of a non-NPL shape at stations x = xi/l in [0, 1].
+    r"""P(x) = (r/d)^2 and dP/dx [-] of a non-NPL shape at stations x = xi/l.
 
-    Gertler shapes: P is the published polynomial in x (:func:`profile_coefficients`); GNVR:
-    the piecewise :func:`gnvr_profile`. Source: docs/methods.md §1.13.
+    Gertler shapes: the polynomial of :func:`profile_coefficients`; GNVR: the piecewise
+    :func:`gnvr_profile`.
+
+    .. math::
+
+        P(x) = \sum_{i=1}^{6} a_i x^i, \qquad \frac{dP}{dx} = \sum_{i=1}^{6} i\, a_i x^{i-1}
 
     Parameters
     ----------
     shape : str
-        A key of :data:`SHAPE_INFO` whose family is "gertler" or "piecewise".
+        A key of :data:`SHAPE_INFO` whose family is "gertler", "piecewise" or "spheroid".
     x : array_like
-        Station xi/l [-], clipped to [0, 1].
+        Station xi/l [-], clipped to 0..1.
 
     Returns
     -------
     P, dP/dx : ndarray [-]
+
+    Notes
+    -----
+    Valid over the shape's fineness range (``SHAPE_INFO``). Source: Gertler (1950), DTMB Report
+    604; docs/methods.md §1.13.
+
+    Examples
+    --------
+    Every spheroid has P = x - x^2, so P(1/2) = 1/4 and P'(1/2) = 0 (closed form):
+
+    >>> [float(v) for v in profile_function("sphere", 0.5)]
+    [0.25, 0.0]
     """
     if SHAPE_INFO[shape].family == "piecewise":
         return gnvr_profile(x)
@@ -215,21 +263,36 @@ def profile_function(shape: str, x):
 
 
 def profile_volume_fraction(shape: str, x):
-    """Q(x) = int_0^x P dx [-] of a non-NPL shape, so that V(0..xi) = pi d^2 l Q(xi/l) [m3].
+    r"""Q(x) = int_0^x P dx [-] of a non-NPL shape, so that V(0..xi) = pi d^2 l Q(xi/l) [m3].
+
+    .. math::
+
+        Q(x) = \int_0^x P(s)\, ds, \qquad V(0..\xi) = \pi d^2 l\, Q(\xi/l)
 
     Exact for both families: the polynomial's integral (Gertler shapes) or the closed form of
-    each GNVR piece (:func:`gnvr_volume_fraction`). Source: docs/methods.md §1.13.
+    each GNVR piece (:func:`gnvr_volume_fraction`).
 
     Parameters
     ----------
     shape : str
-        A key of :data:`SHAPE_INFO` whose family is "gertler" or "piecewise".
+        A key of :data:`SHAPE_INFO` whose family is "gertler", "piecewise" or "spheroid".
     x : array_like
-        Station xi/l [-], clipped to [0, 1].
+        Station xi/l [-], clipped to 0..1.
 
     Returns
     -------
     ndarray [-]
+
+    Notes
+    -----
+    Valid as :func:`profile_function`. Source: docs/methods.md §1.13.
+
+    Examples
+    --------
+    A sphere: Q(1) = int (x - x^2) = 1/6, so V = pi d^3/6 (closed form):
+
+    >>> round(float(profile_volume_fraction("sphere", 1.0)), 12)
+    0.166666666667
     """
     if SHAPE_INFO[shape].family == "piecewise":
         return gnvr_volume_fraction(x)
@@ -367,7 +430,27 @@ SHAPES = tuple(SHAPE_INFO)
 
 def shape_info(shape: str) -> ShapeInfo:
     """The :class:`ShapeInfo` of ``shape``; an unknown name raises ``ValueError`` listing the
-    valid ones."""
+    valid ones.
+
+    Parameters
+    ----------
+    shape : str
+        Hull shape name, valid: one of ``SHAPES``.
+
+    Returns
+    -------
+    ShapeInfo
+
+    Notes
+    -----
+    A catalogue lookup (no equation). Source: each entry's ``ShapeInfo.source``;
+    docs/methods.md §1.13.
+
+    Examples
+    --------
+    >>> shape_info("gnvr").fineness_range
+    (2.0, 6.0)
+    """
     try:
         return SHAPE_INFO[shape]
     except (KeyError, TypeError):
@@ -377,10 +460,34 @@ def shape_info(shape: str) -> ShapeInfo:
 
 
 def check_fineness(shape: str, fineness_ratio) -> None:
-    """Raise ``ValueError`` when a fineness ratio is outside the shape's valid range.
+    r"""Raise ``InputError`` when a fineness ratio is outside the shape's valid range.
 
-    The message names the field, the value, the shape and the range, e.g.
-    ``HullSpec.fineness_ratio = 4 is outside the valid range [1, 1] for shape 'sphere'``.
+    .. math::
+
+        f_{lo}(\text{shape}) \le f \le f_{hi}(\text{shape})
+
+    with the bounds of ``SHAPE_INFO[shape].fineness_range`` (1e-9 tolerance). The message names
+    the field, the value, the shape and the range.
+
+    Parameters
+    ----------
+    shape : str
+        A name of ``SHAPES``.
+    fineness_ratio : array_like
+        l/d [-]; valid in the shape's range, within the registry's widest
+        {range:HullSpec.fineness_ratio}.
+
+    Notes
+    -----
+    Source: ``SHAPE_INFO`` (docs/methods.md §1.13, each shape's source).
+
+    Examples
+    --------
+    >>> check_fineness("npl", 4.0)
+    >>> check_fineness("sphere", 4.0)
+    Traceback (most recent call last):
+    ...
+    aerostat_core.base.validation.InputError: HullSpec.fineness_ratio = 4 is outside the valid range [1, 1] for shape 'sphere' (Sphere)
     """
     lo, hi = shape_info(shape).fineness_range
     f = np.asarray(fineness_ratio, dtype=float)
@@ -395,26 +502,37 @@ def check_fineness(shape: str, fineness_ratio) -> None:
 
 @cache
 def gertler_coefficients(m: float, r0: float, r1: float, cp: float) -> np.ndarray:
-    """Coefficients a_1..a_6 of the Gertler profile P(x) = (r/d)^2 = sum a_i x^i.
+    r"""Coefficients a_1..a_6 of the Gertler profile P(x) = (r/d)^2 = sum a_i x^i.
 
-    Solves the six linear conditions of the module docstring (Gertler 1950, DTMB Report 604).
+    Solves the six linear conditions
+
+    .. math::
+
+        P'(0) = 2 r_0, \quad P(1) = 0, \quad P'(1) = -2 r_1, \quad P(m) = \tfrac14, \quad
+        P'(m) = 0, \quad 4 \int_0^1 P\, dx = C_p
 
     Parameters
     ----------
     m : float
-        Station of maximum diameter / length [-], (0, 1).
+        Station of maximum diameter / length [-], valid 0 < m < 1.
     r0, r1 : float
         Nose and tail radius parameters R l / d^2 [-], >= 0.
     cp : float
-        Prismatic coefficient [-], (0.4, 0.8).
+        Prismatic coefficient [-], valid about 0.4-0.8.
 
     Returns
     -------
     ndarray, shape (7,)
         a_0 (= 0) .. a_6, lowest power first (``numpy.polynomial.polynomial`` order).
 
+    Notes
+    -----
+    Source: Gertler (1950), DTMB Report 604; docs/methods.md §1.13.
+
     Examples
     --------
+    The sphere's parameters (m = r0 = r1 = 1/2, C_p = 2/3) give P = x - x^2 (closed form):
+
     >>> np.round(gertler_coefficients(0.5, 0.5, 0.5, 2 / 3), 9)[:3].tolist()
     [0.0, 1.0, -1.0]
     """
@@ -435,11 +553,34 @@ def gertler_coefficients(m: float, r0: float, r1: float, cp: float) -> np.ndarra
 
 
 def profile_coefficients(shape: str) -> np.ndarray:
-    """Polynomial P(x) = (r/d)^2 of a non-NPL shape, lowest power first.
+    r"""Polynomial P(x) = (r/d)^2 of a non-NPL shape, lowest power first.
+
+    .. math::
+
+        P_{spheroid}(x) = x - x^2, \qquad P_{Gertler}(x) = \sum_{i=1}^{6} a_i(m, r_0, r_1, C_p)\, x^i
 
     Spheroids (sphere, oblate, Helikite hull) have P = x - x^2 at every fineness ratio (an
     ellipse stretched along x); the Gertler shapes use :func:`gertler_coefficients` with the
-    parameters of ``GERTLER_TABLE`` (public table, docs/methods.md S7).
+    parameters of ``GERTLER_TABLE``.
+
+    Parameters
+    ----------
+    shape : str
+        A name of ``SHAPES`` with a polynomial profile (not "npl" or "gnvr").
+
+    Returns
+    -------
+    ndarray [-]
+
+    Notes
+    -----
+    Valid over each shape's fineness range. Source: public Gertler table (docs/methods.md
+    §1.13, S7).
+
+    Examples
+    --------
+    >>> profile_coefficients("sphere").tolist()
+    [0.0, 1.0, -1.0]
     """
     if shape in ("sphere", "oblate", "helikite"):
         return np.array([0.0, 1.0, -1.0])
@@ -453,10 +594,38 @@ def profile_coefficients(shape: str) -> np.ndarray:
 
 
 def profile_radius_ratio(shape: str, x, nose_fraction: float = 0.432):
-    """Dimensionless profile r/d at stations x = xi/l (0 outside [0, 1]).
+    r"""Dimensionless profile r/d at stations x = xi/l (0 outside 0..1).
 
-    NPL: r/d = 0.5 sqrt(1 - ((x - m)/m)^2) forward of m = nose_fraction, with (1 - m) aft.
-    Others: sqrt(max(P(x), 0)) (:func:`profile_function`).
+    .. math::
+
+        \frac{r}{d}\Big|_{NPL} = \frac12 \sqrt{1 - \left(\frac{x - m}{a}\right)^2},\;
+        a = m \text{ forward of } m, \; 1 - m \text{ aft}; \qquad
+        \frac{r}{d} = \sqrt{\max(P(x), 0)} \text{ otherwise}
+
+    Parameters
+    ----------
+    shape : str
+        A name of ``SHAPES``.
+    x : array_like
+        Station xi/l [-].
+    nose_fraction : float
+        NPL station of maximum diameter m [-], valid {range:HullSpec.nose_fraction}.
+
+    Returns
+    -------
+    ndarray [-]
+
+    Notes
+    -----
+    Source: Khoury & Gillett (1999) for NPL; :func:`profile_function` otherwise;
+    docs/methods.md §1.4, §1.13.
+
+    Examples
+    --------
+    The NPL hull is d/2 at its maximum-diameter station (closed form):
+
+    >>> float(profile_radius_ratio("npl", 0.432))
+    0.5
     """
     x = np.asarray(x, dtype=float)
     if shape == "npl":
@@ -525,7 +694,39 @@ def _piecewise_nodes(order: int):
 
 
 def profile_nodes(shape: str, order: int = QUAD_ORDER):
-    """Quadrature nodes x in [0, 1] and dx weights for the profile integrals of ``shape``."""
+    r"""Quadrature nodes x in [0, 1] and dx weights for the profile integrals of ``shape``.
+
+    Gauss-Legendre in theta with the cosine map (per GNVR piece for the piecewise shape):
+
+    .. math::
+
+        x = \frac{1 - \cos\theta}{2}, \qquad
+        \int_0^1 F(x)\, dx \approx \sum_j w_j \frac{\sin\theta_j}{2} F(x_j)
+
+    Parameters
+    ----------
+    shape : str
+        A name of ``SHAPES``.
+    order : int
+        Gauss-Legendre order [-], valid >= 8 (default ``QUAD_ORDER``).
+
+    Returns
+    -------
+    x, wx : ndarray [-]
+
+    Notes
+    -----
+    The map makes integrands with r ~ sqrt(x) at nose and tail smooth. Source: Gauss-Legendre
+    quadrature (Abramowitz & Stegun 1964, 25.4.29); convergence in tests/core/test_shapes.py.
+
+    Examples
+    --------
+    The weights integrate 1 and x exactly:
+
+    >>> x, w = profile_nodes("npl")
+    >>> round(float(w.sum()), 12), round(float((w * x).sum()), 12)
+    (1.0, 0.5)
+    """
     if SHAPE_INFO[shape].family == "piecewise":
         return _piecewise_nodes(order)
     return _nodes(order)
@@ -533,12 +734,40 @@ def profile_nodes(shape: str, order: int = QUAD_ORDER):
 
 @cache
 def profile_data(shape: str, order: int = QUAD_ORDER) -> ProfileData:
-    """Quadrature nodes and the fineness-independent integrals of a non-NPL profile.
+    r"""Quadrature nodes and the fineness-independent integrals of a non-NPL profile.
 
-    C_p = 4 int P dx, x_cv = int x P dx / int P dx (exact for a polynomial P; for GNVR C_p is
-    the closed form of :func:`gnvr_volume_fraction` and x_cv uses the composite nodes);
-    planform J1/(d l) = 2 int sqrt(P) dx and its centroid, by Gauss-Legendre in t with
-    x = (1 - cos t)/2 (per piece for GNVR, :func:`_piecewise_nodes`).
+    .. math::
+
+        C_p = 4 \int_0^1 P\, dx, \qquad x_{cv} = \frac{\int_0^1 x P\, dx}{\int_0^1 P\, dx}, \qquad
+        \frac{J_1}{d\, l} = 2 \int_0^1 \sqrt{P}\, dx
+
+    (exact polynomial integrals for the Gertler shapes; for GNVR C_p is the closed form of
+    :func:`gnvr_volume_fraction` and x_cv uses the composite nodes); the planform and its
+    centroid by Gauss-Legendre in t with x = (1 - cos t)/2 (per piece for GNVR).
+
+    Parameters
+    ----------
+    shape : str
+        A name of ``SHAPES`` other than "npl".
+    order : int
+        Gauss-Legendre order [-], valid >= 8.
+
+    Returns
+    -------
+    ProfileData
+
+    Notes
+    -----
+    Valid over each shape's fineness range. Source: docs/methods.md §1.13.
+
+    Examples
+    --------
+    For the sphere (P = x - x^2): C_p = 2/3, centre of volume at 1/2, planform
+    2 int sqrt(x - x^2) dx = pi/4 (closed forms):
+
+    >>> pd = profile_data("sphere")
+    >>> round(pd.cp, 10), round(pd.x_cv, 10), round(pd.planform, 10) == round(np.pi / 4, 10)
+    (0.6666666667, 0.5, True)
     """
     if SHAPE_INFO[shape].family == "piecewise":
         x, wx = profile_nodes(shape, order)
@@ -583,10 +812,33 @@ def profile_data(shape: str, order: int = QUAD_ORDER) -> ProfileData:
 
 
 def prismatic_coefficient(shape: str, nose_fraction: float = 0.432) -> float:
-    """C_p = V / (pi d^2 l / 4) [-]: 2/3 for the NPL double ellipsoid and every spheroid.
+    r"""Prismatic coefficient C_p [-] of a shape.
+
+    .. math::
+
+        C_p = \frac{V}{\pi d^2 l / 4} = 4 \int_0^1 P\, dx
+
+    2/3 for the NPL double ellipsoid and every spheroid.
+
+    Parameters
+    ----------
+    shape : str
+        A name of ``SHAPES``.
+    nose_fraction : float
+        NPL a1/l [-] (C_p does not depend on it), valid {range:HullSpec.nose_fraction}.
+
+    Returns
+    -------
+    float [-]
+
+    Notes
+    -----
+    Source: docs/methods.md §1.13 (public Gertler tables S7, S14).
 
     Examples
     --------
+    GNVR: 0.6175, against 0.6163 in table S14 and 0.615 in S7:
+
     >>> round(prismatic_coefficient("gnvr"), 4)
     0.6175
     """
@@ -596,9 +848,35 @@ def prismatic_coefficient(shape: str, nose_fraction: float = 0.432) -> float:
 
 
 def dimensions(shape: str, volume, fineness_ratio):
-    """Length l and maximum diameter d [m] of a hull of given volume [m3] and l/d [-].
+    r"""Length l and maximum diameter d [m] of a hull of given volume and fineness ratio.
 
-    d = (4 V / (pi f C_p))^(1/3), l = f d.
+    .. math::
+
+        d = \left(\frac{4 V}{\pi f C_p}\right)^{1/3}, \qquad l = f d
+
+    Parameters
+    ----------
+    shape : str
+        A name of ``SHAPES``.
+    volume : array_like
+        Hull volume V [m3], valid {range:HullSpec.volume}.
+    fineness_ratio : array_like
+        l/d [-], in the shape's range (:func:`check_fineness`).
+
+    Returns
+    -------
+    length, diameter : ndarray [m]
+
+    Notes
+    -----
+    Source: definition of C_p; docs/methods.md §1.13.
+
+    Examples
+    --------
+    A sphere of volume 4 pi/3 has d = 2 (closed form):
+
+    >>> [round(float(v), 12) for v in dimensions("sphere", 4 * np.pi / 3, 1.0)]
+    [2.0, 2.0]
     """
     cp = prismatic_coefficient(shape)
     v = np.asarray(volume, dtype=float)
@@ -623,15 +901,14 @@ class HullSpec:
     Parameters
     ----------
     fineness_ratio : float or None
-        Length / maximum diameter f [-] (design variable 1), valid in the shape's range
-        (``aerostat_core.geometry.shapes.SHAPE_INFO``: NPL [1.5, 8], Gertler shapes [2, 6], sphere 1,
-        oblate [0.5, 0.95], Helikite [1, 1.6]); ``None`` takes the shape's standard value
-        (4.0 for NPL).
+        Length / maximum diameter f [-] (design variable 1), valid in the shape's own range
+        (``SHAPE_INFO[shape].fineness_range``, :func:`check_fineness`), all within
+        {range:HullSpec.fineness_ratio}; ``None`` takes the shape's standard value (4.0 for NPL).
     nose_fraction : float
-        Station of maximum diameter / length, a1/l [-], valid [0.2, 0.8]; NPL standard 0.432
+        Station of maximum diameter / length, a1/l [-], valid {range:HullSpec.nose_fraction}; NPL standard 0.432
         (NPL only; the other profiles fix their own).
     volume : float or None
-        Hull volume [m3], valid [1, 1e5]; ``None`` sizes the smallest hull that meets the blow-by
+        Hull volume [m3], valid {range:HullSpec.volume}; ``None`` sizes the smallest hull that meets the blow-by
         limit at the design wind with positive free lift.
     shape : str
         Hull shape, one of ``aerostat_core.geometry.shapes.SHAPES``: "npl" (default), "gnvr", "wang",

@@ -45,10 +45,20 @@ def mass_breakdown(
     ballonet_mass=0.0,
     inertia_integrals=None,
 ) -> MassBreakdown:
-    """Mass budget of the aerostat.
+    r"""Mass budget of the aerostat.
 
-    m_hull = GSM_h S_h; m_fin from the fin fabric; m_gas = rho_gas V; m_misc = ratio m_hull;
-    m_a = m_hull + m_fin + m_gas + m_misc + m_payload; m_total = m_a + m_tether.
+    .. math::
+
+        m_{hull} = \sigma_h S_h, \quad m_{gas} = \rho_{gas} V, \quad
+        m_{misc} = k_{misc} m_{hull}, \quad
+        m_a = m_{hull} + m_{fin} + m_{gas} + m_{misc} + m_{payload} + m_{battery}
+        + m_{ballonet},
+
+        m_{total} = m_a + m_{tether}, \qquad
+        \xi_{cg} = \frac{\sum_i m_i \xi_i}{m_a}, \qquad
+        I_{yy} = \sum_i \left(I_i + m_i \left[(\xi_i - \xi_{cg})^2
+        + (z_i - z_{cg})^2\right]\right)
+
     Positions: hull fabric at its surface centroid, gas at the centre of buoyancy, fins at their
     planform centroid (the arrangements are symmetric, so z = 0), payload and miscellaneous items
     at the hull belly below the centre of buoyancy.
@@ -56,15 +66,18 @@ def mass_breakdown(
     Parameters
     ----------
     hull : HullGeometry
+        The hull.
     fins : FinGeometry
+        The fins (their mass and centroid).
     hull_areal_density : float
-        Hull fabric [kg/m2].
+        Hull fabric sigma_h [kg/m2], valid {range:Fabric.areal_density}.
     gas_density : array_like
         Lifting-gas density in the hull [kg/m3].
     misc_ratio : float
-        Miscellaneous mass / hull fabric mass [-] (Table 2.2: 0.30).
+        Miscellaneous mass / hull fabric mass k_misc [-], valid
+        {range:Configuration.misc_mass_ratio} (Table 2.2: 0.30).
     payload_mass : float
-        [kg].
+        [kg], valid {range:Requirement.payload_mass}.
     tether_mass : array_like
         [kg].
     battery_mass : float
@@ -75,11 +88,32 @@ def mass_breakdown(
         (int ((xi - xi_s)^2 + r^2/2) dS [m4], int ((xi - xi_cb)^2 + r^2/4) dV [m5]) where the
         caller has them (aerostat_core.model.airframe: a scaled unit hull); None: by quadrature.
 
+    Returns
+    -------
+    MassBreakdown
+
     Notes
     -----
-    Source: docs/methods.md §1.6; Table 2.2 of the thesis for the ratios. The pitch inertia uses the
+    Valid for a thin uniform envelope and point masses for the rest. The pitch inertia uses the
     hull profile: shell I = sigma int ((xi - xi_s)^2 + r^2/2) dS, gas I = rho int ((xi - xi_cb)^2
     + r^2/4) dV, point masses for the rest, then the parallel-axis theorem.
+    Source: docs/methods.md §1.6; Table 2.2 of the thesis for the ratios.
+
+    Examples
+    --------
+    100 m3 of gas at 0.17 kg/m3 weighs 17 kg; the miscellaneous items are 0.3 of the hull
+    fabric; the tether is outside the aerostat's mass (by hand):
+
+    >>> import aerostat_core
+    >>> from aerostat_core.geometry.fins import fin_geometry
+    >>> from aerostat_core.geometry.hull import hull_geometry
+    >>> h = hull_geometry(100.0, 4.0)
+    >>> m = mass_breakdown(h, fin_geometry(h, aerostat_core.FinSpec(), 0.1), 0.13, 0.17, 0.3,
+    ...                    10.0, 6.0)
+    >>> float(m.items["lifting gas"]), round(float(m.items["miscellaneous"] / m.items["hull"]), 12)
+    (17.0, 0.3)
+    >>> round(float(m.total - m.aerostat), 12)
+    6.0
     """
     m_hull = hull_areal_density * hull.surface_area
     m_gas = np.asarray(gas_density, dtype=float) * hull.volume

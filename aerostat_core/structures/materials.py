@@ -237,8 +237,27 @@ def awg_area(gauge: int) -> float:
 
     d = 0.127 mm x 92^((36 - n)/39) (ASTM B258 definition of the gauge), A = pi d^2/4.
 
+    .. math::
+
+        d = 0.127\\,\\mathrm{mm} \\times 92^{(36 - n)/39}, \\qquad A = \\frac{\\pi d^2}{4}
+
+    Parameters
+    ----------
+    gauge : int
+        AWG number n [-], valid -3 (0000) to 40.
+
+    Returns
+    -------
+    float [m2]
+
+    Notes
+    -----
+    Source: ASTM B258 (the gauge's definition); docs/methods.md S20.
+
     Examples
     --------
+    ASTM B258's table gives 0.518 mm2 for AWG 20:
+
     >>> round(awg_area(20) * 1e6, 4)
     0.5176
     """

@@ -14,6 +14,10 @@ import numpy as np
 def required_pressure(q, rho_air, rho_gas, g, diameter, factor):
     """Internal pressure needed at the top of the hull [Pa].
 
+    .. math::
+
+        p_{req} = k_p\\, q + (\\rho_{air} - \\rho_{gas})\\, g\\, d
+
     p_req = factor q + (rho_air - rho_gas) g d: at least ``factor`` times the dynamic pressure
     at the lowest point of the hull (nose dimpling), plus the hydrostatic gas head, by which
     the pressure difference across the fabric grows from the bottom to the top.
@@ -42,6 +46,8 @@ def required_pressure(q, rho_air, rho_gas, g, diameter, factor):
 
     Examples
     --------
+    1.2 x 100 Pa + (1.2 - 0.2) x 10 x 4 = 160 Pa (by hand):
+
     >>> round(float(required_pressure(100.0, 1.2, 0.2, 10.0, 4.0, 1.2)), 1)
     160.0
     """
@@ -51,6 +57,10 @@ def required_pressure(q, rho_air, rho_gas, g, diameter, factor):
 
 def membrane_loads(pressure, radius, moment=0.0):
     """Hoop and longitudinal membrane loads of a pressurised hull section [N/m].
+
+    .. math::
+
+        N_{hoop} = p\\, r, \\qquad N_{long} = \\frac{p\\, r}{2} + \\frac{|M|}{\\pi r^2}
 
     N_hoop = p r; N_long = p r/2 + |M|/(pi r^2) (thin-walled cylinder of radius r with a
     bending moment M about the section: the hoop and axial membrane loads of a closed pressure
@@ -77,6 +87,8 @@ def membrane_loads(pressure, radius, moment=0.0):
 
     Examples
     --------
+    200 Pa in a 2 m radius: p r = 400 N/m, p r/2 = 200 N/m (by hand):
+
     >>> [float(x) for x in membrane_loads(200.0, 2.0)]
     [400.0, 200.0]
     """
@@ -86,6 +98,11 @@ def membrane_loads(pressure, radius, moment=0.0):
 
 def allowable_pressure(strength, safety_factor, radius, moment=0.0):
     """Largest pressure the fabric carries with the safety factor [Pa].
+
+    .. math::
+
+        p_{allow} = \\min\\left(\\frac{F}{SF\\, r},\\;
+        \\frac{2}{r}\\left(\\frac{F}{SF} - \\frac{|M|}{\\pi r^2}\\right)\\right)
 
     From N_hoop and N_long <= F/SF: p <= F/(SF r) and p <= 2 (F/SF - |M|/(pi r^2))/r.
 
@@ -105,6 +122,7 @@ def allowable_pressure(strength, safety_factor, radius, moment=0.0):
     -----
     Valid with the thin-membrane loads of :func:`membrane_loads`; a bending moment larger than
     pi r^2 F/SF makes the allowable pressure negative (the hull creases whatever the pressure).
+    Source: thin-shell statics (:func:`membrane_loads`); docs/methods.md §1.14.
     """
     r = np.asarray(radius, float)
     n = float(strength) / float(safety_factor)

@@ -26,6 +26,10 @@ def battery_mass(power, hours, energy_density, depth_of_discharge=1.0):
 
     m_b = P t / (e DoD)
 
+    .. math::
+
+        m_b = \\frac{P\\, t}{e\\, \\mathrm{DoD}}
+
     Parameters
     ----------
     power : array_like
@@ -35,7 +39,7 @@ def battery_mass(power, hours, energy_density, depth_of_discharge=1.0):
     energy_density : float
         Pack-level specific energy [Wh/kg], > 0.
     depth_of_discharge : float
-        Usable fraction of the rated energy [-], (0, 1].
+        Usable fraction of the rated energy [-], valid {range:MissionSpec.battery_depth_of_discharge}.
 
     Returns
     -------
@@ -51,6 +55,8 @@ def battery_mass(power, hours, energy_density, depth_of_discharge=1.0):
 
     Examples
     --------
+    100 W for 24 h at 150 Wh/kg and 80 % depth: 2400/(150 x 0.8) = 20 kg (by hand):
+
     >>> float(battery_mass(100.0, 24.0, 150.0, 0.8))
     20.0
     """
@@ -99,6 +105,12 @@ def size_conductors(
     Mass per metre 2 (A rho_Cu + A_ins rho_ETFE); strength 2 A sigma_y,Cu (copper at its yield
     when the strength member breaks).
 
+    .. math::
+
+        P_s = \\frac{P}{1 - \\epsilon}, \\quad I = \\frac{P_s}{V_s}, \\quad
+        A = \\max\\left(\\frac{2 \\rho_{Cu} L P_s}{\\epsilon V_s^2}, \\frac{I}{J_{max}}\\right),
+        \\quad m' = 2 \\left(A \\rho_{Cu,m} + A_{ins} \\rho_{ETFE}\\right)
+
     Parameters
     ----------
     power : float
@@ -121,11 +133,15 @@ def size_conductors(
     Notes
     -----
     Resistivity and densities: aerostat_core.base.constants (IEC 60028 copper, ETFE insulation).
+    Source: Ohm's and Joule's laws; docs/methods.md §1.14.
     Valid where conductor heating stays within the insulation rating (J_max) and skin effect is
     negligible (DC or mains frequency at these sizes). The delivered voltage is V_s (1 - eps).
 
     Examples
     --------
+    1 kW over 300 m at 400 V with 10 % loss: P_s = 1111.1 W, I = 2.778 A,
+    A = 2 x 1.7241e-8 x 300 x 1111.1/(0.1 x 400^2) = 0.718 mm2 (by hand):
+
     >>> k = size_conductors(1000.0, 300.0, 400.0, 0.1, 5e6, 0.25e-3)
     >>> round(k.area * 1e6, 3), round(k.current, 3)
     (0.718, 2.778)
@@ -167,6 +183,25 @@ def size_conductors(
 
 def power_tether(base: TetherSpec, k: Conductors) -> TetherSpec:
     """The strength member ``base`` with the conductor pair ``k`` bundled in.
+
+    .. math::
+
+        d = \\sqrt{d_{base}^2 + 2 d_{ins}^2}, \\qquad m' = m'_{base} + m'_k
+
+    Parameters
+    ----------
+    base : TetherSpec
+        The strength member.
+    k : Conductors
+        The pair (:func:`size_conductors`).
+
+    Returns
+    -------
+    TetherSpec
+
+    Notes
+    -----
+    Valid for a round bundle of the same total cross-section. Source: docs/methods.md §1.14.
 
     d = sqrt(d_base^2 + 2 d_ins^2) (a round bundle of the same total cross-section);
     mass per metre and breaking load add; the axial stiffness is the strength member's (copper

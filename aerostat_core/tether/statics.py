@@ -124,15 +124,27 @@ def march(
     weight_per_length: float,
     segments: int = 50,
 ):
-    """Integrate the tether from the top (confluence point) down to the winch.
+    r"""Integrate the tether from the top (confluence point) down to the winch.
+
+    Heun's method in unstretched arc length s (down the line), elevation theta = atan2(T_z, T_x):
+
+    .. math::
+
+        \frac{dT_x}{ds} = f_x, \quad \frac{dT_z}{ds} = f_z - w', \quad
+        \frac{dX}{ds} = -\left(1 + \frac{T}{EA}\right)\cos\theta, \quad
+        \frac{dZ}{ds} = -\left(1 + \frac{T}{EA}\right)\sin\theta,
+
+        \mathbf f = \tfrac12 \rho d C_{dn} |U \sin\theta| U \sin\theta\, (\sin\theta, -\cos\theta)
+        + \tfrac12 \rho \pi d C_{dt} |U \cos\theta| U \cos\theta\, (\cos\theta, \sin\theta)
 
     Parameters
     ----------
     top_tension_x, top_tension_z : array_like
         Tension components at the top [N] = (aerostat drag, aerostat net lift).
     length : float
-        Unstretched tether length [m].
+        Unstretched tether length [m], > 0.
     spec : TetherSpec
+        Diameter, drag coefficients and EA of the line.
     air_density : array_like
         [kg/m3] (uniform along the line).
     wind : callable
@@ -141,21 +153,36 @@ def march(
         Estimated node heights above the winch [m], shape (segments + 1, ...), used to look up
         the wind (the caller iterates for sheared wind).
     weight_per_length : float
-        Line weight in air net of buoyancy [N/m].
+        Line weight in air net of buoyancy w' [N/m].
     segments : int
-        Number of segments n_s.
+        Number of segments n_s [-], valid >= 1 (the tether_segments input:
+        {range:Configuration.tether_segments}).
 
     Returns
     -------
     tx, tz, dx, dz : ndarray, shape (segments + 1, ...)
-        Tension components and node offsets from the top [m].
+        Tension components [N] and node offsets from the top [m].
 
     Notes
     -----
-    Heun's method on the ODE of the module docstring, with the load of :func:`_line_load`.
-    Batches of up to ``_WIDE`` columns (every single design, sweep and sizing grid) step it
-    on a stacked complex state (below); wider ones run :func:`_march_plain`. Both give the
-    same numbers to a few ulp per step.
+    Valid for a taut line (T_z > 0: the elevation stays defined) in steady wind; second order in
+    ds. Batches of up to ``_WIDE`` columns step it on a stacked complex state; wider ones run
+    ``_march_plain``; both give the same numbers to a few ulp per step.
+    Source: Rajani, Pant & Sudhakar (2010) (thesis Fig. 3.10), extended as in docs/methods.md
+    §1.9 (S2); drag split as in MoorDyn.
+
+    Examples
+    --------
+    No wind, 1000 N up at the top, 2 N/m of line, EA = 1e6 N: the winch sees 1000 - 200 = 800 N
+    and the line stretches int T/EA ds = (1000 x 100 - 2 x 100^2/2)/1e6 = 0.09 m (by hand; Heun
+    is exact for this linear tension):
+
+    >>> from aerostat_core.structures.materials import TetherSpec
+    >>> h = np.linspace(100.0, 0.0, 51)
+    >>> tx, tz, dx, dz = march(0.0, 1000.0, 100.0, TetherSpec(axial_stiffness=1e6), 1.2,
+    ...                        lambda z: 0.0 * z, h, 2.0)
+    >>> round(float(tz[-1]), 9), round(float(dz[-1]), 9)
+    (800.0, -100.09)
     """
     tx0 = np.asarray(top_tension_x, float)
     tz0 = np.asarray(top_tension_z, float)
@@ -254,7 +281,18 @@ def solve_tether(
     tol: float = 1e-6,
     heights_hint=None,
 ) -> TetherSolution:
-    """Static tether shape with the wind evaluated at the converged node heights.
+    r"""Static tether shape with the wind evaluated at the converged node heights.
+
+    Solves the fixed point H = G(H): the node heights H (winch = 0) at which the wind is looked
+    up reproduce themselves through the march G of :func:`march`:
+
+    .. math::
+
+        H^{(n+1)} = G\left(H^{(n)}\right) - \gamma_n \left(G(H^{(n)}) - G(H^{(n-1)})\right),
+        \qquad \gamma_n = \frac{\langle F_n, F_n - F_{n-1} \rangle}{\| F_n - F_{n-1} \|^2},
+        \; F_n = G(H^{(n)}) - H^{(n)}
+
+    (Anderson acceleration of depth 1 from the third march on; gamma = 0 is the plain pass).
 
     Parameters
     ----------
@@ -262,17 +300,21 @@ def solve_tether(
         ``top_tension(height)`` -> (T_x, T_z) at the top [N] given the top's height [m] (the
         aerostat's drag can depend on the wind at its height).
     length : float
-        Unstretched length [m].
+        Unstretched length [m], > 0.
     spec : TetherSpec
-    air_density : array_like [kg/m3]
+        The line.
+    air_density : array_like
+        [kg/m3].
     wind : callable
         ``wind(z, height)`` -> wind [m/s] at heights ``z`` given the top height ``height``.
-    weight_per_length : float [N/m]
+    weight_per_length : float
+        Line weight in air net of buoyancy [N/m].
     segments : int
+        Number of segments [-], valid >= 1.
     sheared : bool
         False when the wind is uniform in height (one pass is exact).
     max_passes : int
-        Fixed-point passes on the node heights (sheared wind).
+        Fixed-point passes on the node heights (sheared wind) [-], >= 1.
     tol : float
         Height convergence tolerance [m]: the passes stop when the top height and every node
         height of a march's output are within ``tol`` of the heights it was marched with.
@@ -292,20 +334,30 @@ def solve_tether(
 
     Notes
     -----
-    The fixed point is H = G(H): the node heights H (winch = 0) at which the wind is looked up
-    reproduce themselves through the march G. From a vertical line, plain passes H <- G(H)
-    contract by ~0.03 a pass on a 300 m line (the slowest mode of dG/dH, nearly a scaling of
-    the line); from the third march on, an Anderson step of depth 1 (Walker & Ni, SIAM J.
-    Numer. Anal. 49, 2011) takes the rate to ~0.002-0.02, so ~5 marches instead of ~7. It
-    only recombines the two latest outputs of G, so a converged answer is G's own fixed point.
+    Valid as :func:`march`. From a vertical line, plain passes contract by ~0.03 a pass on a 300 m
+    line (the slowest mode of dG/dH, nearly a scaling of the line); the Anderson step (Walker &
+    Ni, SIAM J. Numer. Anal. 49, 2011) takes the rate to ~0.002-0.02, so ~5 marches instead of
+    ~7. It only recombines the two latest outputs of G, so a converged answer is G's own fixed
+    point.
 
-    Warm start (``heights_hint``; docs/methods.md §1.9): the passes start from given heights
-    instead of the vertical line. A pass shrinks the error ~30-100 times, so a start within
-    ~0.5 m saves one march of the ~5 from the vertical line, one within a few cm two. For a
-    power law the wind depends only on z / z_top, so a hint of the right shape but the wrong
-    scale is as good as the answer itself. The passes stop when every column has converged
-    or was slack in the last two marches (its clipped heights need not settle; the
-    taut_tether constraint rejects the line), or after ``max_passes``.
+    Warm start (``heights_hint``): the passes start from given heights instead of the vertical
+    line. A pass shrinks the error ~30-100 times, so a start within ~0.5 m saves one march of the
+    ~5 from the vertical line, one within a few cm two. For a power law the wind depends only on
+    z / z_top, so a hint of the right shape but the wrong scale is as good as the answer itself.
+    The passes stop when every column has converged or was slack in the last two marches (its
+    clipped heights need not settle; the taut_tether constraint rejects the line), or after
+    ``max_passes``. Source: docs/methods.md §1.9.
+
+    Examples
+    --------
+    The no-wind line of :func:`march`: height 100.09 m, 800 N at the winch, no blow-by:
+
+    >>> from aerostat_core.structures.materials import TetherSpec
+    >>> s = solve_tether(lambda h: (0.0 * h, 1000.0 + 0.0 * h), 100.0,
+    ...                  TetherSpec(axial_stiffness=1e6), 1.2, lambda z, h: 0.0 * z, 2.0,
+    ...                  sheared=False)
+    >>> round(float(s.height), 9), round(float(s.tension_winch), 9), float(s.blow_by)
+    (100.09, 800.0, 0.0)
     """
     s = np.linspace(0.0, length, segments + 1)
     height = np.asarray(length, float)
@@ -386,24 +438,32 @@ def solve_tether(
 
 def interpolated_heights(top_tension_x, top_tension_z, elevation, z, length: float,
                          vertical: bool = False) -> np.ndarray:
-    """Estimated node heights of a tether from solved ones: a warm start (``heights_hint``)
-    for :func:`solve_tether`.
+    r"""Estimated node heights of a tether from solved ones: a warm start (``heights_hint``) for
+    :func:`solve_tether`.
 
-    The elevation profile theta_i (node i) of the known solutions, and the part of each
-    segment's rise that is not ds sin(theta) (its stretch), are interpolated per node in the
-    top elevation theta_0 = atan2(T_z, T_x) (Lagrange, through the K known columns and, with
-    ``vertical``, the vertical line theta = pi/2 without stretch), then the rises summed from
-    the winch up: z_i = sum_{j >= i} [ds sin((theta_j + theta_{j+1}) / 2) + stretch part].
-    A line's shape follows its top angle far more closely than its heights do (on a 300 m
-    line at 0-20 m/s, within ~0.5 m where heights interpolated in wind speed miss by ~4 m).
+    The elevation profile theta_i of the K known solutions, and the part of each segment's rise
+    that is not ds sin(theta) (its stretch, e_i), are interpolated per node in the top elevation
+    theta_0 = atan2(T_z, T_x) by Lagrange polynomials, then the rises summed from the winch up:
+
+    .. math::
+
+        \theta_i(x) = \sum_{k=1}^{K} \ell_k(x)\, \theta_{i,k}, \qquad
+        \ell_k(x) = \prod_{j \ne k} \frac{x - x_j}{x_k - x_j}, \qquad
+        z_i = \sum_{j \ge i} \left[ds \sin\frac{\theta_j + \theta_{j+1}}{2} + e_j\right]
+
+    (with ``vertical``, the vertical line theta = pi/2 without stretch is one more known column).
+    A line's shape follows its top angle far more closely than its heights do (on a 300 m line at
+    0-20 m/s, within ~0.5 m where heights interpolated in wind speed miss by ~4 m).
 
     Parameters
     ----------
     top_tension_x, top_tension_z : array_like
         Top tension of the lines to estimate [N] (shape S).
-    elevation, z : array_like, shape (nodes, K, ...)
-        ``TetherSolution.elevation`` [rad] and ``.z`` [m] of K solved lines (the second axis)
-        of the same length and segments on the same tether; ``...`` broadcasts against S.
+    elevation : array_like, shape (nodes, K, ...)
+        ``TetherSolution.elevation`` [rad] of K solved lines (the second axis) of the same length
+        and segments on the same tether; ``...`` broadcasts against S.
+    z : array_like, shape (nodes, K, ...)
+        ``TetherSolution.z`` [m] of the same lines.
     length : float
         Unstretched tether length [m].
     vertical : bool
@@ -413,7 +473,25 @@ def interpolated_heights(top_tension_x, top_tension_z, elevation, z, length: flo
     -------
     ndarray, shape (nodes,) + S
         Node heights above the winch [m]; only a start: :func:`solve_tether` converges to the
-        same heights from it as from any other start (docs/methods.md §1.9).
+        same heights from it as from any other start.
+
+    Notes
+    -----
+    Valid between the known top elevations (a Lagrange polynomial extrapolates poorly).
+    Source: docs/methods.md §1.9 (warm start).
+
+    Examples
+    --------
+    At a known column's own top angle the estimate is that column (the no-wind line of
+    :func:`solve_tether`, 100.09 m high):
+
+    >>> from aerostat_core.structures.materials import TetherSpec
+    >>> s = solve_tether(lambda h: (0.0 * h, 1000.0 + 0.0 * h), 100.0,
+    ...                  TetherSpec(axial_stiffness=1e6), 1.2, lambda z, h: 0.0 * z, 2.0,
+    ...                  sheared=False)
+    >>> h = interpolated_heights(0.0, 1.0, s.elevation[:, None], s.z[:, None], 100.0)
+    >>> round(float(h[0]), 9), bool(np.allclose(h, s.z))
+    (100.09, True)
     """
     el = np.asarray(elevation, float)
     z = np.asarray(z, float)
@@ -461,22 +539,27 @@ def point_aerostat_tether(
     segments: int = 200,
     max_passes: int = 30,
 ) -> TetherSolution:
-    """Static equilibrium of a point (spherical) aerostat on an elastic tether.
+    r"""Static equilibrium of a point (spherical) aerostat on an elastic tether.
 
-    Top tension = (1/2 rho C_D A U(z_top)^2, rho V g - M g): drag along the wind at the aerostat's
-    height and net static lift; the tether shape from :func:`solve_tether`, iterated until the
-    top height (and so the wind there) converges. Used for the reference cases R1/R2 of
-    docs/dynamics.md §3.1 and as the initial condition of the point-aerostat dynamic mode.
+    Drag along the wind at the aerostat's height and net static lift at the top; the tether shape
+    from :func:`solve_tether`, iterated until the top height (and so the wind there) converges:
+
+    .. math::
+
+        T_{x,top} = \tfrac12 \rho\, C_D A\, |U(z_{top})|\, U(z_{top}), \qquad
+        T_{z,top} = \rho V g - M g, \qquad
+        w' = \left(\lambda - \rho \frac{\pi d^2}{4}\right) g
 
     Parameters
     ----------
     mass : float
-        Aerostat mass [kg].
+        Aerostat mass M [kg].
     volume : float
-        Displaced volume [m3].
+        Displaced volume V [m3].
     drag_area : float
         C_D A [m2].
     spec : TetherSpec
+        The line (linear density lambda, diameter d).
     length : float
         Unstretched tether length [m].
     air_density : float
@@ -486,11 +569,31 @@ def point_aerostat_tether(
     g : float
         Gravity [m/s2].
     segments : int
-        Tether segments.
+        Tether segments [-], valid >= 1.
+    max_passes : int
+        Fixed-point passes [-] (:func:`solve_tether`).
 
     Returns
     -------
     TetherSolution
+
+    Notes
+    -----
+    Valid for positive net lift (T_z > 0 along the line). Used for the reference cases R1/R2 of
+    docs/dynamics.md §3.1 and as the initial condition of the point-aerostat dynamic mode.
+    Source: docs/dynamics.md §3.1; statics as :func:`march`.
+
+    Examples
+    --------
+    No wind, inextensible 20 g/m line: the top pulls (1.2 x 100 - 50) g = 686.47 N, the winch
+    686.47 - 100 (0.020 - 1.2 pi 0.005^2/4) g = 666.88 N (by hand):
+
+    >>> import math
+    >>> from aerostat_core.structures.materials import TetherSpec
+    >>> s = point_aerostat_tether(50.0, 100.0, 1.0, TetherSpec(axial_stiffness=math.inf), 100.0,
+    ...                           1.2, lambda z: 0.0 * np.asarray(z, float), 9.80665)
+    >>> round(float(s.height), 6), round(float(s.tension_top), 2), round(float(s.tension_winch), 2)
+    (100.0, 686.47, 666.88)
     """
     net = air_density * volume * g - mass * g
     w_line = (spec.linear_density - air_density * np.pi * spec.diameter**2 / 4.0) * g

@@ -34,37 +34,50 @@ def size_winch(
     bend_radius_ratio: float,
     layers: int,
 ) -> Winch:
-    """Winch for a line pull, reel speed and stored tether.
+    r"""Winch for a line pull, reel speed and stored tether.
 
-    P = T v / eta; drum core diameter D = 2 R_min = 2 (R_min/d) d; a drum of width W holding n
-    layers stores L = pi (W/d) n (D + n d) (layer i on diameter D + (2i - 1) d), so
-    W = L d/(pi n (D + n d)); reel-in time t = L/v.
+    A drum of width W holding n layers stores L = pi (W/d) n (D + n d) (layer i on diameter
+    D + (2i - 1) d), so:
+
+    .. math::
+
+        P = \frac{T v}{\eta}, \qquad D = 2 \frac{R_{min}}{d} d, \qquad
+        W = \frac{L d}{\pi n (D + n d)}, \qquad t = \frac{L}{v}
 
     Parameters
     ----------
     pull : float
-        Largest tether tension at the winch over the wind envelope, survival included [N].
+        Largest tether tension at the winch over the wind envelope, survival included T [N].
     speed : float
-        Reel-in/out speed [m/s] (thesis §2.2.4: about 60 ft/min = 0.3048 m/s for DC winches).
+        Reel-in/out speed v [m/s], valid {range:MissionSpec.winch_speed} (thesis §2.2.4: about
+        60 ft/min = 0.3048 m/s for DC winches).
     efficiency : float
-        Motor x drive efficiency (0, 1].
+        Motor x drive efficiency eta [-], valid {range:MissionSpec.winch_efficiency}.
     tether_length : float
-        Stored tether [m].
+        Stored tether L [m].
     tether_diameter : float
-        [m].
+        d [m].
     bend_radius_ratio : float
-        Tether minimum bend radius / diameter [-].
+        Tether minimum bend radius / diameter [-], valid {range:MissionSpec.bend_radius_ratio}.
     layers : int
-        Layers wound on the drum, >= 1.
+        Layers wound on the drum n [-], valid {range:MissionSpec.drum_layers}.
+
+    Returns
+    -------
+    Winch
 
     Notes
     -----
     Steady reeling (no acceleration or drum inertia), tension taken equal on every layer; a
     level-wind packs the layers at pitch d. Sources: thesis §2.2.4 (reel speed, drum sized by the
-    bend radius, motor power from pull and speed); drum capacity from the wound geometry.
+    bend radius, motor power from pull and speed); drum capacity from the wound geometry;
+    docs/methods.md §1.14.
 
     Examples
     --------
+    1 kN at 0.3048 m/s, 75 %: P = 406.4 W; D = 2 x 10 x 5 mm = 0.1 m; t = 300/0.3048 = 984 s
+    (by hand):
+
     >>> w = size_winch(1000.0, 0.3048, 0.75, 300.0, 0.005, 10.0, 10)
     >>> round(w.power, 1), round(w.drum_diameter, 3), round(w.reel_time)
     (406.4, 0.1, 984)
