@@ -24,6 +24,7 @@ from app_ui import (
     state,
     text,
 )
+from app_ui.errors import report_unexpected
 from app_ui.tables import (
     PERF_HELP,
     PERF_TABLES,
@@ -210,6 +211,15 @@ def _tether_tab(rep: DesignReport) -> None:
 
 @st.fragment
 def _results() -> None:
+    # The fragment's own error boundary: an error raised in a fragment stops at Streamlit's
+    # fragment handler (a redacted exception box), before app.py's boundary could see it.
+    try:
+        _results_body()
+    except Exception as exc:  # noqa: BLE001 - never a traceback; a reference id, logged
+        report_unexpected(exc)
+
+
+def _results_body() -> None:
     try:
         frozen = cache.current_inputs()  # built once by the form; no JSON on the way
         rep = cache.report_of(*frozen)
