@@ -7,6 +7,9 @@ SHELL := /bin/bash
 PYTHON      ?= python3.11
 VENV        ?= .venv
 PY          := $(VENV)/bin/python
+# Two stamps: `make run` installs the app's runtime pins only (requirements.txt); `make test`,
+# lint and bench the test and lint pins as well (requirements-dev.txt).
+RUN_STAMP   := $(VENV)/.requirements-run.stamp
 STAMP       := $(VENV)/.requirements.stamp
 PORT        ?= 8501
 # Optional: HOST=127.0.0.1 to listen on loopback only (Streamlit's default is every interface).
@@ -20,7 +23,7 @@ THREADS_ENV := OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1
 
 export PIP_DISABLE_PIP_VERSION_CHECK := 1
 
-.PHONY: help venv run test lint bench docker-lint chromium clean distclean
+.PHONY: help venv venv-run run test lint bench docker-lint chromium clean distclean
 
 help:
 	@echo "make run          set up .venv and start the app on http://localhost:$(PORT)"
@@ -32,8 +35,10 @@ help:
 
 venv: $(STAMP)
 
-# The stamp lives inside .venv, so deleting .venv also forces a reinstall.
-$(STAMP): requirements.txt requirements-dev.txt
+venv-run: $(RUN_STAMP)
+
+# A venv with python3.11 (installs python3-venv when root and it is missing).
+$(PY):
 	@if ! $(PYTHON) -c 'import ensurepip, venv' >/dev/null 2>&1; then \
 	  if [ "$$(id -u)" = 0 ]; then \
 	    apt-get update && DEBIAN_FRONTEND=noninteractive apt-get install -y python3-venv; \
@@ -41,11 +46,23 @@ $(STAMP): requirements.txt requirements-dev.txt
 	    echo "$(PYTHON) has no venv/ensurepip: sudo apt-get install python3-venv" >&2; exit 1; \
 	  fi; \
 	fi
-	@test -x $(PY) || $(PYTHON) -m venv $(VENV)
-	$(PY) -m pip install --no-input -r requirements-dev.txt
+	$(PYTHON) -m venv $(VENV)
+
+# The stamps live inside .venv, so deleting .venv also forces a reinstall. The test stamp
+# implies the runtime one (requirements-dev.txt includes requirements.txt).
+$(RUN_STAMP): requirements.txt | $(PY)
+	@if [ -f $(STAMP) ] && [ $(STAMP) -nt requirements.txt ]; then \
+	  echo "runtime pins already installed (with the test pins)"; \
+	else \
+	  $(PY) -m pip install --no-input -r requirements.txt; \
+	fi
 	@touch $@
 
-run: venv
+$(STAMP): requirements.txt requirements-dev.txt | $(PY)
+	$(PY) -m pip install --no-input -r requirements-dev.txt
+	@touch $@ $(RUN_STAMP)
+
+run: venv-run
 	$(THREADS_ENV) $(PY) -m streamlit run app.py \
 	  --server.port $(PORT) $(if $(HOST),--server.address $(HOST)) \
 	  --server.headless true --browser.gatherUsageStats false

@@ -1,15 +1,17 @@
 """Aerostat design app: page config, shared session state and navigation.
 
-Run with ``make run`` (or ``streamlit run app.py``). Pages live in ``pages/``; a page is listed
-only when its file exists, so pages written by other engineers appear as they land.
+Run with ``make run`` (or ``streamlit run app.py``). Pages live in ``pages/``; every page of
+:data:`PAGES` must exist: a missing file is a broken install, shown as an error naming the file
+(the other pages still work), and the tests fail on it (tests/app/test_pages.py, the browser
+smoke test counts the navigation links).
 """
 
 from pathlib import Path
 
 import streamlit as st
 
+from app_ui import workspace_ui
 from app_ui.errors import report_unexpected
-from app_ui.state import STORE_ERR_KEY, attach_workspace
 
 HERE = Path(__file__).resolve().parent
 
@@ -30,23 +32,22 @@ st.set_page_config(
     layout="wide",
     initial_sidebar_state="expanded",
 )
-# Binds this session to the workspace in the URL (?ws=...) and loads its saved cases.
-attach_workspace()
+# Binds this session to the workspace in the URL (?ws=...) and loads its saved cases; a bare
+# address offers the browser's recent workspaces back.
+workspace_ui.attach()
 
+MISSING = [path for path, _, _ in PAGES if not (HERE / path).is_file()]
 pages = [
     st.Page(str(HERE / path), title=title, icon=icon, default=(i == 0))
     for i, (path, title, icon) in enumerate(PAGES)
-    if (HERE / path).is_file()
+    if path not in MISSING
 ]
 with st.sidebar:
     st.caption("Tethered aerostat design · Mahmood (2020) method, rebuilt from public sources")
-    st.caption(
-        "Your inputs and saved cases are kept in this workspace: bookmark or share this page's "
-        "address to come back to them."
-    )
-store_error = st.session_state.get(STORE_ERR_KEY)
-if store_error:
-    st.warning(store_error, icon=":material/database:")
+workspace_ui.status()  # where the work is kept; database outages; unsaved cases
+if MISSING:
+    st.error(f"This installation is incomplete: page file(s) missing: {', '.join(MISSING)}.",
+             icon=":material/error:")
 try:
     st.navigation(pages).run()
 except Exception as exc:  # noqa: BLE001 - the error boundary: never a traceback on screen

@@ -20,6 +20,7 @@ import plotly.graph_objects as go
 import streamlit as st
 
 from aerostat_core import Configuration, Requirement
+from aerostat_core.model.budget import BudgetError, max_monte_carlo_samples
 from aerostat_core.model.constraints import BY_NAME
 from aerostat_core.output.html_report import build_report
 from aerostat_core.output.report import DesignReport
@@ -328,7 +329,11 @@ def report_button(inputs_json: str) -> None:
     """One-click download of the HTML design report (built when clicked), with the site wind
     and Monte Carlo size of the Envelope tab once set there."""
     site = st.session_state.get(SITE_KEY) or {}
-    run = st.session_state.get(MC_KEY) or {"n": 2000, "seed": 0}
+    run = dict(st.session_state.get(MC_KEY) or {"n": 2000, "seed": 0})
+    # within the compute budget of one process (many tether segments: fewer samples; the
+    # report states the sample count it used)
+    _, cfg = cache.given_inputs(inputs_json)
+    run["n"] = min(run["n"], max_monte_carlo_samples(cfg.tether_segments, 10))
 
     def build() -> bytes:
         try:
@@ -474,7 +479,11 @@ def _uncertainty(inputs_json: str, rep: DesignReport) -> None:
             "wind-profile exponent: press Run Monte Carlo."
         )
         return
-    mc = cached_monte_carlo(inputs_json, run["n"], run["seed"])
+    try:
+        mc = cached_monte_carlo(inputs_json, run["n"], run["seed"])
+    except BudgetError as exc:  # the compute budget, shared with the CLI: says what to reduce
+        st.error(plain(str(exc)), icon=":material/error:")
+        return
     s = mc["summary"]
     c = st.columns(4)
     c[0].metric("Blow-by 5-95 % [m]", f"{s['blow_by_p05_m']:.1f}-{s['blow_by_p95_m']:.1f}")

@@ -181,7 +181,8 @@ def input_form() -> None:
     in sight without scrolling, and again after the last group."""
     sync_widgets()
     err = st.session_state.get(ERROR_KEY)
-    with st.form("design_inputs_form", border=False, enter_to_submit=False):
+    # Enter in a box applies the form, as "Update design" does (issue 20: it did nothing)
+    with st.form("design_inputs_form", border=False, enter_to_submit=True):
         _submit_button(SUBMIT_KEY)
         with st.container():  # always present: the groups below keep their place
             if err and err.get("group") == "general":

@@ -51,6 +51,14 @@ WS_KEY = "_workspace"
 WS_PARAM = "ws"
 #: Message of the last store failure (shown by app.py), or absent.
 STORE_ERR_KEY = "_store_error"
+#: {name: version} of the stored cases as this session last read them.
+VERSIONS_KEY = "_case_versions"
+#: {name: inputs} of the cases saved while the store was unavailable (not yet written).
+UNSAVED_KEY = "_unsaved_cases"
+#: True while the current inputs changed during an outage are not yet written.
+UNSAVED_CURRENT_KEY = "_unsaved_current"
+#: A one-off note about the store (shown by app.py).
+STORE_NOTE_KEY = "_store_note"
 
 
 def _s(state: MutableMapping[str, Any] | None) -> MutableMapping[str, Any]:
@@ -84,17 +92,79 @@ def _discard(s: MutableMapping[str, Any], key: str) -> None:
         del s[key]
 
 
-def _persist(s: MutableMapping[str, Any], op: str, *args: Any) -> None:
-    """Write one change through to the workspace store (no-op for a session without one)."""
+def _token(s: MutableMapping[str, Any]) -> str | None:
     token = s.get(WS_KEY)
-    if not _store.valid_token(token):
-        return
+    return token if _store.valid_token(token) else None
+
+
+def _call(s: MutableMapping[str, Any], op: str, *args: Any, **kwargs: Any) -> Any:
+    """One store call for the session's workspace. A failure is remembered in
+    :data:`STORE_ERR_KEY` and re-raised as :class:`~app_ui.store.StoreUnavailable`; a success
+    clears it. :class:`~app_ui.store.CaseConflict` passes through (nothing was changed)."""
     try:
-        getattr(_store.get_store(), op)(token, *args)
+        result = getattr(_store.get_store(), op)(s[WS_KEY], *args, **kwargs)
     except _store.StoreUnavailable as exc:
         s[STORE_ERR_KEY] = str(exc)
+        raise
+    _discard(s, STORE_ERR_KEY)
+    return result
+
+
+def _show(s: MutableMapping[str, Any], snap: _store.Snapshot) -> None:
+    """Make a snapshot of the store what the session shows: its cases in saved order, then the
+    cases not yet written (kept from an outage), and remember the versions seen."""
+    unsaved = dict(s.get(UNSAVED_KEY) or {})
+    cases = dict(snap.cases)
+    for name, inputs in unsaved.items():
+        cases.setdefault(name, inputs)
+    if cases != s.get(CASES_KEY):
+        s[CASES_KEY] = cases
+    s[VERSIONS_KEY] = dict(snap.versions)
+
+
+def _refresh(s: MutableMapping[str, Any]) -> None:
+    """Re-read the workspace after a write (other tabs' changes come along)."""
+    try:
+        _show(s, _call(s, "snapshot"))
+    except _store.StoreUnavailable:
+        pass
+
+
+def _persist(s: MutableMapping[str, Any], op: str, *args: Any) -> None:
+    """Write the current inputs through to the workspace store (no-op for a session without
+    one); while the store is unavailable they are marked unsaved and written on its return."""
+    if _token(s) is None:
+        return
+    try:
+        _call(s, op, *args)
+    except _store.StoreUnavailable:
+        s[UNSAVED_CURRENT_KEY] = True
     else:
-        _discard(s, STORE_ERR_KEY)
+        _discard(s, UNSAVED_CURRENT_KEY)
+
+
+def _flush(s: MutableMapping[str, Any]) -> None:
+    """Write what an outage left unsaved: the current inputs, and the unsaved cases added
+    after the saved ones (identical ones skipped, a name another tab took since kept apart as
+    "name (2)", both kept). Raises StoreUnavailable if the store fails again."""
+    if s.get(UNSAVED_CURRENT_KEY):
+        _call(s, "set_current", s[DESIGN_KEY])
+        _discard(s, UNSAVED_CURRENT_KEY)
+    unsaved = dict(s.get(UNSAVED_KEY) or {})
+    if not unsaved:
+        return
+    used = _call(s, "add_cases", unsaved, limit=MAX_NAME_CHARS)
+    _discard(s, UNSAVED_KEY)
+    renamed = (
+        [f"“{old}” as “{new}”" for old, new in zip(unsaved, used) if old != new]
+        if len(used) == len(unsaved)
+        else []
+    )
+    note = f"The database is back: wrote {len(unsaved)} case(s) saved while it was unavailable."
+    if renamed:
+        note += " Another tab had taken a name, so both are kept: saved " + ", ".join(renamed)
+        note += "."
+    s[STORE_NOTE_KEY] = note
 
 
 def attach_workspace(
@@ -102,26 +172,49 @@ def attach_workspace(
     query_params: MutableMapping[str, Any] | None = None,
 ) -> str:
     """Bind the session to the workspace in the URL (creating one when the URL has none or a
-    malformed token) and load its cases and current inputs. Returns the token."""
+    malformed token) and load its cases and current inputs. Returns the token.
+
+    What an outage left unsaved is written first (never dropped, never overwriting what
+    another tab saved meanwhile); while the store stays unavailable the session keeps what it
+    has and :data:`STORE_ERR_KEY` says so."""
     s = _s(state)
     qp = st.query_params if query_params is None else query_params
     token = qp.get(WS_PARAM)
     if not _store.valid_token(token):
         token = s.get(WS_KEY) if _store.valid_token(s.get(WS_KEY)) else _store.new_token()
         qp[WS_PARAM] = token
+    if s.get(WS_KEY) not in (None, token):  # another workspace: nothing of the old one carries
+        for key in (UNSAVED_KEY, UNSAVED_CURRENT_KEY, VERSIONS_KEY):
+            _discard(s, key)
     s[WS_KEY] = token
     init_state(s)  # WS_KEY is set: this only fills in the defaults
     try:
-        current, saved = _store.get_store().load(token)
-    except _store.StoreUnavailable as exc:
-        s[STORE_ERR_KEY] = str(exc)  # keep what the session has; never overwrite the store
-        return token
-    _discard(s, STORE_ERR_KEY)
-    if current is not None and current != s.get(DESIGN_KEY):
-        s[DESIGN_KEY] = current
-    if saved != s.get(CASES_KEY):
-        s[CASES_KEY] = saved
+        _flush(s)
+        snap = _call(s, "snapshot")
+    except _store.StoreUnavailable:
+        return token  # keep what the session has; never overwrite the store
+    if snap.current is not None and snap.current != s.get(DESIGN_KEY):
+        s[DESIGN_KEY] = snap.current
+    _show(s, snap)
     return token
+
+
+def unsaved_cases(state: MutableMapping[str, Any] | None = None) -> dict[str, dict[str, Any]]:
+    """Cases kept in this session only (saved while the store was unavailable)."""
+    return dict(_s(state).get(UNSAVED_KEY) or {})
+
+
+def case_versions(state: MutableMapping[str, Any] | None = None) -> dict[str, int]:
+    """``{name: version}`` of the stored cases as this session last saw them."""
+    return dict(_s(state).get(VERSIONS_KEY) or {})
+
+
+def pop_store_note(state: MutableMapping[str, Any] | None = None) -> str | None:
+    """A one-off note about the store (e.g. unsaved cases written on its return), removed."""
+    s = _s(state)
+    note = s.get(STORE_NOTE_KEY)
+    _discard(s, STORE_NOTE_KEY)
+    return note
 
 
 def current_inputs(
@@ -191,12 +284,16 @@ def check_case_name(name: Any) -> str:
 def unique_name(name: str, taken: Any) -> str:
     """``name``, or ``name (2)``, ``name (3)``... whichever is not in ``taken``; the suffixed
     name is shortened so that it stays within :data:`MAX_NAME_CHARS`."""
-    final, i = name, 2
-    while final in taken:
-        suffix = f" ({i})"
-        final = name[: MAX_NAME_CHARS - len(suffix)].rstrip() + suffix
-        i += 1
-    return final
+    return _store.unique_name(name, taken, MAX_NAME_CHARS)
+
+
+#: What :func:`save_case` does with a name that is taken: number the new case ("suffix"), refuse
+#: with :class:`~app_ui.store.CaseConflict` so that the page can ask ("ask"), or replace it.
+ON_TAKEN = ("suffix", "ask", "replace")
+
+
+def _unavailable(exc: _store.StoreUnavailable, what: str) -> ValueError:
+    return ValueError(f"{exc} Nothing was {what}; try again when it is back.")
 
 
 def save_case(
@@ -206,22 +303,70 @@ def save_case(
     state: MutableMapping[str, Any] | None = None,
     *,
     overwrite: bool = False,
+    on_taken: str = "suffix",
+    version: int | None = None,
 ) -> str:
     """Save (req, cfg) under ``name`` and return the name used.
 
-    A name that exists already gets a suffix, " (2)", " (3)"... (so no case is ever replaced by
-    accident), unless ``overwrite`` is True, which replaces that case in place.
-    """
+    A name that exists already (in this session or, saved by another tab, in the store) gets a
+    suffix, " (2)", " (3)"... with ``on_taken="suffix"`` (so no case is ever replaced by
+    accident); ``on_taken="ask"`` raises :class:`~app_ui.store.CaseConflict` ("taken") instead;
+    ``on_taken="replace"`` (or ``overwrite=True``) replaces that case in place, but only the
+    version this session saw (or ``version``, the one the user agreed to replace): a case
+    changed in another tab since raises CaseConflict ("changed") and stays as it is.
+
+    While the store is unavailable the case is kept in the session, marked unsaved
+    (:func:`unsaved_cases`), and written when the store is back."""
+    if on_taken not in ON_TAKEN:
+        raise ValueError(f"on_taken {on_taken!r} is not one of: {', '.join(ON_TAKEN)}")
+    if overwrite:
+        on_taken = "replace"
     s = _s(state)
     name = check_case_name(name)
     cases = get_cases(s)
-    if name in cases and not overwrite:
+    if name in cases and on_taken == "suffix":
         name = unique_name(name, cases)
+    if name in cases and on_taken == "ask":
+        raise _store.CaseConflict("taken", name, case_versions(s).get(name))
     if name not in cases and len(cases) >= MAX_CASES:
         raise ValueError(f"At most {MAX_CASES} cases can be saved; delete some first.")
-    cases[name] = inputs_to_dict(req, cfg)
+    inputs = inputs_to_dict(req, cfg)
+    unsaved = unsaved_cases(s)
+    if _token(s) is not None and name not in unsaved:
+        if on_taken == "replace":
+            expect = version if version is not None else case_versions(s).get(name, 0)
+        else:
+            expect = 0
+        taken = set(cases)
+        for _ in range(MAX_CASES + 1):
+            try:
+                written = _call(s, "put_case", name, inputs, expect=expect)
+                s[CASES_KEY] = {**get_cases(s), name: inputs}
+                s[VERSIONS_KEY] = {**case_versions(s), name: written}
+                break
+            except _store.CaseConflict as exc:
+                if exc.kind == "taken" and on_taken == "suffix":
+                    taken.add(name)  # another tab took it since this page loaded
+                    name = unique_name(name, taken)
+                elif exc.kind == "gone" and on_taken == "replace":
+                    expect = 0  # deleted elsewhere: saving it again is what was asked
+                else:
+                    raise
+            except _store.StoreUnavailable:
+                unsaved[name] = inputs
+                s[UNSAVED_KEY] = unsaved
+                break
+        else:  # pragma: no cover - every name up to the case limit taken meanwhile
+            raise ValueError("Could not find a free name for the case; choose another.")
+        if name not in unsaved:
+            _refresh(s)
+            return name
+    elif name in unsaved:
+        unsaved[name] = inputs
+        s[UNSAVED_KEY] = unsaved
+    cases = get_cases(s)
+    cases[name] = inputs
     s[CASES_KEY] = cases
-    _persist(s, "put_case", name, cases[name])
     return name
 
 
@@ -233,34 +378,69 @@ def add_cases(
     state: MutableMapping[str, Any] | None = None,
     *,
     mode: str = "add",
+    seen: dict[str, int] | None = None,
 ) -> list[str]:
     """Add validated cases and return the names used.
 
-    ``mode="add"``: a case identical to a saved one (same name, same inputs) is skipped, so that
-    re-importing your own export duplicates nothing; another case whose name is taken gets
-    " (2)", " (3)"... ``mode="replace"``: the new cases replace every saved case.
-    """
+    ``mode="add"``: the cases are added after the saved ones, which stay untouched (also those
+    another tab saved since this page loaded); a case identical to a saved one (same name, same
+    inputs) is skipped, so that re-importing your own export duplicates nothing; another case
+    whose name is taken gets " (2)", " (3)"...
+
+    ``mode="replace"``: the new cases replace the saved cases the user saw: ``seen``
+    ``{name: version}`` (default: every case this session shows). A case another tab saved or
+    changed since stays (the new one with its name is numbered). Refused while the store is
+    unavailable (nothing removed)."""
     if mode not in IMPORT_MODES:
         raise ValueError(f"import mode {mode!r} is not one of: {', '.join(IMPORT_MODES)}")
     s = _s(state)
+    checked = {check_case_name(n): v for n, v in new.items()}
+    if _token(s) is not None:
+        try:
+            if mode == "replace":
+                seen = case_versions(s) if seen is None else seen
+                used = _call(
+                    s,
+                    "replace_cases",
+                    checked,
+                    seen=seen,
+                    limit=MAX_NAME_CHARS,
+                    max_cases=MAX_CASES,
+                )
+            else:
+                used = _call(s, "add_cases", checked, limit=MAX_NAME_CHARS, max_cases=MAX_CASES)
+        except _store.StoreUnavailable as exc:
+            if mode == "replace":
+                raise _unavailable(exc, "replaced") from None
+        else:
+            _refresh(s)
+            return list(used)
     cases = {} if mode == "replace" else get_cases(s)
-    fresh = {n: v for n, v in new.items() if cases.get(n) != v}
+    fresh = {n: v for n, v in checked.items() if cases.get(n) != v}
     if len(cases) + len(fresh) > MAX_CASES:
         raise ValueError(
             f"That would make {len(cases) + len(fresh)} cases; at most {MAX_CASES} can be saved."
         )
     used = []
+    unsaved = unsaved_cases(s)
     for name, inputs in fresh.items():
-        final = unique_name(check_case_name(name), cases)
+        final = unique_name(name, cases)
         cases[final] = inputs
         used.append(final)
+        if _token(s) is not None:
+            unsaved[final] = inputs  # the store is unavailable: written on its return
     s[CASES_KEY] = cases
-    _persist(s, "replace_cases", cases)
+    if unsaved:
+        s[UNSAVED_KEY] = unsaved
     return used
 
 
 def rename_case(old: str, new: str, state: MutableMapping[str, Any] | None = None) -> str:
-    """Rename a case, keeping its place in the order. Returns the new (stripped) name."""
+    """Rename a case, keeping its place in the order. Returns the new (stripped) name.
+
+    Refused (``ValueError``, nothing changed) when the new name is taken, here or by another
+    tab, when the case was changed or deleted in another tab since this page showed it
+    (:class:`~app_ui.store.CaseConflict`), or while the store is unavailable."""
     s = _s(state)
     new = check_case_name(new)
     cases = get_cases(s)
@@ -270,25 +450,57 @@ def rename_case(old: str, new: str, state: MutableMapping[str, Any] | None = Non
         return new
     if new in cases:
         raise ValueError(f"A case named {new!r} exists already.")
+    unsaved = unsaved_cases(s)
+    if _token(s) is not None and old not in unsaved:
+        try:
+            written = _call(s, "rename_case", old, new, expect=case_versions(s).get(old))
+        except _store.StoreUnavailable as exc:
+            raise _unavailable(exc, "renamed") from None
+        s[CASES_KEY] = {(new if k == old else k): v for k, v in cases.items()}
+        s[VERSIONS_KEY] = {**{k: v for k, v in case_versions(s).items() if k != old}, new: written}
+        _refresh(s)
+        return new
+    if old in unsaved:
+        s[UNSAVED_KEY] = {(new if k == old else k): v for k, v in unsaved.items()}
     s[CASES_KEY] = {(new if k == old else k): v for k, v in cases.items()}
-    _persist(s, "rename_case", old, new)
     return new
 
 
 def delete_case(name: str, state: MutableMapping[str, Any] | None = None) -> None:
-    """Delete a case (no error if it is already gone)."""
+    """Delete a case (no error if it is already gone). A case changed in another tab since
+    this page showed it is not deleted (:class:`~app_ui.store.CaseConflict`); nor is a stored
+    case while the store is unavailable (``ValueError``)."""
     s = _s(state)
+    unsaved = unsaved_cases(s)
+    if _token(s) is not None and name not in unsaved:
+        try:
+            _call(s, "delete_case", name, expect=case_versions(s).get(name))
+        except _store.StoreUnavailable as exc:
+            raise _unavailable(exc, "deleted") from None
+        s[VERSIONS_KEY] = {k: v for k, v in case_versions(s).items() if k != name}
+        s[CASES_KEY] = {k: v for k, v in get_cases(s).items() if k != name}
+        _refresh(s)
+        return
+    if name in unsaved:
+        del unsaved[name]
+        s[UNSAVED_KEY] = unsaved
     cases = get_cases(s)
     cases.pop(name, None)
     s[CASES_KEY] = cases
-    _persist(s, "delete_case", name)
 
 
 def clear_cases(state: MutableMapping[str, Any] | None = None) -> None:
-    """Delete every saved case."""
+    """Delete every saved case this session shows (a case another tab saved since stays)."""
     s = _s(state)
+    if _token(s) is not None:
+        try:
+            _call(s, "replace_cases", {}, seen=case_versions(s))
+        except _store.StoreUnavailable as exc:
+            raise _unavailable(exc, "deleted") from None
+        _discard(s, UNSAVED_KEY)
+        _refresh(s)
+        return
     s[CASES_KEY] = {}
-    _persist(s, "replace_cases", {})
 
 
 # --- file import ------------------------------------------------------------------------------
@@ -311,7 +523,7 @@ def read_upload(uploaded: Any) -> bytes:
     return raw
 
 
-def _file_kind(raw: bytes) -> str:
+def file_kind(raw: bytes) -> str:
     """'cases' when the text mentions the cases format, else 'design' (parsers check properly)."""
     return "cases" if b'"aerostat-cases"' in raw else "design"
 
@@ -322,13 +534,15 @@ def import_file(
     *,
     filename: str = "the file",
     mode: str = "add",
+    seen: dict[str, int] | None = None,
 ) -> tuple[str, str]:
     """Apply an uploaded JSON file: a design file replaces the current inputs, a cases file adds
-    its cases (``mode="add"``) or replaces every saved case (``mode="replace"``). Returns
-    ``(level, message)`` with level "success", "info" or "error".
+        its cases (``mode="add"``) or replaces the saved cases the user saw (``mode="replace"``,
+    ``seen`` as in :func:`add_cases`). Returns
+        ``(level, message)`` with level "success", "info" or "error".
 
-    All-or-nothing: a malformed, hostile, oversized or out-of-range file changes nothing and the
-    message says why (the engine's messages name the field), capped in length.
+        All-or-nothing: a malformed, hostile, oversized or out-of-range file changes nothing and the
+        message says why (the engine's messages name the field), capped in length.
     """
     s = _s(state)
     init_state(s)
@@ -336,9 +550,9 @@ def import_file(
     try:
         if len(raw) > MAX_JSON_BYTES:
             raise ValueError(f"the file is {len(raw):,} bytes; the limit is {MAX_JSON_BYTES:,}")
-        if _file_kind(raw) == "cases":
+        if file_kind(raw) == "cases":
             new = cases_from_json(raw)
-            names = add_cases(new, s, mode=mode)
+            names = add_cases(new, s, mode=mode, seen=seen)
             if not names:
                 return "info", f"Every case in {filename} is saved already; nothing was added."
             shown = ", ".join(names[:5]) + (" ..." if len(names) > 5 else "")

@@ -42,13 +42,25 @@ def format_value(x: Any, integer: bool = False) -> str:
 _MD_SPECIAL = re.compile(r"([!-/:-@\[-`{-~])")
 
 
+#: Where GitHub-flavoured Markdown turns bare text into a link (``http://``, ``www.``, an e-mail
+#: address): it does so after the escapes are read, so escaping alone leaves these live.
+_AUTOLINK = re.compile(r"(?i)\b(?:https?|ftp|mailto|xmpp|www)(?=[:.])|@")
+#: U+2060 WORD JOINER: invisible, and not part of any link pattern.
+_JOINER = "\u2060"
+
+
 def plain(text: Any) -> str:
     """User text (case and file names, messages quoting them) for Streamlit's Markdown
     elements, shown exactly as typed: every ASCII punctuation character is backslash-escaped
     (CommonMark), so ``![i](http://...)`` is text, not an image the browser would fetch, and
-    ``:red[x]`` or ``$x$`` are not directives.
+    ``:red[x]`` or ``$x$`` are not directives; an invisible word joiner after ``http``,
+    ``www`` or ``@`` keeps the autolinker from making a bare URL or address a live link.
+
+    >>> plain("see http://x.example")
+    'see http\u2060\\\\:\\\\/\\\\/x\\\\.example'
     """
-    return _MD_SPECIAL.sub(r"\\\1", str(text))
+    text = _AUTOLINK.sub(lambda m: m.group(0) + _JOINER, str(text))
+    return _MD_SPECIAL.sub(r"\\\1", text)
 
 
 def signed(x: float, digits: int = 1) -> str:

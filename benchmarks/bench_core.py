@@ -157,6 +157,24 @@ def main() -> None:
     t = median_time(lambda: size_volume(req, sized_cfg, f[:m], dsf[:m], pos[:m]), 5)
     print(f"batch sizing of {m} designs:                           median {t * 1e3:.0f} ms "
           f"= {m / t:,.0f} sized designs/s")
+    # every class of thesis Table 2.3 (issue 23): the default design (materials chosen by load,
+    # a few sizings where the lightest items do not carry the loads) and batch sizing with the
+    # chosen items, tactical to strategic
+    from aerostat_core.model.selection import select_materials
+    from aerostat_core.studies.fielded import aerostat_class
+
+    for payload, altitude, survival in ((10, 300, None), (227, 900, None), (1600, 4600, 36.0),
+                                        (3200, 3000, 36.0)):
+        r = Requirement(payload_mass=payload, altitude=altitude, survival_wind=survival)
+        name = aerostat_class(payload, altitude)
+        t = median_time(lambda r=r: design(r), 15)
+        sel = select_materials(r, rules_configuration("practice"))
+        print(f"design(), {name:11s} ({payload:g} kg, {altitude:g} m): median {t * 1e3:6.2f} ms "
+              f"(target <= 20 ms; {sel.sizings} sizing(s), tether {sel.configuration.tether.name})")
+        chosen = sel.configuration
+        t = median_time(lambda r=r, c=chosen: size_volume(r, c, f[:m], dsf[:m], pos[:m]), 5)
+        print(f"  batch sizing of {m} {name} designs, chosen items: median {t * 1e3:.0f} ms = "
+              f"{m / t:,.0f} sized designs/s (target >= 1000/s)")
 
 
 if __name__ == "__main__":

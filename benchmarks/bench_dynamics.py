@@ -64,9 +64,13 @@ def main() -> None:
     ap.add_argument("--no-moordyn", action="store_true", help="skip the live MoorDyn run")
     ap.add_argument("--thesis", action="store_true",
                     help="only print the thesis-comparison figures (gust, ramps, turbulence)")
+    ap.add_argument("--sixdof", action="store_true", help="only print the 6-DOF figures")
     args = ap.parse_args()
     if args.thesis:
         thesis_comparison()
+        return
+    if args.sixdof:
+        sixdof_bench(args)
         return
     print(f"machine: {platform.machine()}, {os.cpu_count()} cores, "
           f"Python {platform.python_version()}")
@@ -141,6 +145,52 @@ def main() -> None:
     gust = WindScenario(SpeedSchedule.constant(10.0), gust=Gust(5.0, 0.0, 60.0, 20.0))
     t, res = timed(lambda: simulate(hull_sys, gust, 150.0, guess=guess), args.repeats)
     print(f"full model, 20 segments, 150 s 1-cos gust: median {t:.3f} s wall")
+    sixdof_bench(args)
+
+
+def sixdof_bench(args) -> None:
+    """Issue 25: 300 s of the 6-DOF model (20 segments) in 3-D turbulence (target <= 3 s CPU),
+    and the 3-D MoorDyn side by side (point aerostat in a veering wind, 16 segments, 60 s)."""
+    from aerostat_core.dynamics.moordyn_check3d import (
+        point_system6,
+        run_point_case3d,
+        straight_state6,
+        veer_wind,
+    )
+    from aerostat_core.dynamics.sixdof import Wind3D, initial_state6, simulate6, system6_from_design
+
+    design = cases.thesis_design()
+    s6 = system6_from_design(design, segments=20)
+    turb = WindScenario(SpeedSchedule.constant(10.0),
+                        turbulence=DrydenTurbulence.from_intensity("moderate", seed=1))
+    w3 = Wind3D(turb)
+    y0 = initial_state6(s6, w3, design)
+    opts = SolverOptions(output_interval=0.5)
+    t, res = timed(lambda: simulate6(s6, w3, 300.0, opts, initial_state=y0), args.repeats)
+    print(f"6-DOF, 20 segments, 300 s moderate 3-D (u, v, w) turbulence at 10 m/s: median "
+          f"{t:.3f} s wall, {CPU['last']:.3f} s CPU (target <= 3 s CPU), "
+          f"{res.stats['steps']} steps, {res.message}; roll peak "
+          f"{np.max(np.abs(res.signal('roll'))):.2f} deg, lateral peak "
+          f"{np.max(np.abs(res.signal('y_C'))):.2f} m")
+    if args.no_moordyn or not moordyn_available():
+        return
+    top0 = (0.0, 0.0, 319.5)
+    c0 = time.process_time()
+    md = run_point_case3d(cases.case_p_point(), cases.case_p_tether(16), 8.0, 20.0, 60.0, top0,
+                          rho=cases.CASE_P_RHO, g=cases.CASE_P_G, dtm=4e-4)
+    md_cpu = time.process_time() - c0
+    sp = point_system6(cases.case_p_point(), cases.case_p_tether(16), cases.CASE_P_RHO,
+                       cases.CASE_P_G)
+    o = SolverOptions(rtol=1e-7, atol_position=1e-6, atol_velocity=1e-6)
+    t, r = timed(lambda: simulate6(sp, veer_wind(8.0, 20.0), 60.0, o,
+                                   initial_state=straight_state6(sp, top0)), args.repeats)
+    b = sp.hull_index
+    err = max(float(np.max(np.abs(r.y[:, b + k] - np.interp(r.t, md["t"], md[n]))))
+              for k, n in enumerate("xyz"))
+    print(f"3-D MoorDyn side by side (point, 16 segments, 60 s, wind veering 20 deg/100 m): "
+          f"MoorDyn {md['wall_time']:.2f} s wall ({md_cpu:.2f} s CPU), 6-DOF {t:.3f} s wall "
+          f"({CPU['last']:.3f} s CPU): {md_cpu / CPU['last']:.1f}x (CPU); max position "
+          f"difference {err * 1e3:.2f} mm")
 
 
 def thesis_comparison() -> None:

@@ -9,6 +9,7 @@ import streamlit as st
 from aerostat_core import thesis_baseline
 from aerostat_core.model.io import design_to_json
 from aerostat_core.output.report import DesignReport, tether_profile_rows
+from aerostat_core.studies.fielded import class_caption
 from app_ui import (
     cache,
     envelope_view,
@@ -18,11 +19,13 @@ from app_ui import (
     mission_view,
     plots,
     preload,
+    saving,
     shapes_view,
     show,
     side_view,
     state,
     text,
+    unapplied,
 )
 from app_ui.errors import report_unexpected
 from app_ui.tables import (
@@ -46,20 +49,6 @@ st.caption(
 def _load_baseline() -> None:
     state.set_current_inputs(*thesis_baseline())
     st.session_state.pop(form_model.ERROR_KEY, None)
-
-
-def _save_case() -> None:
-    name = st.session_state.get("case_name", "") or st.session_state.get("_case_name_default", "")
-    try:
-        used = state.save_case(name, *state.current_inputs())
-    except ValueError as exc:
-        st.session_state["case_feedback"] = ("error", str(exc))
-    else:
-        st.session_state["case_feedback"] = (
-            "success",
-            f"Saved case “{used}”. Compare saved cases on the Compare page.",
-        )
-        st.session_state["case_name"] = ""
 
 
 def _on_upload() -> None:
@@ -239,6 +228,8 @@ def _results_body() -> None:
         f"Rule set: **{rules.name}** ({rules.title}). "
         + (f"Sized by: {s.binding_constraint.replace('_', ' ')}." if rep.sized else "")
     )
+    st.caption(text.plain(class_caption(rep.inputs["requirement"]["payload_mass"],
+                                        rep.inputs["requirement"]["altitude"])))
     with st.expander(
         "Constraint table: every limit, its margin and where it is checked", icon=":material/rule:"
     ):
@@ -345,14 +336,15 @@ def _results_body() -> None:
             "workspace (the page's address): bookmark it to come back to them.",
         )
         c2.form_submit_button(
-            "Save case", on_click=_save_case, icon=":material/bookmark_add:", width="stretch"
+            "Save case", on_click=saving.save_current, icon=":material/bookmark_add:", width="stretch"
         )
     case_box = st.container()  # always present: the tabs below keep their place
     envelope_view.report_button(state.current_inputs_key())
-    fb = st.session_state.pop("case_feedback", None)
-    if fb:
-        with case_box:
+    fb = st.session_state.pop(saving.FEEDBACK_KEY, None)
+    with case_box:
+        if fb:
             show.feedback(fb[0], fb[1])
+        saving.choice_panel()  # a taken name or a case changed elsewhere: asks, never guesses
 
     # Lazy tabs: only the open tab runs and is sent to the browser (a rerun draws 1-5 charts
     # instead of 10, which keeps "click Update design -> result" well under a second).
@@ -428,6 +420,7 @@ with col_in:
         with import_box:
             show.feedback(fb["level"], fb["text"])
     form.input_form()
+    unapplied.guard()  # edits typed but not applied: asked about before a page switch drops them
 
 
 # Last element: the chart and grid code loads while the user reads the first result.

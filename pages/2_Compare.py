@@ -9,7 +9,7 @@ from aerostat_core.base.validation import short
 from aerostat_core.model import budget
 from aerostat_core.model.io import inputs_from_dict
 from aerostat_core.output.report import thesis_gui_cases
-from app_ui import cache, plots, show, state, text
+from app_ui import cache, plots, show, state, text, workspace_ui
 
 st.title("Compare saved cases")
 st.caption(
@@ -58,10 +58,21 @@ def _rename() -> None:
 
 def _delete() -> None:
     names = st.session_state.get("delete_names") or []
+    done, refused = 0, []
     for n in names:
-        state.delete_case(n)
+        try:
+            state.delete_case(n)  # only the version shown here: a case changed elsewhere stays
+        except ValueError as exc:
+            refused.append(str(exc))
+        else:
+            done += 1
     st.session_state["delete_names"] = []
-    if names:
+    if refused:
+        st.session_state["compare_feedback"] = (
+            "error",
+            f"Deleted {done} case(s); not deleted: " + "; ".join(refused) + ".",
+        )
+    elif names:
         st.session_state["compare_feedback"] = ("success", f"Deleted {len(names)} case(s).")
 
 
@@ -81,11 +92,62 @@ def _load_into_design() -> None:
     )
 
 
+REPLACE_ASK_KEY = "_replace_ask"
+
+
 def _on_upload() -> None:
     uploaded = st.session_state.get("cases_upload")
-    if uploaded is not None:
-        mode = st.session_state.get("import_mode", "add")
-        state.handle_upload(uploaded, "compare", mode=mode if mode in state.IMPORT_MODES else "add")
+    if uploaded is None:
+        return
+    mode = st.session_state.get("import_mode", "add")
+    if mode == "replace":
+        try:
+            raw = state.read_upload(uploaded)
+        except ValueError:
+            raw = None  # handle_upload says why
+        if raw is not None and state.file_kind(raw) == "cases":
+            # Ask first; remember what the user sees now: only those cases are removed.
+            st.session_state[REPLACE_ASK_KEY] = {
+                "raw": raw,
+                "filename": state.display_name(getattr(uploaded, "name", "the file")),
+                "seen": state.case_versions(),
+                "shown": [n for n in state.get_cases() if n in state.case_versions()],
+            }
+            return
+    state.handle_upload(uploaded, "compare", mode=mode if mode in state.IMPORT_MODES else "add")
+
+
+def _answer_replace(go: bool) -> None:
+    ask = st.session_state.pop(REPLACE_ASK_KEY, None)
+    if not ask:
+        return
+    if not go:
+        st.session_state["compare_feedback"] = ("info", "Nothing was replaced.")
+        return
+    level, msg = state.import_file(
+        ask["raw"], filename=ask["filename"], mode="replace", seen=ask["seen"]
+    )
+    st.session_state[state.IMPORT_MSG_KEY] = {"level": level, "text": msg, "where": "compare"}
+
+
+def _replace_question() -> None:
+    ask = st.session_state.get(REPLACE_ASK_KEY)
+    if not ask:
+        return
+    shown = ask["shown"]
+    listed = ", ".join(f"“{n}”" for n in shown[:6]) + (" …" if len(shown) > 6 else "")
+    st.warning(
+        text.plain(
+            f"Replace the {len(shown)} saved case(s) shown here ({listed}) with the cases of "
+            f"{ask['filename']}? Cases saved or changed in another tab since are kept."
+            if shown
+            else f"Add the cases of {ask['filename']}? (No case is saved here yet.)"
+        ),
+        icon=":material/help:",
+    )
+    row = st.container(horizontal=True)
+    row.button("Replace", key="replace_yes", on_click=_answer_replace, args=(True,), type="primary")
+    row.button("Cancel", key="replace_no", on_click=_answer_replace, args=(False,))
 
 
 top = st.columns([1, 1, 2], vertical_alignment="center")
@@ -137,11 +199,14 @@ with st.expander("Cases file: export / import", icon=":material/folder_open:"):
         st.radio(
             "Importing a cases file",
             state.IMPORT_MODES,
-            format_func={"add": "adds its cases", "replace": "replaces every saved case"}.get,
+            format_func={
+                "add": "adds its cases",
+                "replace": "replaces the saved cases (asks first)",
+            }.get,
             key="import_mode",
             horizontal=True,
             help="Add: cases identical to saved ones are skipped, other names that are taken "
-            "get a number. Replace: the file's cases become the saved cases.",
+            "get a number. Replace: asks, then the cases shown here are replaced by the file's (cases another tab saved since are kept).",
         )
         st.file_uploader(
             "Upload a cases or design file (JSON)",
@@ -155,9 +220,10 @@ with st.expander("Cases file: export / import", icon=":material/folder_open:"):
 
 import_box = st.container()
 fb = state.pop_import_feedback("compare")  # shown once: never next to a later file
-if fb:
-    with import_box:
+with import_box:
+    if fb:
         show.feedback(fb["level"], fb["text"])
+    _replace_question()
 
 if not cases:
     st.info(
@@ -184,6 +250,7 @@ selected = st.multiselect(
     "Cases to compare",
     names,
     key="compare_selected",
+    format_func=workspace_ui.unsaved_label,
     help="One column per case in the table, one line per case in the plots.",
 )
 if not selected:
@@ -226,6 +293,8 @@ with tab_table:
             rows = []
         if rows:
             df = plots.comparison_frame(rows, ok, only_differences=only_diff)
+            # st.table reads Markdown in every cell and header: the case names as typed
+            df = df.rename(columns={n: text.plain(n) for n in ok})
             n_diff = int(sum(r["differs"] for r in rows))
             st.caption(f"{n_diff} of {len(rows)} rows differ between the cases (highlighted).")
             # a static table whose cells wrap: every row and column in sight at 1024 px (the

@@ -6,6 +6,7 @@ import streamlit as st
 
 from app_ui import dynamics_view as view
 from app_ui import entry, tables, widgets
+from app_ui import sixdof_view as six
 
 st.title("Dynamics")
 st.caption(
@@ -152,6 +153,83 @@ def thesis_section() -> None:
         for i, sc in enumerate(cmp["series"]):
             tc[i].plotly_chart(view.thesis_figure(cmp, sc), key=f"dyn_thesis_{sc}")
 
+
+
+# ---- six degrees of freedom ---------------------------------------------------------------------
+def sixdof_section() -> None:
+    """Lateral-directional motion: crosswind, veer, direction step, 3-D turbulence, reel, break."""
+    st.caption(
+        "The hull in roll, pitch and yaw (quaternion attitude, full added-mass and inertia "
+        "tensors, hull and fin loads at any incidence and sideslip) on the lumped-mass tether in "
+        "3-D, in a wind that can turn, veer with height, gust across or be turbulent in u, v and "
+        "w; the winch can reel in or out and the tether can break. The lateral modes come from "
+        "the linearised model at each wind speed up to the survival wind.")
+    sc6 = st.radio("6-DOF scenario", list(six.SCENARIO_LABELS), format_func=six.SCENARIO_LABELS.get,
+                   horizontal=True, key="dyn6_scenario")
+    values = {}
+    fields = six.form_fields(sc6)
+    cols = st.columns(4)
+    for k, f in enumerate(fields):
+        col = cols[k % 4]
+        if f["kind"] == "choice":
+            values[f["name"]] = col.selectbox(f["label"], f["options"],
+                                              index=f["options"].index(f["default"]),
+                                              key=f"dyn6_{sc6}_{f['name']}")
+        elif f["kind"] == "integer":
+            values[f["name"]] = col.number_input(f["label"], value=int(f["default"]), step=1,
+                                                 key=f"dyn6_{sc6}_{f['name']}", help=f["help"])
+        else:
+            values[f["name"]] = col.number_input(f["label"], value=float(f["default"]),
+                                                 key=f"dyn6_{sc6}_{f['name']}", help=f["help"])
+    req6, problem = six.build_request6(sc6, values)
+    if problem:
+        st.error(problem)
+        return
+    if st.button("Run the 6-DOF simulation", key="dyn6_run", type="primary"):
+        bar = st.progress(0.0, text="Simulating…")
+        try:
+            st.session_state["dyn6_out"] = six.run_request6(
+                req6, view.current_inputs_or_none(st.session_state),
+                progress=lambda f: bar.progress(min(f, 1.0), text="Simulating…"))
+        except (ValueError, RuntimeError) as exc:
+            st.error(f"The 6-DOF run could not start: {exc}")
+        bar.empty()
+    out6 = st.session_state.get("dyn6_out")
+    if not out6:
+        return
+    (st.success if out6["ok"] else st.warning)(f"Run: {out6['status']}")
+    m = out6["metrics"]
+    above = m["lateral_unstable_above_m_s"]
+    c = st.columns(4)
+    c[0].metric("Roll peak [deg]", f"{m['roll_peak_deg']:.2f}")
+    c[1].metric("Yaw peak [deg]", f"{m['yaw_peak_deg']:.2f}")
+    c[2].metric("Lateral peak [m]", f"{m['lateral_peak_m']:.2f}")
+    c[3].metric("Laterally unstable above [m/s]", "stable" if above is None else f"{above:.1f}")
+    k = st.select_slider("Time of the 3-D view [s]", options=list(range(len(out6["frames"]))),
+                         value=len(out6["frames"]) - 1,
+                         format_func=lambda j: f"{out6['frames'][j]:.1f}", key="dyn6_slider")
+    st.plotly_chart(six.view3d_figure(out6, k), key="dyn6_3d")
+    st.plotly_chart(six.lateral_figure(out6), key="dyn6_lateral")
+    st.subheader(f"Lateral-directional modes at {out6['modes_speed']:g} m/s")
+    st.table(tables.labelled_table(out6["modes"], {
+        "frequency_Hz": ("Frequency [Hz]", "{:.4f}"), "damping_ratio": ("Damping ratio [-]",
+                                                                         "{:.3f}"),
+        "real_1_s": ("Real part [1/s]", "{:.4f}"),
+        "time_to_double_s": ("Time to double [s]", "{}"),
+        "time_to_half_s": ("Time to half [s]", "{:.2f}")}), hide_index=True)
+    d = st.columns(2)
+    d[0].download_button("6-DOF time histories (CSV)", out6["csv"].encode("utf-8"),
+                         file_name=f"aerostat_6dof_{sc6}.csv", mime="text/csv",
+                         on_click="ignore", key="dyn6_csv", icon=":material/download:")
+    d[1].download_button("6-DOF time histories (JSON)", out6["json"].encode("utf-8"),
+                         file_name=f"aerostat_6dof_{sc6}.json", mime="application/json",
+                         on_click="ignore", key="dyn6_json", icon=":material/download:")
+
+
+
+with st.expander("Six degrees of freedom: roll and yaw (kiting), crosswind, veer, 3-D turbulence, "
+                 "reel in/out, tether break", expanded=bool(st.session_state.get("dyn6_out"))):
+    sixdof_section()
 
 key = st.session_state.get("dyn_request")
 if key is None:
@@ -305,3 +383,4 @@ st.caption(
 )
 
 thesis_section()
+

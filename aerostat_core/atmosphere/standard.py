@@ -13,14 +13,18 @@ from dataclasses import dataclass
 import numpy as np
 
 from aerostat_core.base import constants as c
+from aerostat_core.base.validation import InputError
 
 
 def _check_altitude(h: np.ndarray) -> None:
     if np.any(~np.isfinite(h)) or np.any(h < c.ISA_MIN_ALTITUDE) or np.any(h > c.ISA_TROPOPAUSE):
         bad = h[~((h >= c.ISA_MIN_ALTITUDE) & (h <= c.ISA_TROPOPAUSE))]
-        raise ValueError(
-            f"altitude = {float(bad.flat[0]):g} m is outside the atmosphere model's valid range "
-            f"[{c.ISA_MIN_ALTITUDE:g}, {c.ISA_TROPOPAUSE:g}] m"
+        reason = (f"is outside the atmosphere model's valid range "
+                  f"[{c.ISA_MIN_ALTITUDE:g}, {c.ISA_TROPOPAUSE:g}] m")
+        raise InputError(
+            f"altitude = {float(bad.flat[0]):g} m {reason}", owner="isa", field="altitude",
+            value=float(bad.flat[0]), lo=c.ISA_MIN_ALTITUDE, hi=c.ISA_TROPOPAUSE, unit="m",
+            reason=reason,
         )
 
 

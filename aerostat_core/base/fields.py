@@ -246,7 +246,7 @@ def field_spec(owner: type | object, name: str) -> FieldSpec:
     >>> from aerostat_core.model.inputs import Requirement
     >>> s = field_spec(Requirement, "payload_mass")
     >>> s.label, s.unit, s.lo, s.hi, s.lo_open
-    ('Payload mass', 'kg', 0, 500, True)
+    ('Payload mass', 'kg', 0, 10000, True)
     """
     cls = owner if isinstance(owner, type) else type(owner)
     try:

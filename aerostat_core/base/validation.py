@@ -108,9 +108,19 @@ class InputError(ValueError):
         return _range_text(self.lo, self.hi, self.unit, self.lo_open, self.hi_open)
 
 
-def _range_text(lo: float, hi: float, unit: str, lo_open: bool, hi_open: bool) -> str:
+def range_text(
+    lo: float, hi: float, unit: str = "", lo_open: bool = False, hi_open: bool = False
+) -> str:
+    """A valid range as the messages write it.
+
+    >>> range_text(0, 500, "kg", lo_open=True)
+    '(0, 500] kg'
+    """
     u = f" {unit}" if unit else ""
     return f"{'(' if lo_open else '['}{lo:g}, {hi:g}{')' if hi_open else ']'}{u}"
+
+
+_range_text = range_text
 
 
 def _store_back(field: str, given: object, converted: object) -> None:
@@ -282,8 +292,15 @@ _BIDI_CONTROLS = frozenset("\u202a\u202b\u202c\u202d\u202e\u2066\u2067\u2068\u20
 
 def check_name(owner: str, field: str, value: object) -> str:
     """Return ``value`` as a stripped string of 1-100 characters, else raise
-    :class:`InputError`. Control characters (Unicode category Cc), lone surrogates (which
-    cannot be encoded as UTF-8) and bidirectional overrides are refused.
+    :class:`InputError`. Only a ``str`` is a name: a number, list or dict (a file's
+    ``"name": {"a": 1}``) is refused, never turned into text. Control characters (Unicode
+    category Cc), lone surrogates (which cannot be encoded as UTF-8) and bidirectional overrides
+    are refused.
+
+    >>> check_name("case", "name", {"a": 1})
+    Traceback (most recent call last):
+    ...
+    aerostat_core.base.validation.InputError: case.name = {'a': 1} is not text (a dict)
 
     >>> check_name("Fabric", "name", "x" * 101)
     Traceback (most recent call last):
@@ -294,12 +311,18 @@ def check_name(owner: str, field: str, value: object) -> str:
     ...
     aerostat_core.base.validation.InputError: case.name contains a lone surrogate (U+D83D)
     """
-    text = str(value).strip()
-
     def fail(reason: str) -> InputError:
         return InputError(
             f"{owner}.{field} {reason}", owner=owner, field=field, value=value, reason=reason
         )
+
+    if not isinstance(value, str):
+        reason = f"is not text (a {type(value).__name__})"
+        raise InputError(
+            f"{owner}.{field} = {shown_value(value)} {reason}",
+            owner=owner, field=field, value=value, reason=reason,
+        )
+    text = value.strip()
 
     if not text:
         raise fail("must not be empty")

@@ -12,15 +12,22 @@ from __future__ import annotations
 
 import argparse
 import json
-import os
-import stat
-import sys
 from pathlib import Path
 
 import numpy as np
 
+from aerostat_core.base.cli_input import (  # noqa: F401 - read_capped, write_output: the CLI's
+    OptionError,
+    decimal,
+    read_capped,
+    whole,
+    write_output,
+)
+from aerostat_core.base.validation import InputError
+from aerostat_core.model.budget import BudgetError
 from aerostat_core.model.design import Design
 from aerostat_core.model.inputs import Requirement
+from aerostat_core.studies.scale import ClusterLostError
 
 
 def add_design_options(d: argparse.ArgumentParser) -> None:
@@ -28,12 +35,12 @@ def add_design_options(d: argparse.ArgumentParser) -> None:
     envelope and report subcommands inherit them)."""
     d.add_argument(
         "--monte-carlo",
-        type=int,
+        type=whole,
         metavar="N",
         help="Monte Carlo samples over the uncertain inputs (adds blow_by_p05_m, "
         "blow_by_p95_m, tension_p05_N, ... to --json)",
     )
-    d.add_argument("--seed", type=int, default=0, help="Monte Carlo seed (default 0)")
+    d.add_argument("--seed", type=whole, default=0, help="Monte Carlo seed (default 0)")
     d.add_argument(
         "--dask",
         metavar="SCHEDULER",
@@ -50,21 +57,21 @@ def add_subcommands(sub, design_parser: argparse.ArgumentParser) -> None:
         conflict_handler="resolve",
         help="operating envelope and flyable time of the sized aerostat",
     )
-    e.add_argument("--winds", type=int, default=61, help="wind points (default 61)")
+    e.add_argument("--winds", type=whole, default=61, help="wind points (default 61)")
     e.add_argument(
-        "--wind-top", type=float, help="largest envelope wind [m/s] (default 1.5 x survival wind)"
+        "--wind-top", type=decimal, help="largest envelope wind [m/s] (default 1.5 x survival wind)"
     )
-    e.add_argument("--altitudes", type=int, default=21, help="altitude points (default 21)")
+    e.add_argument("--altitudes", type=whole, default=21, help="altitude points (default 21)")
     e.add_argument(
         "--altitude-range",
-        type=float,
+        type=decimal,
         nargs=2,
         metavar=("LO", "HI"),
         help="altitude range [m] (default 0.25-2 x the design altitude)",
     )
     e.add_argument(
         "--payloads",
-        type=float,
+        type=decimal,
         nargs="+",
         metavar="KG",
         help="payload axis [kg] (default: the design payload only)",
@@ -82,42 +89,26 @@ def add_subcommands(sub, design_parser: argparse.ArgumentParser) -> None:
 
 def _add_site_options(p: argparse.ArgumentParser) -> None:
     p.add_argument("--wind-csv", type=Path, help="hourly site wind CSV (timestamp, speed [m/s])")
-    p.add_argument("--weibull-k", type=float, help="site Weibull shape k (default 2)")
-    p.add_argument("--weibull-c", type=float, help="site Weibull scale c [m/s] (default 6)")
+    p.add_argument("--weibull-k", type=decimal, help="site Weibull shape k (default 2)")
+    p.add_argument("--weibull-c", type=decimal, help="site Weibull scale c [m/s] (default 6)")
     p.add_argument(
         "--reference-height",
-        type=float,
+        type=decimal,
         default=10.0,
         help="height of the site wind data [m] (default 10)",
     )
     p.add_argument(
         "--shear-exponent",
-        type=float,
+        type=decimal,
         default=1.0 / 7.0,
         help="power-law shear exponent to the aerostat (default 1/7)",
     )
     p.add_argument(
         "--target-availability",
-        type=float,
+        type=decimal,
         default=0.95,
         help="share of time the aerostat must fly, for the implied design wind (default 0.95)",
     )
-
-
-def read_capped(path: Path, cap: int, option: str, hint: str = "") -> bytes:
-    """Read at most ``cap`` bytes of a regular file named by a CLI ``option`` (``/dev/zero``, a
-    FIFO or a directory is refused); ``ValueError`` naming the option otherwise."""
-    try:
-        fd = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0))
-    except OSError as exc:
-        raise ValueError(f"{option} {path}: {exc.strerror}") from None
-    with os.fdopen(fd, "rb") as fh:
-        if not stat.S_ISREG(os.fstat(fh.fileno()).st_mode):
-            raise ValueError(f"{option} {path}: not a regular file")
-        data = fh.read(cap + 1)
-    if len(data) > cap:
-        raise ValueError(f"{option} {path}: larger than {cap} bytes{hint}")
-    return data
 
 
 def site_from_args(args):
@@ -126,21 +117,30 @@ def site_from_args(args):
 
     if args.wind_csv is not None:
         if args.weibull_k is not None or args.weibull_c is not None:
-            raise ValueError("give either --wind-csv or --weibull-k/--weibull-c, not both")
+            raise OptionError("--wind-csv", "give either --wind-csv or --weibull-k/--weibull-c, "
+                              "not both")
         data = read_capped(args.wind_csv, MAX_CSV_BYTES, "--wind-csv",
                            " (about 200 000 hourly rows)")
         try:
             return read_wind_csv(data, args.reference_height, args.shear_exponent)
         except ValueError as exc:
-            raise ValueError(f"--wind-csv {args.wind_csv}: {exc}") from None
+            raise OptionError("--wind-csv", f"{args.wind_csv}: {exc}") from None
     kw = {}
     if args.weibull_k is not None:
         kw["shape"] = args.weibull_k
     if args.weibull_c is not None:
         kw["scale"] = args.weibull_c
-    return WeibullSite(
-        reference_height=args.reference_height, shear_exponent=args.shear_exponent, **kw
-    )
+    try:
+        return WeibullSite(
+            reference_height=args.reference_height, shear_exponent=args.shear_exponent, **kw
+        )
+    except InputError as exc:
+        raise OptionError(_SITE_OPTIONS.get(exc.field, "--weibull-k"), str(exc)) from None
+
+
+#: WeibullSite field -> its option.
+_SITE_OPTIONS = {"shape": "--weibull-k", "scale": "--weibull-c",
+                 "reference_height": "--reference-height", "shear_exponent": "--shear-exponent"}
 
 
 def monte_carlo_summary(d: Design, args) -> dict:
@@ -149,9 +149,16 @@ def monte_carlo_summary(d: Design, args) -> dict:
         return {}
     from aerostat_core.studies.uncertainty import monte_carlo, rule_set_spread
 
-    out = monte_carlo(d, args.monte_carlo, args.seed, client=args.dask).summary()
-    # the same mission under every rule set, beside it (at most 2000 samples each)
-    out["rule_sets"] = rule_set_spread(d.requirement, n=min(args.monte_carlo, 2000), seed=args.seed)
+    try:
+        out = monte_carlo(d, args.monte_carlo, args.seed, client=args.dask).summary()
+        # the same mission under every rule set, beside it (at most 2000 samples each, here)
+        out["rule_sets"] = rule_set_spread(
+            d.requirement, n=min(args.monte_carlo, 2000), seed=args.seed
+        )
+    except BudgetError as exc:
+        raise OptionError("--monte-carlo", str(exc)) from None
+    except ValueError as exc:
+        raise OptionError("--dask" if args.dask else "--monte-carlo", str(exc)) from None
     return out
 
 
@@ -163,22 +170,22 @@ def _client(args):
     return dask_client(args.dask)
 
 
-def run(args, req: Requirement, cfg) -> int:
-    """Run the ``envelope`` or ``report`` subcommand; exit code 0, or 2 with one line on bad
-    input."""
-    from aerostat_core.model.design import design
-
+def run(args, req: Requirement, cfg, make_design) -> int:
+    """Run the ``envelope`` or ``report`` subcommand; exit code 0. Bad input raises
+    ``ValueError`` (an :class:`OptionError` names the option), which :mod:`aerostat_core.cli.entry`
+    prints as one line with exit code 2; ``make_design(req, cfg)`` builds the design the way
+    ``design`` does."""
     client = None
     try:
         site = site_from_args(args)
-        d = design(req, cfg)
-        client = _client(args)
+        d = make_design(req, cfg)
+        try:
+            client = _client(args)
+        except ValueError as exc:
+            raise OptionError("--dask", str(exc)) from None
         if args.command == "envelope":
             return _envelope(args, d, site, client)
         return _report(args, req, d, site, client)
-    except ValueError as exc:
-        print(f"error: {exc}", file=sys.stderr)
-        return 2
     finally:
         if client is not None:
             from aerostat_core.studies.scale import close_client
@@ -195,12 +202,27 @@ def _envelope(args, d: Design, site, client) -> int:
         ("--altitudes", args.altitudes, 1, 501),
     ):
         if not lo <= v <= hi:
-            raise ValueError(f"{name} = {v} is outside the valid range [{lo}, {hi}]")
+            raise OptionError(name, f"{v} is outside the valid range [{lo}, {hi}]")
     w0, h0 = default_axes(d, args.winds, args.altitudes)
     wind = w0 if args.wind_top is None else np.linspace(0.0, args.wind_top, args.winds)
     alt = h0 if args.altitude_range is None else np.linspace(*args.altitude_range, args.altitudes)
-    env = operating_envelope(d, wind, alt, args.payloads, client=client)
-    ft = flyable_time(d, site, target_availability=args.target_availability, seed=args.seed)
+    try:
+        env = operating_envelope(d, wind, alt, args.payloads, client=client)
+    except BudgetError as exc:
+        raise OptionError("--winds/--altitudes/--payloads", str(exc)) from None
+    except ClusterLostError as exc:
+        raise OptionError("--dask", str(exc)) from None
+    except ValueError as exc:  # an axis outside its range ("envelope wind = 99 m/s ...")
+        text = str(exc)
+        option = next((o for key, o in (("envelope wind", "--wind-top"),
+                                        ("envelope altitude", "--altitude-range"),
+                                        ("envelope payload", "--payloads"))
+                       if text.startswith(key)), "--winds/--altitudes/--payloads")
+        raise OptionError(option, text) from None
+    try:
+        ft = flyable_time(d, site, target_availability=args.target_availability, seed=args.seed)
+    except InputError as exc:
+        raise OptionError("--target-availability", str(exc)) from None
     lw = env.limit_wind()
     out = {
         "n_points": env.points,
@@ -216,10 +238,7 @@ def _envelope(args, d: Design, site, client) -> int:
     if args.csv is not None:
         from aerostat_core.model.io import rows_to_csv
 
-        try:
-            args.csv.write_text(rows_to_csv(out["points"]))
-        except OSError as exc:
-            raise ValueError(f"--csv {args.csv}: {exc.strerror}") from None
+        write_output("--csv", args.csv, rows_to_csv(out["points"]))
     if args.json:
         print(json.dumps(out))
     else:
@@ -242,13 +261,15 @@ def _report(args, req: Requirement, d: Design, site, client) -> int:
     from aerostat_core.output.html_report import build_report
 
     n = 2000 if args.monte_carlo is None else args.monte_carlo
-    text = build_report(
-        d, site, n_monte_carlo=n, seed=args.seed, base_requirement=req, client=client
-    )
     try:
-        args.output.write_text(text, encoding="utf-8")
-    except OSError as exc:
-        raise ValueError(f"-o {args.output}: {exc.strerror}") from None
+        text = build_report(
+            d, site, n_monte_carlo=n, seed=args.seed, base_requirement=req, client=client
+        )
+    except BudgetError as exc:
+        raise OptionError("--monte-carlo", str(exc)) from None
+    except ClusterLostError as exc:
+        raise OptionError("--dask", str(exc)) from None
+    write_output("--output", args.output, text)
     if not args.json:
         print(f"report written to {args.output} ({len(text) // 1024} kB)")
     return 0

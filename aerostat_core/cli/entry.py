@@ -1,9 +1,15 @@
-"""Command line: ``python -m aerostat_core design --payload 10 --altitude 300 [--rules practice]
-[--shape gnvr] [--config f.json] [--csv out.csv] [--json] [--stl hull.stl]
-[--gores 12 --gores-dxf g.dxf]``. Prints a readable summary (or ``Design.summary()``
-as JSON); a bad value exits with code 2 and one line naming the field. The CLI and the library
-give the same design for the same inputs: limits left open come from the rule set, and without
-``--config`` the configuration is the rule set's (presets.rules_configuration)."""
+"""Command line: ``aerostat design --payload 10 --altitude 300 [--rules practice]
+[--shape gnvr] [--fins-position 0.6] [--config f.json] [--csv out.csv] [--json] [--stl hull.stl]
+[--gores 12 --gores-dxf g.dxf]`` (or ``python -m aerostat_core ...``). Prints a readable summary
+(or ``Design.summary()`` as JSON). Every design input is an option, built from the field registry
+(:mod:`aerostat_core.cli.options`). The CLI and the library give the same design for the same
+inputs: limits left open come from the rule set, and without ``--config`` the configuration is
+the rule set's (presets.rules_configuration).
+
+No input gives a traceback: a bad value, file or output (a directory, no permission, a full disk),
+a request over the compute budget or a lost Dask cluster exits with code 2 and one line
+``error: --option: what is wrong``.
+"""
 
 from __future__ import annotations
 
@@ -11,46 +17,36 @@ import argparse
 import json
 import os
 import sys
-from dataclasses import replace
 from pathlib import Path
 
+from aerostat_core.base.cli_input import OptionError, decimal, whole
+from aerostat_core.base.validation import InputError
 from aerostat_core.cli.commands import (
     add_design_options,
     add_subcommands,
     monte_carlo_summary,
     read_capped,
+    write_output,
 )
 from aerostat_core.cli.commands import run as run_subcommand
+from aerostat_core.cli.options import (
+    add_input_options,
+    apply_configuration,
+    apply_requirement,
+    given_inputs,
+    option_for_error,
+)
 from aerostat_core.dynamics import cli as simulate_cli
-from aerostat_core.geometry.shapes import SHAPES
+from aerostat_core.model.budget import BudgetError
 from aerostat_core.model.design import Design, design
 from aerostat_core.model.inputs import Requirement
 from aerostat_core.model.io import design_from_json, rows_to_csv
 from aerostat_core.model.presets import rules_configuration
-from aerostat_core.model.rules import RULE_NAMES
 
 #: Largest --config file read [bytes] (a design file is a few kB).
 CONFIG_SIZE_CAP = 1_000_000
-
-#: Requirement fields settable from the command line: option -> field.
-_OPTIONS = {
-    "payload": "payload_mass",
-    "altitude": "altitude",
-    "site_elevation": "site_elevation",
-    "isa_offset": "isa_offset",
-    "wind_max": "wind_max",
-    "design_wind": "design_wind",
-    "blow_by_limit": "blow_by_limit",
-    "site_temperature": "site_temperature",
-    "survival_wind": "survival_wind",
-    "altitude_loss_limit": "altitude_loss_limit",
-    "free_lift_fraction": "free_lift_fraction",
-    "safety_factor": "min_tether_safety_factor",
-    "rules": "rules",
-    "payload_power": "payload_power",
-    "power_via": "power_via",
-    "endurance_days": "endurance_days",
-}
+#: Valid ranges of the pattern options: option -> (lo, hi, unit).
+PATTERN_RANGES = {"--gores": (3, 64, ""), "--seam-allowance": (0.0, 0.2, "m")}
 
 
 def design_csv(d: Design) -> str:
@@ -95,58 +91,33 @@ def format_summary(d: Design) -> str:
     return "\n".join(lines)
 
 
+class ArgumentParser(argparse.ArgumentParser):
+    """argparse with one-line errors: ``error: argument --payload: ...`` and exit code 2 (no
+    usage block: the line names the option; ``--help`` lists them)."""
+
+    def error(self, message: str):  # noqa: D102 - argparse's hook
+        self.exit(2, f"error: {message}\n")
+
+
 def _parser() -> argparse.ArgumentParser:
-    p = argparse.ArgumentParser(prog="python -m aerostat_core",
-                                description="Tethered-aerostat conceptual design.")
+    p = ArgumentParser(prog="aerostat", description="Tethered-aerostat conceptual design.")
     sub = p.add_subparsers(dest="command", required=True)
     d = sub.add_parser("design", help="size and evaluate an aerostat")
-    d.add_argument("--payload", type=float, help="payload mass [kg]")
-    d.add_argument("--altitude", type=float, help="operating altitude above the site [m]")
-    d.add_argument("--site-elevation", type=float, help="launch-site elevation [m]")
-    d.add_argument("--isa-offset", type=float, help="ISA temperature offset [K]")
-    d.add_argument("--wind-max", type=float, help="largest sweep wind speed [m/s]")
-    d.add_argument("--site-temperature", type=float, help="temperature at the launch site [degC]")
-    d.add_argument("--design-wind", type=float,
-                   help="operational (design) wind [m/s] (default from the rule set)")
-    d.add_argument("--survival-wind", type=float,
-                   help="survival wind [m/s] (default from the rule set)")
-    d.add_argument("--blow-by-limit", type=float,
-                   help="blow-by limit at the design wind [m] (default: the rule set's share of "
-                        "the tether length)")
-    d.add_argument("--altitude-loss-limit", type=float,
-                   help="permissible altitude loss at the design wind [m]")
-    d.add_argument("--free-lift-fraction", type=float,
-                   help="required free lift / gross lift [-]")
-    d.add_argument("--safety-factor", type=float,
-                   help="required tether safety factor at the design wind [-]")
-    d.add_argument("--rules", choices=RULE_NAMES,
-                   help="rule set for the limits left open and the default configuration "
-                        "(default: practice)")
-    d.add_argument("--payload-power", type=float,
-                   help="payload electrical power [W] (default 0: no power supply modelled)")
-    d.add_argument("--power-via", choices=("onboard", "tether"),
-                   help="payload power from an onboard battery or through the tether "
-                        "(default onboard)")
-    d.add_argument("--endurance-days", type=float,
-                   help="days aloft without a helium top-up, keeping the free-lift margin "
-                        "(default 0: no endurance requirement)")
-    d.add_argument("--volume", type=float, help="hull volume [m3] (default: sized)")
     d.add_argument("--config", type=Path, help="JSON design file with every input")
     d.add_argument("--csv", type=Path, help="write geometry, mass and performance CSV here")
     d.add_argument("--json", action="store_true",
                    help="print Design.summary() as JSON instead of the readable summary "
                         "(adds hull_shape)")
-    d.add_argument("--shape", choices=SHAPES, help="hull shape (default: npl, or the config's)")
-    d.add_argument("--fineness-ratio", type=float,
-                   help="hull l/d (default: the shape's standard value)")
     d.add_argument("--stl", type=Path, help="write an STL of the hull and fins here")
-    d.add_argument("--gores", type=int, default=12, help="number of gores (default 12)")
-    d.add_argument("--seam-allowance", type=float, default=0.02,
-                   help="seam allowance of the patterns [m] (default 0.02)")
+    d.add_argument("--gores", type=whole, default=12, help="number of gores, valid [3, 64] "
+                   "(default 12)")
+    d.add_argument("--seam-allowance", type=decimal, default=0.02,
+                   help="seam allowance of the patterns [m], valid [0, 0.2] (default 0.02)")
     d.add_argument("--gores-dxf", type=Path, help="write gore and fin patterns as DXF here")
     d.add_argument("--gores-svg", type=Path, help="write gore and fin patterns as SVG here")
     d.add_argument("--gores-csv", type=Path, help="write the gore half-widths CSV here")
-    simulate_cli.add_parser(sub)  # python -m aerostat_core simulate (aerostat_core.dynamics.cli)
+    add_input_options(d)
+    simulate_cli.add_parser(sub)  # aerostat simulate (aerostat_core.dynamics.cli)
     add_design_options(d)
     add_subcommands(sub, d)
     return p
@@ -157,32 +128,61 @@ def summary_json(d: Design) -> str:
     s = d.summary().to_dict()
     s.setdefault("hull_mass_kg", float(d.airframe.mass.items["hull"]))
     s.setdefault("hull_shape", d.airframe.hull.shape)
+    # the class of thesis Table 2.3 and its fielded systems' figures (issue 23)
+    from aerostat_core.studies.fielded import class_figures
+
+    req = d.requirement
+    figures = class_figures(req.payload_mass, req.altitude)
+    s.setdefault("class", figures.pop("class"))
+    s.setdefault("class_typical", figures)
+    cfg = d.configuration
+    s.setdefault("hull_fabric", cfg.hull_fabric.name)
+    s.setdefault("fin_fabric", cfg.fin_fabric.name)
+    s.setdefault("tether", cfg.tether.name)
     return json.dumps(s, indent=2)
 
 
 def _write_exports(args, d: Design) -> list[str]:
-    """Write the requested geometry files; returns the lines to print (raises OSError)."""
+    """Write the requested geometry files; returns the lines to print (raises OptionError)."""
     from aerostat_core.output.export import design_stl, gore_csv, gore_dxf, gore_pattern, gore_svg
 
     done = []
     if args.stl is not None:
-        args.stl.write_bytes(design_stl(d))
+        write_output("--stl", args.stl, design_stl(d))
         done.append(f"  STL written to {args.stl}")
     if any(x is not None for x in (args.gores_dxf, args.gores_svg, args.gores_csv)):
         pat = gore_pattern(d, args.gores, args.seam_allowance)
-        for path, data in ((args.gores_dxf, gore_dxf), (args.gores_svg, gore_svg)):
+        for option, path, data in (("--gores-dxf", args.gores_dxf, gore_dxf),
+                                   ("--gores-svg", args.gores_svg, gore_svg)):
             if path is not None:
-                path.write_bytes(data(pat))
+                write_output(option, path, data(pat))
                 done.append(f"  patterns written to {path}")
         if args.gores_csv is not None:
-            args.gores_csv.write_text(gore_csv(pat))
+            write_output("--gores-csv", args.gores_csv, gore_csv(pat))
             done.append(f"  gore half-widths written to {args.gores_csv}")
     return done
 
 
+def make_design(req: Requirement, cfg, given: dict | None = None) -> Design:
+    """:func:`design` with its errors named by option: an input error by the option of its
+    field, the compute budget by the options that reduce it."""
+    try:
+        return design(req, cfg)
+    except BudgetError as exc:
+        raise OptionError("--tether-segments/--wind-step", str(exc)) from None
+    except InputError as exc:
+        raise OptionError(option_for_error(exc, given or {}) or "input", str(exc)) from None
+
+
 def main(argv: list[str] | None = None) -> int:
-    """Entry point; returns the exit code (0 ok, 2 bad input). A closed pipe (``| head``) ends
-    quietly."""
+    """Entry point (the ``aerostat`` console script); returns the exit code (0 ok, 1 a
+    simulation stopped early, 2 bad input: one line naming the option). An option argparse
+    refuses (an unknown choice, a number that is not plain decimal) and ``--help`` exit through
+    ``SystemExit`` as argparse does (code 2, one line; 0). A closed pipe (``| head``) ends
+    quietly; no input ever prints a traceback."""
+    for stream in (sys.stdout, sys.stderr):  # a non-UTF-8 terminal: never an encoding error
+        if hasattr(stream, "reconfigure"):
+            stream.reconfigure(errors="backslashreplace")
     try:
         return _main(argv)
     except BrokenPipeError:
@@ -190,44 +190,62 @@ def main(argv: list[str] | None = None) -> int:
         devnull = os.open(os.devnull, os.O_WRONLY)
         os.dup2(devnull, sys.stdout.fileno())
         return 0
+    except (ValueError, OSError, RecursionError, MemoryError) as exc:
+        print(f"error: {_one_line(exc)}", file=sys.stderr)
+        return 2
+    except KeyboardInterrupt:
+        print("error: interrupted", file=sys.stderr)
+        return 130
+    except Exception as exc:  # noqa: BLE001 - a defect: one line, never a traceback
+        if os.environ.get("AEROSTAT_TRACEBACK"):
+            raise
+        print(f"error: internal error ({type(exc).__name__}: {_one_line(exc)}); please report "
+              "it with the command line (AEROSTAT_TRACEBACK=1 shows the traceback)",
+              file=sys.stderr)
+        return 2
+
+
+def _one_line(exc: BaseException) -> str:
+    if isinstance(exc, OSError) and exc.strerror:
+        text = f"{exc.filename}: {exc.strerror}" if exc.filename else exc.strerror
+    else:
+        text = str(exc) or type(exc).__name__
+    return " ".join(text.split())[:1000]
+
+
+def _inputs(args) -> tuple:
+    """The requirement and configuration of the options (``--config`` first, then every input
+    option given); OptionError naming the option."""
+    given = given_inputs(args)
+    if args.config is not None:
+        data = read_capped(args.config, CONFIG_SIZE_CAP, "--config")
+        try:
+            req, cfg = design_from_json(data)
+        except ValueError as exc:
+            raise OptionError("--config", f"{args.config}: {exc}") from None
+    else:
+        req, cfg = Requirement(), None
+    req = apply_requirement(req, given)
+    if cfg is None:
+        cfg = rules_configuration(req.rules)
+    cfg = apply_configuration(cfg, given)
+    return req, cfg, given
 
 
 def _main(argv: list[str] | None) -> int:
     args = _parser().parse_args(argv)
     if args.command == "simulate":
         return args.handler(args)
-    try:
-        if args.config is not None:
-            req, cfg = design_from_json(read_capped(args.config, CONFIG_SIZE_CAP, "--config"))
-        else:
-            req, cfg = Requirement(), None
-        changes = {f: getattr(args, o) for o, f in _OPTIONS.items() if getattr(args, o) is not None}
-        req = replace(req, **changes)
-        if cfg is None:
-            cfg = rules_configuration(req.rules)
-        if args.volume is not None:
-            cfg = cfg.with_design_variables(volume=args.volume)
-        if args.shape is not None or args.fineness_ratio is not None:
-            shape = args.shape or cfg.hull.shape
-            f = args.fineness_ratio if args.fineness_ratio is not None else (
-                cfg.hull.fineness_ratio if shape == cfg.hull.shape else None)
-            cfg = replace(cfg, hull=replace(cfg.hull, shape=shape, fineness_ratio=f))
-        if not 3 <= args.gores <= 64:
-            raise ValueError(f"--gores = {args.gores} is outside the valid range [3, 64]")
-        if not 0 <= args.seam_allowance <= 0.2:
-            raise ValueError(f"--seam-allowance = {args.seam_allowance:g} is outside the valid "
-                             "range [0, 0.2] m")
-    except ValueError as exc:
-        print(f"error: {exc}", file=sys.stderr)
-        return 2
+    req, cfg, given = _inputs(args)
+    for option, value in (("--gores", args.gores), ("--seam-allowance", args.seam_allowance)):
+        lo, hi, unit = PATTERN_RANGES[option]
+        if not lo <= value <= hi:
+            u = f" {unit}" if unit else ""
+            raise OptionError(option, f"{value:g}{u} is outside the valid range [{lo:g}, {hi:g}]{u}")
     if args.command != "design":
-        return run_subcommand(args, req, cfg)
-    d = design(req, cfg)
-    try:
-        mc = monte_carlo_summary(d, args)
-    except ValueError as exc:
-        print(f"error: {exc}", file=sys.stderr)
-        return 2
+        return run_subcommand(args, req, cfg, lambda r, c: make_design(r, c, given))
+    d = make_design(req, cfg, given)
+    mc = monte_carlo_summary(d, args)
     if args.json:
         print(json.dumps({**json.loads(summary_json(d)), **mc}, indent=2))
     else:
@@ -241,18 +259,10 @@ def _main(argv: list[str] | None) -> int:
                 print(f"    rules {r['rules']:<9s}{r['volume_m3']:7.1f} m3, blow-by "
                       f"{r['blow_by_p05_m']:.1f}-{r['blow_by_p95_m']:.1f} m at "
                       f"{r['design_wind_m_s']:g} m/s")
-    try:
-        for line in _write_exports(args, d):
-            print(line, file=sys.stderr if args.json else sys.stdout)
-    except OSError as exc:
-        print(f"error: {exc.filename}: {exc.strerror}", file=sys.stderr)
-        return 2
+    for line in _write_exports(args, d):
+        print(line, file=sys.stderr if args.json else sys.stdout)
     if args.csv is not None:
-        try:
-            args.csv.write_text(design_csv(d))
-        except OSError as exc:
-            print(f"error: --csv {args.csv}: {exc.strerror}", file=sys.stderr)
-            return 2
+        write_output("--csv", args.csv, design_csv(d))
         if not args.json:
             print(f"  CSV written to {args.csv}")
     sys.stdout.flush()

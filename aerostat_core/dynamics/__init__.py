@@ -19,11 +19,18 @@ Dryden field with IEC 61400-1 coherence), :mod:`.tether` (lumped-mass line), :mo
 (reference cases R1-R4), :mod:`.thesis` (the thesis comparison), :mod:`.scenarios` (runs from
 plain settings: the app and the CLI), :mod:`.moordyn_check` (live MoorDyn cross-check).
 
+``simulate`` and ``linearize`` are the functions, also once their modules (of the same names) are
+imported: the package keeps the function under the name and the module stays in ``sys.modules``
+(``from aerostat_core.dynamics.simulate import straight_state`` works as before; reach a module
+object with ``importlib.import_module("aerostat_core.dynamics.simulate")``).
+
 Importing the package has no side effects. The numba kernels compile on first use and are cached
 on disk (``cache=True``); the first :class:`DynamicSystem` of a process drops stale cache files
 (:mod:`.kernel_cache`), and :func:`warm_up` compiles everything ahead (server start, image build).
 """
 
+import sys
+import types
 from importlib import import_module
 
 #: Public names -> the module that defines them (imported on first use: ``import
@@ -41,7 +48,33 @@ _EXPORTS = {
     "TetherModel": "tether",
     "DrydenTurbulence": "wind", "Gust": "wind", "MeanProfile": "wind", "SpeedSchedule": "wind",
     "WindScenario": "wind", "dryden_parameters": "wind",
+    # 6-DOF (docs/dynamics.md §7)
+    "Events6": "sixdof", "Hull6": "sixdof", "System6": "sixdof", "Wind3D": "sixdof",
+    "simulate6": "sixdof", "system6_from_design": "sixdof", "Result6": "sixdof_results",
+    "lateral_modes": "lateral", "lateral_sweep": "lateral",
+    "static_lateral_derivatives": "lateral", "Request6": "scenarios6", "run6": "scenarios6",
 }
+
+
+#: Names that are both a function of the public API and the module defining it: the package
+#: attribute stays the function (see :class:`_Package`).
+FUNCTIONS_OVER_MODULES = frozenset({"simulate", "linearize"})
+
+
+class _Package(types.ModuleType):
+    """This package's module type: the import system binds every imported submodule as an
+    attribute of its package (``aerostat_core.dynamics.simulate`` = the module), which would
+    hide the function of the same name (the documented ``from aerostat_core.dynamics import
+    simulate``); that binding is skipped for :data:`FUNCTIONS_OVER_MODULES`, so the name
+    resolves through ``__getattr__`` to the function."""
+
+    def __setattr__(self, name: str, value) -> None:
+        if name in FUNCTIONS_OVER_MODULES and isinstance(value, types.ModuleType):
+            return
+        super().__setattr__(name, value)
+
+
+sys.modules[__name__].__class__ = _Package
 
 
 #: Old (British) names kept for one release (docs/architecture.md §7).

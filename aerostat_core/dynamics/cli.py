@@ -1,7 +1,9 @@
 """``python -m aerostat_core simulate``: a dynamics run for scripts.
 
-    python -m aerostat_core simulate --scenario {steady,varying,gust,turbulence}
+    aerostat simulate --scenario {steady,varying,gust,turbulence}
         [--design design.json] [--duration S] [--seed N] [--csv out.csv] [--json]
+    python -m aerostat_core simulate --dof 6 --scenario {crosswind-gust,veer,direction-step,
+        turbulence-3d,reel-in,reel-out,tether-break} [same options]
 
 The default design is the thesis optimised design (:func:`aerostat_core.model.presets.thesis_optimized`)
 and each scenario has the thesis comparison's settings (:mod:`.thesis`). ``--json`` prints
@@ -9,6 +11,11 @@ settling_time_s, pitch_range_deg [min, max], u_peak_mps, w_peak_mps, pitch_peak_
 deviations from the mean over the stated window), tension_range_N [min, max], status, the
 window, the RMS values, slack events and the limits; the CSV header records the scenario and
 every parameter. Bad input exits with code 2 and one line naming the option.
+
+``--dof 6`` runs the 6-DOF model (:mod:`.scenarios6`); its JSON has the same keys plus
+roll_peak_deg, yaw_peak_deg, lateral_peak_m, lateral_unstable_above_m_s (null when every lateral
+mode is stable up to the survival wind), lateral_modes, static_derivatives,
+tension_winch_peak_N, tether_length_range_m (and ascent_m, drift_m after a tether break).
 """
 
 from __future__ import annotations
@@ -18,6 +25,9 @@ import json
 import os
 import sys
 from pathlib import Path
+
+from aerostat_core.base.cli_input import OptionError, decimal, whole
+from aerostat_core.dynamics.scenarios6 import SCENARIOS6
 
 #: Largest design file read [bytes].
 MAX_DESIGN_BYTES = 1_000_000
@@ -29,14 +39,25 @@ def add_parser(subparsers) -> argparse.ArgumentParser:
         "simulate", help="simulate the aerostat in gusts, ramps or turbulence"
     )
     p.add_argument(
+        "--dof",
+        type=whole,
+        choices=(3, 6),
+        default=3,
+        help="3: the longitudinal model (thesis scenarios); 6: the 6-DOF hull on a 3-D tether",
+    )
+    p.add_argument(
         "--scenario",
-        choices=("steady", "varying", "gust", "turbulence"),
-        default="gust",
-        help="wind scenario (thesis comparison settings)",
+        choices=("steady", "varying", "gust", "turbulence") + SCENARIOS6,
+        default=None,
+        help="wind scenario: steady, varying, gust, turbulence (--dof 3, thesis comparison "
+        "settings; default gust) or " + ", ".join(SCENARIOS6) + " (--dof 6; default "
+        "crosswind-gust)",
     )
     p.add_argument("--design", type=Path, help="JSON design file (default: thesis optimised)")
-    p.add_argument("--duration", type=float, help="simulated time [s] (default per scenario)")
-    p.add_argument("--seed", type=int, default=1, help="turbulence seed [-]")
+    p.add_argument("--duration", type=decimal,
+                   help="simulated time [s], valid (0, 3600] (default per scenario)")
+    p.add_argument("--seed", type=whole, default=1,
+                   help="turbulence seed [-], valid [0, 4294967295] (default 1)")
     p.add_argument("--csv", type=Path, help="write the time histories here")
     p.add_argument("--json", action="store_true", help="print the metrics as JSON")
     p.set_defaults(handler=run)
@@ -44,55 +65,127 @@ def add_parser(subparsers) -> argparse.ArgumentParser:
 
 
 def _read_design(path: Path) -> dict:
+    from aerostat_core.base.cli_input import read_capped
     from aerostat_core.model.io import design_from_json, inputs_to_dict
 
-    if not path.is_file():
-        raise ValueError(f"--design {path}: not a regular file")
-    with path.open("rb") as fh:
-        text = fh.read(MAX_DESIGN_BYTES + 1)
-    if len(text) > MAX_DESIGN_BYTES:
-        raise ValueError(f"--design {path}: larger than {MAX_DESIGN_BYTES} bytes")
-    return inputs_to_dict(*design_from_json(text))
+    text = read_capped(path, MAX_DESIGN_BYTES, "--design")
+    try:
+        return inputs_to_dict(*design_from_json(text))
+    except ValueError as exc:
+        raise OptionError("--design", f"{path}: {exc}") from None
 
 
 def run(args: argparse.Namespace) -> int:
     """Run the subcommand; returns the exit code (0 ok, 1 the run stopped early, 2 bad input)."""
+    from aerostat_core.base.cli_input import write_output
+
     from .results import limit_flags
     from .scenarios import limits_of, request_header, run_request
     from .thesis import metrics, thesis_request, thesis_settings_text
 
+    if args.dof == 6:
+        return run_6dof(args)
+    if args.scenario is None:
+        args.scenario = "gust"
+    if args.scenario in SCENARIOS6:
+        print(f"error: --scenario {args.scenario} needs --dof 6", file=sys.stderr)
+        return 2
     try:
         if args.duration is not None and not 0 < args.duration <= 3600:
-            raise ValueError(
-                f"--duration = {args.duration:g} s is outside the valid range (0, 3600] s"
+            raise OptionError(
+                "--duration", f"{args.duration:g} s is outside the valid range (0, 3600] s"
             )
         if not 0 <= args.seed <= 2**32 - 1:
-            raise ValueError(f"--seed = {args.seed} is outside the valid range [0, 4294967295]")
+            raise OptionError("--seed", f"{args.seed} is outside the valid range [0, 4294967295]")
         req = thesis_request(args.scenario, args.seed, args.duration)
         if args.design is not None:
-            try:
-                req["inputs"] = _read_design(args.design)
-            except OSError as exc:
-                raise ValueError(f"--design {args.design}: {exc.strerror}") from None
+            req["inputs"] = _read_design(args.design)
         res, d = run_request(req)
     except (ValueError, RuntimeError) as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2
     m = metrics(res, req)
     m["scenario"] = args.scenario
-    m["settings"] = thesis_settings_text().get(args.scenario, "steady wind, 10 m/s")
+    # the settings actually used: the seed and duration given, not the thesis defaults
+    m["settings"] = thesis_settings_text(args.seed, args.duration).get(
+        args.scenario, f"steady wind, 10 m/s, {req['duration']:g} s"
+    )
     m["limits"] = limit_flags(res, limits_of(d))
     m["wall_time_s"] = res.stats["wall_time"]
     if args.csv is not None:
         try:
-            args.csv.write_text(res.to_csv(header=request_header(req, res)))
-        except OSError as exc:
-            print(f"error: --csv {args.csv}: {exc.strerror}", file=sys.stderr)
+            write_output("--csv", args.csv, res.to_csv(header=request_header(req, res)))
+        except OptionError as exc:
+            print(f"error: {exc}", file=sys.stderr)
             return 2
     try:
         _print(m, args)
     except BrokenPipeError:  # e.g. piped into head: stop quietly
         sys.stdout = open(os.devnull, "w")  # noqa: SIM115 - swallow the interpreter's final flush
+    return 0 if res.ok else 1
+
+
+def run_6dof(args: argparse.Namespace) -> int:
+    """``simulate --dof 6``: a 6-DOF scenario (:mod:`.scenarios6`); same exit codes."""
+    from aerostat_core.base.validation import InputError
+    from aerostat_core.dynamics.scenarios6 import Request6, metrics6, run6
+
+    scenario = args.scenario or "crosswind-gust"
+    try:
+        if scenario not in SCENARIOS6:
+            raise ValueError(f"--scenario {scenario} is a 3-DOF scenario: use --dof 3 (or one of "
+                             f"{', '.join(SCENARIOS6)})")
+        kw = {"seed": args.seed}
+        if args.duration is not None:
+            kw["duration"] = args.duration
+        try:
+            req = Request6.for_scenario(scenario, **kw)
+        except InputError as exc:
+            opt = {"duration": "--duration", "seed": "--seed"}.get(exc.field, exc.field)
+            raise ValueError(f"{opt} = {exc.value} is outside the valid range "
+                             f"[{exc.lo:g}, {exc.hi:g}] {exc.unit}".rstrip()) from None
+        design = None
+        if args.design is not None:
+            from aerostat_core.model.design import design as build
+            from aerostat_core.model.io import inputs_from_dict
+
+            try:
+                design = build(*inputs_from_dict(_read_design(args.design)))
+            except OSError as exc:
+                raise ValueError(f"--design {args.design}: {exc.strerror}") from None
+        res, d = run6(req, design)
+        m = metrics6(res, req, d)
+    except (ValueError, RuntimeError) as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return 2
+    m["scenario"] = scenario
+    m["dof"] = 6
+    m["settings"] = "; ".join(f"{k} = {v}" for k, v in req.header().items())
+    m["wall_time_s"] = res.stats["wall_time"]
+    if args.csv is not None:
+        try:
+            args.csv.write_text(res.to_csv(header=req.header()))
+        except OSError as exc:
+            print(f"error: --csv {args.csv}: {exc.strerror}", file=sys.stderr)
+            return 2
+    try:
+        if args.json:
+            print(json.dumps(m, indent=2))
+        else:
+            above = m["lateral_unstable_above_m_s"]
+            lines = [f"{scenario} (6-DOF): {m['status']}",
+                     f"  roll peak         {m['roll_peak_deg']:.2f} deg",
+                     f"  yaw peak          {m['yaw_peak_deg']:.2f} deg",
+                     f"  lateral peak      {m['lateral_peak_m']:.2f} m",
+                     f"  tension at C      {m['tension_range_N'][0]:.0f} .. "
+                     f"{m['tension_range_N'][1]:.0f} N",
+                     "  laterally stable up to the survival wind" if above is None else
+                     f"  LATERALLY UNSTABLE above {above:.1f} m/s"]
+            if args.csv is not None:
+                lines.append(f"  CSV written to {args.csv}")
+            print("\n".join(lines))
+    except BrokenPipeError:
+        sys.stdout = open(os.devnull, "w")  # noqa: SIM115
     return 0 if res.ok else 1
 
 

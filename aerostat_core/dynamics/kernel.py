@@ -44,6 +44,8 @@ import math
 import numpy as np
 from numba import njit
 
+from aerostat_core.dynamics.sixdof_kernel import check6_kernel, rhs6_kernel
+
 from .layout import (
     P_AERO_AX,
     P_AERO_CF,
@@ -189,6 +191,9 @@ def rhs_kernel(t, y, dy, data, diag):  # pragma: no cover - numba
         Diagnostics, ``DIAG_NAMES`` order.
     """
     prm, wpar, sched, turb, tab, strips, rho_tab, cdv = data
+    if prm[P_MODE] == 2.0:  # the 6-DOF hull on a 3-D tether (:mod:`.sixdof_kernel`)
+        rhs6_kernel(t, y, dy, data, diag)
+        return
     wt = np.empty(NT)
     wind_time_terms(t, wpar, sched, wt)
 
@@ -420,6 +425,8 @@ def check_kernel(t, y, data, diag):  # pragma: no cover - numba
     inside the aerodynamic model (tables over +-180 deg) and a slack tether carries no
     compression, so neither stops a run."""
     prm = data[0]
+    if prm[P_MODE] == 2.0:
+        return check6_kernel(t, y, data, diag)
     for i in range(y.size):
         if not math.isfinite(y[i]):
             return 3

@@ -15,7 +15,9 @@ import os
 from pathlib import Path
 
 #: Modules whose numba kernels call each other.
-KERNEL_MODULES = ("layout.py", "wind.py", "tether.py", "kernel.py", "solver.py")
+KERNEL_MODULES = ("layout.py", "wind.py", "tether.py", "sixdof_layout.py", "sixdof_wind.py",
+                  "sixdof_kernel.py", "kernel.py",
+                  "solver.py")
 _DONE: list[bool] = []
 
 

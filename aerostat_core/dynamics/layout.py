@@ -5,7 +5,7 @@ Module-level integers are compile-time constants for numba. Keep this file in sy
 """
 
 # --- general ---------------------------------------------------------------------------------
-P_MODE = 0  # 0 = point aerostat, 1 = rigid hull (3 DOF)
+P_MODE = 0  # 0 = point aerostat, 1 = rigid hull (3 DOF), 2 = 6-DOF hull (:mod:`.sixdof_kernel`)
 P_NSEG = 1  # number of tether segments N
 P_G = 2  # gravity [m/s2]
 P_RHO_Z0 = 3  # first height of the air-density table [m]

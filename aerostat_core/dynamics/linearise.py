@@ -2,9 +2,12 @@
 (identifiers in US spelling, docs/architecture.md §7). Every name resolves to the same object
 with a ``DeprecationWarning``."""
 
+from importlib import import_module
+
 from aerostat_core.base.deprecation import deprecated_aliases
 
-from . import linearize
+# the module (``from . import linearize`` is the function: the package keeps it over the module)
+linearize = import_module("aerostat_core.dynamics.linearize")
 
 #: Old names -> the names in :mod:`.linearize`.
 DEPRECATED_NAMES = {"linearise": "linearize", "Linearisation": "Linearization", "Mode": "Mode"}

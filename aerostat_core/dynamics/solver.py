@@ -65,6 +65,9 @@ STATUS = {
     4: "pitch beyond the model's limit: the aerostat diverged",
     5: "the aerostat or a tether node went below the winch level (ground not modelled)",
     6: "singular Newton matrix",
+    # 6-DOF checks (:mod:`.sixdof_kernel`)
+    11: "a tether node went below the winch level: the tether would pass through the ground",
+    12: "the hull's confluence point went below the winch: the aerostat hit the ground",
 }
 
 

@@ -171,14 +171,27 @@ def comparison_rows(runs: Mapping[str, Mapping[str, Any]]) -> list[dict]:
     return rows
 
 
-def thesis_settings_text() -> dict:
-    """One line per scenario describing its settings (page, README, CLI)."""
+def thesis_settings_text(seed: int = 1, duration: float | None = None) -> dict:
+    """One line per scenario describing its settings (page, README, CLI): the turbulence
+    ``seed`` and, when given, the simulated ``duration`` [s] actually used (the CLI's ``--seed``
+    and ``--duration``); the defaults are the thesis comparison's.
+
+    >>> thesis_settings_text(seed=7)["turbulence"].count("seed 7")
+    1
+    """
+
+    def span(default: float) -> str:
+        return f"{default if duration is None else duration:g} s"
+
+    end = 600.0 if duration is None else float(duration)  # the turbulence run's end [s]
+
     return {
         "varying": "10 -> 15 m/s at the aerostat, 5 s linear ramp at t = 20 s, uniform in space "
-        "(Froude-Krylov and added mass of the accelerating air on), 150 s",
+        f"(Froude-Krylov and added mass of the accelerating air on), {span(150.0)}",
         "gust": "10 m/s + frozen convected 1 - cos gust, 5 m/s, d_m = 60 m (6 s rise) at "
-        "t = 20 s, 150 s",
+        f"t = 20 s, {span(150.0)}",
         "turbulence": "15 m/s at the aerostat (the design wind), power law 1/7, MIL-HDBK-1797 "
         "Dryden u' + w' with W20 from the profile, spatially varying with IEC "
-        "61400-1 coherence, seed 1, 20 s fade-in, 600 s (window 60-600 s)",
+        f"61400-1 coherence, seed {int(seed)}, 20 s fade-in, {span(600.0)} (window "
+        f"{min(TURBULENCE_SETTLE + 20.0, end):g}-{span(600.0)})",
     }

@@ -25,7 +25,7 @@ from aerostat_core.geometry.hull import (
 from aerostat_core.geometry.shapes import check_fineness, shape_info
 from aerostat_core.model.inputs import Configuration, Requirement
 from aerostat_core.model.mission import ballonet_mass, effective_tether, onboard_battery_mass
-from aerostat_core.structures.mass import MassBreakdown, mass_breakdown
+from aerostat_core.structures.mass import MassBreakdown, mass_breakdown, systems_mass
 from aerostat_core.structures.materials import TetherSpec
 
 
@@ -244,6 +244,8 @@ def build_airframe(
         req.payload_mass, t.linear_density * tether_length,
         onboard_battery_mass(req, cfg), ballonet_mass(req, cfg, hull.volume),
         inertia_integrals=inertia,
+        systems_mass=systems_mass(hull.volume, cfg.systems_mass_per_volume,
+                                  cfg.systems_mass_exponent),
     )
     fb = gross_buoyancy(atm.density, hull.volume, g)
     w_a = mass.aerostat * g

@@ -149,6 +149,89 @@ def check_optimization(problem: Any, solver: str, settings: Mapping[str, Any]) -
     return check(segments, 1, n, f"This optimisation ({solver})")
 
 
+# --- batch studies run in this process (Monte Carlo, operating envelope) ----------------------
+# The batch evaluators broadcast one tether march over many points, so a point costs far less
+# than a design; they have their own limits, in the same spirit: a few seconds of CPU here. On a
+# Dask cluster (``client=``) the cluster supplies the compute and only the studies' own size
+# limits hold (uncertainty.MAX_SAMPLES, envelope.MAX_POINTS).
+
+#: Largest Monte Carlo run in this process [samples x (band speeds + 2) x tether segments]: the
+#: app's largest size, 20 000 samples of the default 10 band speeds at 50 segments (about 2.5 s
+#: of CPU here; 8 700 samples/s measured with benchmarks/bench_envelope.py).
+MAX_MONTE_CARLO_UNITS = 20_000 * 12 * 50
+#: Largest operating envelope in this process [points x tether segments]: the app's default grid
+#: (61 winds x 22 altitudes) at the registry's most tether segments (5000), so the app is never
+#: refused; 134 200 points at 50 segments (about 10 s of CPU here at most; 10 000 points at 50
+#: segments in 0.7 s measured with benchmarks/bench_envelope.py).
+MAX_ENVELOPE_UNITS = 61 * 22 * 5000
+
+
+def check_monte_carlo(segments: int, speeds: int, samples: int, what: str = "This Monte Carlo run") -> int:
+    """Return the cost of a Monte Carlo run in this process, or raise :class:`BudgetError` over
+    :data:`MAX_MONTE_CARLO_UNITS`, saying how many samples fit.
+
+    Parameters
+    ----------
+    segments : int
+        ``Configuration.tether_segments`` [-].
+    speeds : int
+        Band speeds per sample (the constraint table adds 2) [-].
+    samples : int
+        Monte Carlo samples [-].
+
+    >>> check_monte_carlo(50, 10, 20_000)
+    12000000
+    >>> check_monte_carlo(50, 10, 10**6)
+    Traceback (most recent call last):
+    ...
+    aerostat_core.model.budget.BudgetError: This Monte Carlo run needs 1,000,000 samples x 12 wind speeds x 50 tether segments = 600,000,000 units of work; the limit in one process is 12,000,000. Use at most 20000 samples, fewer tether segments, or map the run over a Dask cluster.
+    """
+    per = int(segments) * (max(int(speeds), 1) + 2)
+    cost = per * int(samples)
+    if cost <= MAX_MONTE_CARLO_UNITS:
+        return cost
+    raise BudgetError(
+        f"{what} needs {int(samples):,} samples x {max(int(speeds), 1) + 2} wind speeds x "
+        f"{int(segments)} tether segments = {cost:,} units of work; the limit in one process is "
+        f"{MAX_MONTE_CARLO_UNITS:,}. Use at most {MAX_MONTE_CARLO_UNITS // per} samples, fewer "
+        "tether segments, or map the run over a Dask cluster.",
+        cost,
+    )
+
+
+def max_monte_carlo_samples(segments: int, speeds: int) -> int:
+    """The most Monte Carlo samples one process may run for ``segments`` tether segments and
+    ``speeds`` band speeds (:data:`MAX_MONTE_CARLO_UNITS`).
+
+    >>> max_monte_carlo_samples(50, 10), max_monte_carlo_samples(2000, 10)
+    (20000, 500)
+    """
+    return MAX_MONTE_CARLO_UNITS // (int(segments) * (max(int(speeds), 1) + 2))
+
+
+def check_envelope(segments: int, points: int, what: str = "This envelope") -> int:
+    """Return the cost of an operating envelope in this process, or raise :class:`BudgetError`
+    over :data:`MAX_ENVELOPE_UNITS`, saying how many points fit.
+
+    >>> check_envelope(50, 61 * 22)
+    67100
+    >>> check_envelope(50, 2001 * 501)
+    Traceback (most recent call last):
+    ...
+    aerostat_core.model.budget.BudgetError: This envelope needs 1,002,501 points x 50 tether segments = 50,125,050 units of work; the limit in one process is 6,710,000. Use at most 134200 points (fewer winds, altitudes or payloads), fewer tether segments, or map it over a Dask cluster.
+    """
+    cost = int(segments) * int(points)
+    if cost <= MAX_ENVELOPE_UNITS:
+        return cost
+    raise BudgetError(
+        f"{what} needs {int(points):,} points x {int(segments)} tether segments = {cost:,} units "
+        f"of work; the limit in one process is {MAX_ENVELOPE_UNITS:,}. Use at most "
+        f"{MAX_ENVELOPE_UNITS // max(int(segments), 1)} points (fewer winds, altitudes or "
+        "payloads), fewer tether segments, or map it over a Dask cluster.",
+        cost,
+    )
+
+
 #: Deprecated British spellings -> the current names (docs/architecture.md §7).
 DEPRECATED_NAMES = {
     "optimisation_evaluations": "optimization_evaluations",

@@ -349,11 +349,16 @@ def design(req: Requirement | None = None, cfg: Configuration | None = None) -> 
     req = (Requirement() if req is None else req).resolved()
     cfg = rules_configuration(req.rules) if cfg is None else cfg
     budget.check_design(req, cfg)
-    sizing = None
+    sizing = selection = None
+    if cfg.materials == "catalogue":  # fabrics and tether chosen by their loads (issue 23)
+        from aerostat_core.model.selection import select_materials
+
+        selection = select_materials(req, cfg)
+        cfg = selection.configuration
     if cfg.hull.volume is None:
         # the search evaluated the table (trim + tether at the design and survival winds) at
         # the volume it chose: that airframe and state are the design's
-        sizing = size_volume(req, cfg)
+        sizing = selection.sizing if selection is not None else size_volume(req, cfg)
         volume = _f(sizing.volume)
         state = sizing.state
         af = state.evaluation.airframe
@@ -387,6 +392,8 @@ def design(req: Requirement | None = None, cfg: Configuration | None = None) -> 
     if sizing is not None and not bool(np.asarray(sizing.feasible).reshape(-1)[0]):
         violations.append(str(np.asarray(sizing.message).reshape(-1)[0]))
     violations += state.messages()
+    if selection is not None:
+        violations += selection.messages()
     # the mission's sweep includes the design wind (its reel-in wind may be that speed)
     mission = mission_report(req, cfg, af, state, _append_speed(ev, at_winds), cfg.gas_price_value)
     return Design(

@@ -21,6 +21,9 @@ from aerostat_core.model.mission import POWER_ROUTES, MissionSpec
 from aerostat_core.model.rules import DEFAULT_RULES, RULE_NAMES, RuleSet, get_rules
 from aerostat_core.structures.materials import Fabric, TetherSpec
 
+#: How the fabrics and the tether are chosen (Configuration.materials).
+MATERIAL_MODES = ("given", "catalogue")
+
 #: Requirement fields that a rule set fills in when left as ``None`` (aerostat_core.model.rules).
 RULE_FIELDS = (
     "design_wind", "survival_wind", "blow_by_limit", "altitude_loss_limit",
@@ -40,9 +43,11 @@ class Requirement:
     Parameters
     ----------
     payload_mass : float
-        Payload carried below the hull [kg], valid (0, 500].
+        Payload carried below the hull [kg], valid (0, 10000] (the strategic class of thesis
+        Table 2.3 lifts 1,600-3,200 kg; the range leaves room above it).
     altitude : float
-        Floating (operating) altitude above the launch site [m], valid [10, 3000]. The tether
+        Floating (operating) altitude above the launch site [m], valid [10, 5000] (strategic
+        aerostats fly at 3,000-5,500 m above sea level, thesis §2.3.3). The tether
         length is set equal to it (thesis practice); the table reports the altitude loss in wind.
     site_elevation : float
         Base-station elevation above mean sea level [m], valid [-400, 5000]; site + altitude must
@@ -65,9 +70,9 @@ class Requirement:
         tether safety factor must still be ``survival_safety_factor``.
     blow_by_limit : float or None
         Largest acceptable horizontal offset of the confluence point from the winch at the design
-        wind [m], valid (0, altitude].
+        wind [m], valid (0, altitude] (at most 5000).
     altitude_loss_limit : float or None
-        Permissible reduction in altitude at the design wind [m], valid (0, 3000] (a limit above
+        Permissible reduction in altitude at the design wind [m], valid (0, 5000] (a limit above
         the altitude never binds).
     free_lift_fraction : float or None
         Required free lift at rest / gross lift [-], valid [0, 0.8].
@@ -98,10 +103,10 @@ class Requirement:
     """
 
     payload_mass: float = number(
-        10.0, "Payload mass", "kg", 0, 500, lo_open=True, step=1.0, fmt="%.1f",
+        10.0, "Payload mass", "kg", 0, 10000, lo_open=True, step=1.0, fmt="%.1f",
         help="Mass hung below the hull (camera, radio...).")
     altitude: float = number(
-        300.0, "Operating altitude", "m", 10, 3000, step=10.0, fmt="%.0f",
+        300.0, "Operating altitude", "m", 10, 5000, step=10.0, fmt="%.0f",
         help="Height above the launch site; the tether length equals it.")
     site_elevation: float = number(
         0.0, "Site elevation", "m", -400, 5000, display_unit="m above sea level", step=50.0,
@@ -129,13 +134,13 @@ class Requirement:
         help="Wind the tether must survive aloft (practice 20 m/s, the tactical class); at "
         "least the design wind.", source="aerostat_core.model.rules")
     blow_by_limit: float | None = number(
-        None, "Blow-by limit at the design wind", "m", 0, 3000, lo_open=True,
+        None, "Blow-by limit at the design wind", "m", 0, 5000, lo_open=True,
         hi_field="altitude", empty="rule set", step=5.0, fmt="%.1f",
         help="Largest acceptable downwind offset of the confluence point from the winch "
         "(practice 0.5 x altitude, thesis 0.178 x altitude); at most the altitude.",
         source="aerostat_core.model.rules")
     altitude_loss_limit: float | None = number(
-        None, "Permissible altitude loss", "m", 0, 3000, lo_open=True, empty="rule set",
+        None, "Permissible altitude loss", "m", 0, 5000, lo_open=True, empty="rule set",
         step=5.0, fmt="%.1f", help="Largest acceptable loss of height at the design wind "
         "(practice 0.15 x altitude, thesis: off).", source="aerostat_core.model.rules")
     free_lift_fraction: float | None = number(
@@ -292,6 +297,13 @@ class Configuration:
     misc_mass_ratio : float
         Miscellaneous mass (confluence lines, patches, valves, nose cone) / hull fabric mass [-],
         valid [0, 2]. Thesis Table 2.2: 4.7 / 15.57 = 0.30 (INFERRED).
+    systems_mass_per_volume : float
+        Mass of the hull systems that scale with the volume (pressure control, avionics,
+        lighting, rigging, fin structure) per m3 of hull [kg/m3], valid [0, 2]
+        at a 1000 m3 hull (aerostat_core.structures.mass.systems_mass); 0 books none (the thesis' Table
+        2.2 budget).
+    systems_mass_exponent : float
+        c of m_sys = k V (V/1000 m3)^c [-], valid [-0.5, 0.5].
     gas_price : float or None
         Lifting-gas price [USD/m3], valid [0, 1000]; ``None`` takes the default of the gas kind.
     tether_segments : int
@@ -299,6 +311,10 @@ class Configuration:
         within 1 mm of a 2000-segment solution for a 300 m tether (tests/core/test_tether.py).
     mission : MissionSpec
         Battery, power-tether, ballonet, envelope and winch technology (aerostat_core.model.mission).
+    materials : {"given", "catalogue"}
+        "given": the hull fabric, fin fabric and tether above are flown as they are;
+        "catalogue": each is the lightest catalogue item that carries its load on the sized
+        hull with the safety factors (aerostat_core.model.selection; the practice configuration).
     """
 
     gas: LiftingGas = part(LiftingGas, "Lifting gas")
@@ -314,6 +330,15 @@ class Configuration:
         0.30, "Miscellaneous mass / hull mass", "", 0, 2, step=0.05, fmt="%.2f",
         help="Confluence lines, patches, valves (thesis Table 2.2: 0.30).",
         source="thesis Table 2.2")
+    systems_mass_per_volume: float = number(
+        0.0, "Hull systems mass / volume", "kg/m3", 0, 2, step=0.01, fmt="%.3f",
+        help="Pressure control, avionics, lighting, rigging and fin structure, per cubic metre "
+        "of hull (thesis preset 0; practice preset fitted on fielded aerostats).",
+        source="aerostat_core.structures.mass.systems_mass")
+    systems_mass_exponent: float = number(
+        0.0, "Hull systems mass exponent", "", -0.5, 0.5, step=0.01, fmt="%.3f",
+        help="How much faster than the volume the hull systems grow: m = k V (V/1000 m³)^c.",
+        source="aerostat_core.structures.mass.systems_mass")
     gas_price: float | None = number(
         None, "Gas price", "USD/m3", 0, 1000, empty="default", step=1.0, fmt="%.2f",
         help="Fill cost per cubic metre. Default helium 38.5 USD/m³ (thesis App. H).")
@@ -321,6 +346,10 @@ class Configuration:
         50, "Tether segments", 10, 5000, step=10,
         help="Segments of the static tether march (50 is within 1 mm of 2000).")
     mission: MissionSpec = part(MissionSpec, "Mission technology")
+    materials: str = choice(
+        "given", "Fabric and tether", MATERIAL_MODES, source="aerostat_core.model.selection",
+        help="'catalogue': the lightest catalogue fabric and tether that carry the loads of the "
+        "sized hull with the safety factors; 'given': the fabric and tether entered here.")
 
     def __post_init__(self) -> None:
         o = "Configuration"

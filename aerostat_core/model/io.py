@@ -122,7 +122,7 @@ def inputs_from_dict(data: Any) -> tuple[Requirement, Configuration]:
     >>> inputs_from_dict({"requirement": {"payload_mass": "heavy"}})
     Traceback (most recent call last):
     ...
-    aerostat_core.base.validation.InputError: Requirement.payload_mass = 'heavy' is not a number; valid range (0, 500] kg
+    aerostat_core.base.validation.InputError: Requirement.payload_mass = 'heavy' is not a number; valid range (0, 10000] kg
     """
     if not isinstance(data, dict):
         raise ValueError("a design must be a JSON object with 'requirement' and 'configuration'")

@@ -33,7 +33,8 @@ from aerostat_core.atmosphere.permeation import (
 )
 from aerostat_core.atmosphere.standard import isa
 from aerostat_core.base import constants as c
-from aerostat_core.base.fields import choice, integer, number, validate
+from aerostat_core.base.fields import choice, field_spec, integer, number, validate
+from aerostat_core.base.validation import InputError
 from aerostat_core.structures.ballonet import ballonet_fabric_mass, ballonet_fraction
 from aerostat_core.structures.materials import POWER_TETHER_CONDUCTORS, TetherSpec
 from aerostat_core.structures.membrane import allowable_pressure, membrane_loads, required_pressure
@@ -195,15 +196,28 @@ def effective_tether(req, cfg) -> TetherSpec:
     t = cfg.tether
     rho_l = t.linear_density + k.linear_density
     d = float(np.sqrt(t.diameter**2 + 2.0 * k.insulated_diameter**2))
-    if rho_l > 1.0 or d > 0.05:
+    rho_max = float(field_spec(TetherSpec, "linear_density").hi)
+    d_max = float(field_spec(TetherSpec, "diameter").hi)
+    if rho_l > rho_max or d > d_max:
         m = cfg.mission
-        raise ValueError(
+        reason = (
+            f"needs tether conductors of {1000 * k.linear_density:.0f} g/m through "
+            f"{req.altitude:g} m at {m.supply_voltage:g} V and {m.power_loss_fraction:g} loss "
+            f"(tether {1000 * rho_l:.0f} g/m, {1000 * d:.0f} mm; at most {1000 * rho_max:.0f} g/m "
+            f"and {1000 * d_max:.0f} mm)"
+        )
+        raise InputError(
             f"Requirement.payload_power = {req.payload_power:g} W through {req.altitude:g} m of "
             f"tether at MissionSpec.supply_voltage = {m.supply_voltage:g} V with "
             f"power_loss_fraction = {m.power_loss_fraction:g} needs conductors of "
             f"{1000 * k.linear_density:.0f} g/m (tether {1000 * rho_l:.0f} g/m, {1000 * d:.0f} mm);"
-            f" the tether model accepts up to 1000 g/m and 50 mm: raise the supply voltage or "
-            f"the allowed loss, or carry the power onboard"
+            f" the tether model accepts up to {1000 * rho_max:.0f} g/m and {1000 * d_max:.0f} mm:"
+            f" raise the supply voltage or the allowed loss, or carry the power onboard",
+            owner="Requirement",
+            field="payload_power",
+            value=req.payload_power,
+            unit="W",
+            reason=reason,
         )
     return power_tether(t, k)
 

@@ -25,6 +25,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from aerostat_core.base.validation import InputError, shown_value
+
 
 @dataclass(frozen=True)
 class RuleSet:
@@ -133,6 +135,8 @@ def get_rules(name: str) -> RuleSet:
     try:
         return RULE_SETS[name]
     except (KeyError, TypeError):
-        raise ValueError(
-            f"rules = {name!r} is not a rule set; valid: {', '.join(RULE_NAMES)}"
+        reason = f"is not a rule set; valid: {', '.join(RULE_NAMES)}"
+        raise InputError(
+            f"rules = {shown_value(name)} {reason}", owner="Requirement", field="rules",
+            value=name, reason=reason,
         ) from None

@@ -1,7 +1,7 @@
 """Hull sizing: the smallest volume that meets every constraint of the table at the design wind.
 
 Vectorised over a batch of design variables (the optimiser's nested V*(x), docs/methods.md
-§1.12). Every design is evaluated on a 24-point logarithmic volume grid (ratio 1.49 between
+§1.12). Every design is evaluated on a 28-point logarithmic volume grid (ratio 1.49 between
 points) in one numpy call, with the whole constraint table (aerostat_core.model.constraints) at the
 design and the survival wind. Feasibility need not be monotone in volume: blow-by and free lift
 improve with volume while the tether safety factor gets worse (a bigger hull pulls harder), so
@@ -29,6 +29,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from aerostat_core.base.fields import field_spec
+from aerostat_core.geometry.shapes import HullSpec
 from aerostat_core.model.airframe import build_airframe
 from aerostat_core.model.constraints import (
     BY_NAME,
@@ -40,9 +42,12 @@ from aerostat_core.model.constraints import (
 from aerostat_core.model.inputs import Configuration, Requirement
 from aerostat_core.tether.statics import interpolated_heights
 
-#: Volume search range [m3].
-VOLUME_MIN, VOLUME_MAX = 2.0, 2.0e4
-_GRID = np.geomspace(VOLUME_MIN, VOLUME_MAX, 24)
+#: Volume search range [m3]: from 2 m3 to the top of the hull-volume field's range (the field
+#: registry, 1e5 m3: the strategic class of thesis Table 2.3 and above).
+VOLUME_MIN = 2.0
+VOLUME_MAX = float(field_spec(HullSpec, "volume").hi)
+#: Grid points: a ratio of about 1.49 between neighbours over the whole range.
+_GRID = np.geomspace(VOLUME_MIN, VOLUME_MAX, 1 + round(np.log(VOLUME_MAX / VOLUME_MIN) / np.log(1.49)))
 #: Points per refinement round inside the bracket.
 _REFINE = 8
 #: Lattice points evaluated around the predicted crossing (one batch).

@@ -198,7 +198,7 @@ def pareto_front(
     """Trade-off of the objective against the blow-by limit by the epsilon-constraint method.
 
     For each limit epsilon_k: min m(x, V) s.t. blow_by(x, V) <= epsilon_k and the other
-    constraints of :class:`OptimizationProblem`, lower <= x <= upper, V in [2, 2e4] m3 (log
+    constraints of :class:`OptimizationProblem`, lower <= x <= upper, V in [VOLUME_MIN, VOLUME_MAX] = [2, 1e5] m3 (log
     scaled). V is the fourth variable here because the nested V*(x) exists for one limit at a
     time; with V free every epsilon problem evaluates without a sizing loop, and all of them
     (times the starts) run as lock-step SLSQP in one vectorised call per iteration. At

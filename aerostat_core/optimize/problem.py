@@ -67,7 +67,14 @@ class OptimizationProblem:
             raise ValueError(f"objective = {objective!r}: choose one of {', '.join(OBJECTIVES)}")
         checked = check_bounds(DEFAULT_BOUNDS if bounds is None else bounds)
         self.requirement = requirement.resolved()
-        self.configuration = configuration.with_design_variables(volume=None)
+        cfg = configuration.with_design_variables(volume=None)
+        if cfg.materials == "catalogue":
+            # fabrics and tether chosen by load at the starting design, then held while the
+            # shape varies (issue 23; docs/methods.md §1.15)
+            from aerostat_core.model.selection import select_materials
+
+            cfg = select_materials(self.requirement, cfg).configuration
+        self.configuration = cfg
         self.objective = objective
         self.names = tuple(v for v in VARIABLES if v in checked)
         self.bounds = {k: checked[k] for k in self.names}

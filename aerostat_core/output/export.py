@@ -23,6 +23,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from aerostat_core.base.validation import InputError, check_int, check_number, shown_value
 from aerostat_core.geometry.fins import ARRANGEMENT_ANGLES_DEG
 from aerostat_core.model.design import Design
 
@@ -119,7 +120,9 @@ def stl_bytes(triangles: np.ndarray, name: str = "aerostat") -> bytes:
 def design_stl(d: Design, part: str = "all") -> bytes:
     """Binary STL of the hull (``part="hull"``), the fins (``"fins"``) or both (``"all"``)."""
     if part not in ("all", "hull", "fins"):
-        raise ValueError(f"STL part = {part!r} is not one of: all, hull, fins")
+        reason = "is not one of: all, hull, fins"
+        raise InputError(f"STL part = {shown_value(part)} {reason}", owner="design_stl",
+                         field="part", value=part, reason=reason)
     parts = []
     if part in ("all", "hull"):
         parts.append(hull_mesh(d))
@@ -227,14 +230,13 @@ def gore_pattern(
     w(s) = pi r(s)/N with s the meridian arc length; pattern area N int 2 w ds = hull area
     (within the polygon discretisation, < 0.1 % at 401 stations; tests/core/test_export.py).
     """
-    if not isinstance(n_gores, (int, np.integer)) or not 3 <= int(n_gores) <= 64:
-        raise ValueError(f"n_gores = {n_gores!r} is outside the valid range [3, 64]")
-    if not (isinstance(seam_allowance, (int, float)) and 0.0 <= seam_allowance <= 0.2):
-        raise ValueError(
-            f"seam_allowance = {seam_allowance!r} is outside the valid range [0, 0.2] m"
-        )
-    if not 21 <= int(n_stations) <= 5001:
-        raise ValueError(f"n_stations = {n_stations!r} is outside the valid range [21, 5001]")
+    if not isinstance(n_gores, (int, np.integer)):  # a whole float is not a gore count
+        raise InputError(f"gore_pattern.n_gores = {shown_value(n_gores)} is not a whole number "
+                         "in [3, 64]", owner="gore_pattern", field="n_gores", value=n_gores,
+                         lo=3, hi=64, reason="is not a whole number in [3, 64]")
+    n_gores = check_int("gore_pattern", "n_gores", n_gores, 3, 64)
+    seam_allowance = check_number("gore_pattern", "seam_allowance", seam_allowance, 0.0, 0.2, "m")
+    n_stations = check_int("gore_pattern", "n_stations", n_stations, 21, 5001)
     xi, r = _stations(d, int(n_stations))
     s = np.concatenate([[0.0], np.cumsum(np.hypot(np.diff(xi), np.diff(r)))])
     w = np.pi * r / n_gores

@@ -44,6 +44,7 @@ def mass_breakdown(
     battery_mass: float = 0.0,
     ballonet_mass=0.0,
     inertia_integrals=None,
+    systems_mass=0.0,
 ) -> MassBreakdown:
     r"""Mass budget of the aerostat.
 
@@ -84,6 +85,9 @@ def mass_breakdown(
         Onboard payload battery [kg], carried with the payload (aerostat_core.model.mission).
     ballonet_mass : array_like
         Ballonet fabric [kg], at the hull bottom below the centre of buoyancy (halfway down).
+    systems_mass : array_like
+        Hull systems that scale with the hull volume (pressure control, avionics, lighting,
+        rigging, fin structure) [kg], :func:`systems_mass`; booked with the miscellaneous items.
     inertia_integrals : tuple of array_like, optional
         (int ((xi - xi_s)^2 + r^2/2) dS [m4], int ((xi - xi_cb)^2 + r^2/4) dV [m5]) where the
         caller has them (aerostat_core.model.airframe: a scaled unit hull); None: by quadrature.
@@ -117,7 +121,7 @@ def mass_breakdown(
     """
     m_hull = hull_areal_density * hull.surface_area
     m_gas = np.asarray(gas_density, dtype=float) * hull.volume
-    m_misc = misc_ratio * m_hull
+    m_misc = misc_ratio * m_hull + np.asarray(systems_mass, dtype=float)
     m_pay = np.full_like(m_hull, float(payload_mass))
     m_teth = np.asarray(tether_mass, dtype=float) * np.ones_like(m_hull)
     items = {
@@ -174,3 +178,52 @@ def mass_breakdown(
         z_cg=z_cg,
         pitch_inertia=inertia,
     )
+
+
+#: Reference hull volume of the systems-mass law [m3] (the operational class, thesis §2.3.2).
+SYSTEMS_REFERENCE_VOLUME = 1000.0
+
+
+def systems_mass(volume, per_volume: float, exponent: float = 0.0):
+    """Mass of the hull systems that grow with the hull [kg].
+
+    .. math::
+
+        m_{sys} = k\\, V \\left(V / V_{ref}\\right)^{c}
+
+    The items a fabric-and-payload budget leaves out and that scale with the hull volume: the
+    pressure-control system (blowers and valves, sized by the air flow that fills the ballonet,
+    itself a share of V as the aerostat climbs and the day warms: aerostat_core.structures.ballonet), the
+    avionics, lighting and lightning protection, the rigging (confluence lines and patches) and
+    the fins' inflation structure. Their sum is taken proportional to V, with one coefficient
+    k_sys [kg/m3] (presets.PRACTICE_SYSTEMS_MASS_PER_VOLUME, FITTED on the declared fit set of
+    aerostat_core.studies.fielded; the thesis preset has 0: Table 2.2 books only fabric, gas, fins and
+    0.30 x hull of miscellaneous items).
+
+    Parameters
+    ----------
+    volume : array_like
+        Hull volume [m3].
+    per_volume : float
+        k_sys, the mass per m3 of a hull of V_ref = 1000 m3 [kg/m3], valid
+        {range:Configuration.systems_mass_per_volume}.
+    exponent : float
+        c [-], valid {range:Configuration.systems_mass_exponent}: how much faster than V the
+        systems grow (0: in proportion).
+
+    Notes
+    -----
+    Valid over the classes of thesis Table 2.3 (30-25,000 m3). Why linear in V: the blower flow
+    and the ballonet scale with V; the rigging's mass is small (SF T l / (sigma/rho): 3 x 100 kN
+    x 24 m / 2.2e6 m is 3 kg on a strategic hull, docs/methods.md §1.15) and is inside k_sys.
+    Source: docs/methods.md §1.15 (the law), docs/validation.md (the fit).
+
+    Examples
+    --------
+    >>> float(systems_mass(1000.0, 0.25)), round(float(systems_mass(8000.0, 0.25, 1 / 3)), 6)
+    (250.0, 4000.0)
+    """
+    v = np.asarray(volume, dtype=float)
+    if exponent == 0.0:
+        return float(per_volume) * v
+    return float(per_volume) * v * (v / SYSTEMS_REFERENCE_VOLUME) ** float(exponent)

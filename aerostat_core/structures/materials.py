@@ -24,14 +24,14 @@ class Fabric:
     name : str
         Label shown in tables.
     areal_density : float
-        Mass per area (GSM / 1000) [kg/m2], valid (0, 2].
+        Mass per area (GSM / 1000) [kg/m2], valid {range:Fabric.areal_density}.
     tensile_strength : float
         Ultimate tensile strength of the laminate, weaker of warp and fill [N/m], valid
-        (0, 1e6]. Default :data:`ASSUMED_TENSILE_STRENGTH` (no strength is published for the
+        {range:Fabric.tensile_strength}. Default :data:`ASSUMED_TENSILE_STRENGTH` (no strength is published for the
         thesis fabric).
     helium_permeability : float
         Helium permeability at 0 degC, 1 atm of helium partial pressure [L/(m2 day atm)], valid
-        [0, 100]. Default :data:`ADRDE_HELIUM_PERMEABILITY`.
+        {range:Fabric.helium_permeability}. Default :data:`ADRDE_HELIUM_PERMEABILITY`.
     """
 
     name: str = text("Thesis fabric (130 g/m2)", "")
@@ -79,26 +79,29 @@ class TetherSpec:
     name : str
         Label shown in tables.
     linear_density : float
-        Mass per unstretched length [kg/m], valid (0, 1].
+        Mass per unstretched length [kg/m], valid {range:TetherSpec.linear_density} (strategic electro-mechanical
+        tethers weigh up to a few kg/m).
     diameter : float
-        Outer diameter used for drag and air buoyancy [m], valid (0, 0.05].
+        Outer diameter used for drag and air buoyancy [m], valid {range:TetherSpec.diameter}.
     normal_drag_coefficient : float
-        Cross-flow drag coefficient C_dn on d per length [-], valid (0, 3] (round cable 1.0-1.2).
+        Cross-flow drag coefficient C_dn on d per length [-], valid
+        {range:TetherSpec.normal_drag_coefficient} (round cable 1.0-1.2).
     tangential_drag_coefficient : float
-        Skin-friction coefficient C_dt on the wetted perimeter pi d [-], valid [0, 0.1]
+        Skin-friction coefficient C_dt on the wetted perimeter pi d [-], valid
+        {range:TetherSpec.tangential_drag_coefficient}
         (MoorDyn convention).
     breaking_strength : float
-        Minimum breaking load [N], valid (0, 1e7].
+        Minimum breaking load [N], valid {range:TetherSpec.breaking_strength}.
     axial_stiffness : float
-        EA [N], valid [1e3, 1e9] or ``math.inf`` (inextensible).
+        EA [N], valid {range:TetherSpec.axial_stiffness} or ``math.inf`` (inextensible).
     """
 
     name: str = text("Thesis tether (20 g/m)", "")
     linear_density: float = number(
-        0.020, "Linear density", "kg/m", 0, 1, lo_open=True, scale=1000.0, display_unit="g/m",
+        0.020, "Linear density", "kg/m", 0, 5, lo_open=True, scale=1000.0, display_unit="g/m",
         step=1.0, fmt="%.1f", help="Thesis 20 g/m (6 kg per 300 m).")
     diameter: float = number(
-        0.005, "Diameter", "m", 0, 0.05, lo_open=True, scale=1000.0, display_unit="mm",
+        0.005, "Diameter", "m", 0, 0.1, lo_open=True, scale=1000.0, display_unit="mm",
         step=0.5, fmt="%.1f", help="Sets the tether drag and air buoyancy.")
     normal_drag_coefficient: float = number(
         1.0, "Normal drag coefficient", "", 0, 3, lo_open=True, step=0.1, fmt="%.2f",
@@ -323,3 +326,111 @@ POWER_TETHER_CONDUCTORS: dict[str, float] = {
     # VideoRay: each power pole (400 V DC +, ground) is two conductors of the published gauge
     **{name: 2.0 * awg_area(awg) for name, (_, _, awg) in VIDEORAY_TETHERS.items()},
 }
+
+
+# --- catalogue for selection by load (issue 23; docs/methods.md §1.15) -------------------------
+#: DSM Dyneema fact sheet "UHMWPE fiber from DSM Dyneema" (ref. CIS YA100, issued 15-11-2010):
+#: tensile strength of SK75/SK78 fibre 3.4-4.0 N/tex; the lower end is used [N/(kg/m)].
+HMPE_TENACITY = 3.4e6
+#: Kevlar 29 fibre: tensile strength 3.6 GPa at a density of 1.44 g/cm3 (DuPont's grade table
+#: as quoted by the University of Bristol chemistry pages, chm.bris.ac.uk ... /edwards) ->
+#: 2.5 N/tex [N/(kg/m)].
+ARAMID_TENACITY = 3.6e9 / 1440.0
+#: Bulk density of a braided HMPE line [kg/m3]: KiteUtils.jl's 4 mm Dyneema tether, 724 kg/m3
+#: (KITEUTILS_TETHER), i.e. a fibre fill of 724/970 = 0.746 of the circle (970 kg/m3 HMPE).
+HMPE_BRAID_DENSITY = 724.0
+#: Fibre fill of a braid [-] (the HMPE figure above), used for aramid braids too (ASSUMED).
+BRAID_FILL = HMPE_BRAID_DENSITY / 970.0
+#: Realisation efficiency of a braided rope: rope breaking load / (fibre tenacity x rope mass
+#: per length) [-]. DERIVED: Marlow Excel D12, 4 mm, 2050 kg breaking load (marlowropes.com
+#: product page, as quoted in a totalwind.net forum thread; the page itself was not read) over
+#: 3.4 N/tex x 9.1 g/m (the 4 mm braid above): 20.1 kN / 30.9 kN = 0.65.
+BRAID_EFFICIENCY = 2050.0 * 9.80665 / (HMPE_TENACITY * HMPE_BRAID_DENSITY * math.pi * 0.004**2 / 4)
+#: Axial stiffness of the 4 mm HMPE braid [N] (KiteUtils.jl, KITEUTILS_TETHER); braids of other
+#: diameters scale it with the cross-section (d^2), aramid ones with its modulus ratio 83/110
+#: (Kevlar 29 83 GPa, chm.bris.ac.uk; Dyneema SK75 109-132 GPa, the DSM fact sheet).
+_EA_4MM = 614600.0
+#: Braid diameters of the selection catalogue [mm] (common rope sizes).
+BRAID_DIAMETERS_MM = (3, 4, 5, 6, 8, 10, 12, 14, 16, 20, 24, 28, 32, 40)
+
+
+def braid(fibre: str, diameter_mm: float) -> TetherSpec:
+    """A braided tether of HMPE ("hmpe") or aramid ("aramid") fibre of diameter ``diameter_mm``.
+
+    .. math::
+
+        m' = \\rho_f\\, \\phi\\, \\pi d^2/4, \\qquad F = \\eta\\, \\tau\\, m', \\qquad
+        EA = EA_{4} \\left(d / 4\\,\\mathrm{mm}\\right)^2
+
+    (EA x 83/110 for aramid), with eta = :data:`BRAID_EFFICIENCY` (0.65), phi =
+    :data:`BRAID_FILL`, tau the fibre tenacity.
+
+    Parameters
+    ----------
+    fibre : {"hmpe", "aramid"}
+    diameter_mm : float
+        Rope diameter [mm], valid (0, 50].
+
+    Notes
+    -----
+    Valid for a plain braid without jacket (a jacket adds mass, not strength). Sources: the
+    constants above (DSM fact sheet, DuPont figures, Marlow D12, KiteUtils.jl).
+
+    Examples
+    --------
+    >>> t = braid("hmpe", 4)
+    >>> round(t.linear_density * 1000, 2), round(t.breaking_strength / 9.80665)
+    (9.1, 2050)
+    """
+    d = diameter_mm / 1000.0
+    area = math.pi * d * d / 4.0
+    if fibre == "hmpe":
+        rho, ten, ea, label = 970.0, HMPE_TENACITY, _EA_4MM, "HMPE (Dyneema SK78)"
+    elif fibre == "aramid":
+        rho, ten, ea, label = 1440.0, ARAMID_TENACITY, _EA_4MM * 83.0 / 110.0, "aramid (Kevlar 29)"
+    else:
+        raise ValueError(f"fibre = {fibre!r} is not a braid fibre; valid: 'hmpe', 'aramid'")
+    m = rho * BRAID_FILL * area
+    return TetherSpec(f"{label} braid {diameter_mm:g} mm ({1000 * m:.0f} g/m)", m, d, 1.0, 0.01,
+                      BRAID_EFFICIENCY * ten * m, ea * (diameter_mm / 4.0) ** 2)
+
+
+#: Laminate family of the selection catalogue: (name, areal density [kg/m2], strength [N/m],
+#: helium permeability, source). The two lightest are the laminates of Lv et al. 2022 with the
+#: best strength per weight (HV150 at 150 g/m2 by its name; 3216LV, 200 g/m2 ASSUMED); the
+#: heavier ones are ASSUMED scalings of the 3216LV construction (strength proportional to areal
+#: density, the load-bearing cloth and the barrier films growing together), for the operational
+#: and strategic hulls, whose data sheets were not found.
+_SPECIFIC_3216LV = 101.43 * _KGF_PER_CM / 0.200  # [N/m per kg/m2]
+LAMINATES = (
+    ("HV150 laminate (Lv 2022)", 0.150, 82.13 * _KGF_PER_CM, 2.5, LV_2022 + ": 82.13 kgf/cm; "
+     "150 g/m2 ASSUMED from the name; permeability not published (ADRDE default)"),
+    ("Uretek 3216LV laminate (Lv 2022)", 0.200, 101.43 * _KGF_PER_CM, 0.8818,
+     LV_2022 + ": 101.43 kgf/cm, 0.8818 L/(m2 day atm); 200 g/m2 ASSUMED"),
+    *((f"Heavy laminate {g} g/m2 (3216LV scaled)", g / 1000.0, _SPECIFIC_3216LV * g / 1000.0,
+       0.8818, {"areal_density": f"ASSUMED step of the catalogue ({g} g/m2)",
+                "tensile_strength": "COMPUTED: 3216LV's strength per weight (Lv et al. 2022, "
+                "101.43 kgf/cm at the 200 g/m2 taken for it) x areal density, a scaling "
+                "assumption (no data sheet of a heavy aerostat laminate was found)",
+                "helium_permeability": "Lv et al. 2022, 3216LV's 0.8818 L/(m2 day atm)"})
+      for g in (300, 400, 550, 700, 900)),
+)
+#: Fabrics the selection chooses from, lightest first (aerostat_core.model.selection).
+SELECTABLE_FABRICS: tuple[Fabric, ...] = tuple(
+    Fabric(n, w, s, p) for n, w, s, p, _ in LAMINATES)
+#: Tethers the selection chooses from, lightest first: HMPE and aramid braids.
+SELECTABLE_TETHERS: tuple[TetherSpec, ...] = tuple(sorted(
+    (braid(f, d) for f in ("hmpe", "aramid") for d in BRAID_DIAMETERS_MM),
+    key=lambda t: t.linear_density))
+for _f in SELECTABLE_FABRICS:
+    FABRICS.setdefault(_f.name, _f)
+for _n, _w, _s, _p, _src in LAMINATES:
+    FABRIC_SOURCES.setdefault(_n, _src if isinstance(_src, dict) else {
+        "areal_density": _src, "tensile_strength": _src, "helium_permeability": _src})
+for _t in SELECTABLE_TETHERS:
+    TETHERS[_t.name] = _t
+    TETHER_SOURCES[_t.name] = (
+        "DERIVED braid (materials.braid): fibre tenacity from the DSM Dyneema fact sheet "
+        "(HMPE 3.4 N/tex) or DuPont's Kevlar 29 figures (3.6 GPa, 1.44 g/cm3); braid fill and "
+        "EA from KiteUtils.jl's 4 mm tether; efficiency 0.65 from Marlow Excel D12 4 mm "
+        "(2050 kg); C_dn 1.0 ASSUMED")

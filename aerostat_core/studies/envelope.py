@@ -24,6 +24,9 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
+from aerostat_core.base.fields import field_spec
+from aerostat_core.base.validation import InputError
+from aerostat_core.model import budget
 from aerostat_core.model.airframe import build_airframe
 from aerostat_core.model.constraints import CONSTRAINTS, static_quantities, wind_quantities
 from aerostat_core.model.design import Design
@@ -46,14 +49,15 @@ def requirement_at(req: Requirement, altitude: float, payload: float | None = No
 
     Blow-by and altitude-loss limits scale with the tether length, L(h) = L(h0) h / h0
     (the rule sets' fractions of the tether length); the blow-by limit is capped at h (its valid
-    range) and the altitude-loss limit at 3000 m.
+    range) and the altitude-loss limit at the top of its field range (the field registry).
     """
     req = req.resolved()
     s = float(altitude) / float(req.altitude)
     changes = {
         "altitude": float(altitude),
         "blow_by_limit": min(req.blow_by_limit * s, float(altitude)),
-        "altitude_loss_limit": min(req.altitude_loss_limit * s, 3000.0),
+        "altitude_loss_limit": min(req.altitude_loss_limit * s,
+                                   float(field_spec(Requirement, "altitude_loss_limit").hi)),
     }
     if payload is not None:
         changes["payload_mass"] = float(payload)
@@ -220,25 +224,28 @@ class Envelope:
 
 def _grid(name: str, values, lo: float, hi: float, unit: str) -> np.ndarray:
     a = np.asarray(values, float).reshape(-1)
+    info = dict(owner="envelope", field=name, lo=lo, hi=hi, unit=unit)
     if a.size == 0:
-        raise ValueError(
-            f"envelope {name}: no values; give at least one in [{lo:g}, {hi:g}] {unit}"
-        )
+        reason = f"has no values; give at least one in [{lo:g}, {hi:g}] {unit}"
+        raise InputError(f"envelope {name}: no values; give at least one in [{lo:g}, {hi:g}] "
+                         f"{unit}", value=[], reason=reason, **info)
     if not np.all(np.isfinite(a)) or a.min() < lo or a.max() > hi:
         bad = a[~np.isfinite(a) | (a < lo) | (a > hi)][0]
-        raise ValueError(
-            f"envelope {name} = {bad:g} {unit} is outside the valid range [{lo:g}, {hi:g}] {unit}"
-        )
+        reason = f"is outside the valid range [{lo:g}, {hi:g}] {unit}"
+        raise InputError(f"envelope {name} = {bad:g} {unit} {reason}", value=float(bad),
+                         reason=reason, **info)
     return a
 
 
 def default_axes(d: Design, n_wind: int = 61, n_altitude: int = 21) -> tuple:
     """Default grid: wind 0 ... max(1.5 x survival wind, sweep maximum) and altitude
-    0.25 ... 2 x the design altitude (within [10, 3000] m), with the design altitude itself."""
+    0.25 ... 2 x the design altitude (within the altitude field's range, [10, 5000] m), with
+    the design altitude itself."""
     req = d.requirement
     top = min(max(1.5 * float(req.survival_wind), float(req.wind_max), 5.0), 60.0)
     h0 = float(req.altitude)
-    alt = np.linspace(max(10.0, 0.25 * h0), min(2.0 * h0, 3000.0), n_altitude)
+    a = field_spec(Requirement, "altitude")
+    alt = np.linspace(max(float(a.lo), 0.25 * h0), min(2.0 * h0, float(a.hi)), n_altitude)
     return np.linspace(0.0, top, n_wind), np.union1d(alt, [h0])
 
 
@@ -254,9 +261,11 @@ def operating_envelope(
     wind : array_like, optional
         Wind at the aerostat [m/s], valid [0, 60]; default :func:`default_axes`.
     altitude : array_like, optional
-        Operating altitude = tether length [m], valid [10, 3000]; default :func:`default_axes`.
+        Operating altitude = tether length [m], valid [10, 5000] (the altitude field's range);
+        default :func:`default_axes`.
     payload : array_like, optional
-        Payload [kg], valid (0, 500]; default the design payload only.
+        Payload [kg], valid (0, 10000] (the payload field's range); default the design payload
+        only.
     client : dask.distributed.Client or str, optional
         Map the (altitude, payload) blocks over a Dask cluster (:mod:`aerostat_core.studies.scale`);
         ``None`` runs in this process. Same result either way.
@@ -272,9 +281,11 @@ def operating_envelope(
     req = d.requirement
     w_def, h_def = default_axes(d)
     wind = _grid("wind", w_def if wind is None else wind, 0.0, 60.0, "m/s")
-    altitude = _grid("altitude", h_def if altitude is None else altitude, 10.0, 3000.0, "m")
+    a, m = field_spec(Requirement, "altitude"), field_spec(Requirement, "payload_mass")
+    altitude = _grid("altitude", h_def if altitude is None else altitude, float(a.lo),
+                     float(a.hi), "m")
     payload = _grid(
-        "payload", [req.payload_mass] if payload is None else payload, 1e-9, 500.0, "kg"
+        "payload", [req.payload_mass] if payload is None else payload, 1e-9, float(m.hi), "kg"
     )
     n = wind.size * altitude.size * payload.size
     if n > MAX_POINTS:
@@ -282,6 +293,8 @@ def operating_envelope(
             f"envelope has {n} points, more than the {MAX_POINTS} allowed in one call;"
             " use fewer wind, altitude or payload values"
         )
+    if client is None:  # in this process: the compute budget (a cluster brings its own)
+        budget.check_envelope(d.configuration.tether_segments, n)
     pairs = [(float(h), float(p)) for p in payload for h in altitude]
     blocks = [pairs[i : i + chunk] for i in range(0, len(pairs), chunk)]
     results = map_blocks(

@@ -40,6 +40,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from aerostat_core.base.validation import check_int, check_number
+from aerostat_core.model import budget
 from aerostat_core.model.airframe import build_airframe
 from aerostat_core.model.constraints import NAMES, constraint_state
 from aerostat_core.model.design import Design, design
@@ -266,13 +267,16 @@ def sample_block(
     c_c = sampled_configuration(cfg, specs, s, axial=(factor[None] * base_c.reshape(2, 1, 1)))
     st = constraint_state(req, c_c, af)
     ev_c = st.evaluation
+    # copies, not views: a view (tension_top is the last station of the whole tether march)
+    # would keep every segment of the block alive while the samples are kept (100 000 kept
+    # samples peaked at 618 MB with views)
     out = {
-        "blow_by": np.asarray(ev.tether.blow_by, float).reshape(n, -1),
-        "tension": np.asarray(ev.tether.tension_top, float).reshape(n, -1),
-        "blow_by_design": np.asarray(ev_c.tether.blow_by, float)[0].reshape(n),
-        "tension_design": np.asarray(ev_c.tether.tension_top, float)[0].reshape(n),
-        "free_lift": (np.asarray(af.free_lift, float) / af.g).reshape(n),
-        "met": np.asarray(st.met, bool).reshape(n, len(NAMES)),
+        "blow_by": np.array(np.asarray(ev.tether.blow_by, float).reshape(n, -1)),
+        "tension": np.array(np.asarray(ev.tether.tension_top, float).reshape(n, -1)),
+        "blow_by_design": np.array(np.asarray(ev_c.tether.blow_by, float)[0].reshape(n)),
+        "tension_design": np.array(np.asarray(ev_c.tether.tension_top, float)[0].reshape(n)),
+        "free_lift": np.array((np.asarray(af.free_lift, float) / af.g).reshape(n)),
+        "met": np.array(np.asarray(st.met, bool).reshape(n, len(NAMES))),
     }
     out.update({k: v for k, v in s.items()})
     return out
@@ -389,7 +393,7 @@ def monte_carlo(
     -------
     MonteCarloResult
     """
-    from aerostat_core.studies.scale import map_blocks
+    from aerostat_core.studies.scale import map_blocks, map_reduce
 
     n = check_int("monte_carlo", "n", n, 2, MAX_SAMPLES)
     seed = check_int("monte_carlo", "seed", seed, 0, 2**32 - 1)
@@ -407,32 +411,44 @@ def monte_carlo(
     speeds = band_speeds(req) if speeds is None else np.asarray(speeds, float).reshape(-1)
     if speeds.size == 0 or np.any(speeds <= 0) or np.any(speeds > 60):
         raise ValueError("monte_carlo speeds must lie in (0, 60] m/s")
-    sizes = [chunk] * (n // chunk) + ([n % chunk] if n % chunk else [])
-    seeds = np.random.SeedSequence(seed).spawn(len(sizes))
-    args = [
-        (req, d.configuration, d.volume, specs, s, k, speeds, spread) for s, k in zip(seeds, sizes)
-    ]
+    root = np.random.SeedSequence(seed)
+
+    def block_args():
+        # one child seed per block, spawned as the block is made (children are numbered in
+        # order, so this equals root.spawn(blocks)): 10^9 samples never hold 10^6 seeds at once
+        for start in range(0, n, chunk):
+            yield (req, d.configuration, d.volume, specs, root.spawn(1)[0],
+                   min(chunk, n - start), speeds, spread)
+
     keep = n <= KEEP_SAMPLES_MAX if keep_samples is None else bool(keep_samples)
+    if client is None:  # in this process: the compute budget (a cluster brings its own)
+        budget.check_monte_carlo(d.configuration.tether_segments, speeds.size, n)
     pct = np.array(PERCENTILES)
     if keep:
-        blocks = map_blocks(sample_block, args, client=client)
+        blocks = map_blocks(sample_block, list(block_args()), client=client)
         samples = {k: np.concatenate([b[k] for b in blocks]) for k in blocks[0]}
+        del blocks
         bands = {k: np.percentile(samples[k], pct, axis=0) for k in BAND_KEYS}
         met_count = samples["met"].sum(axis=0)
         feasible_count = int(samples["met"].all(axis=1).sum())
     else:
-        # bins from the first block (run here, so every scheduler uses the same bins), then
-        # histograms per block: memory per block, not per sample
-        pilot = sample_block(*args[0])
+        # bins from the first block (run here, so every scheduler uses the same bins), then each
+        # block reduced to histograms where it runs and folded in as it arrives: the memory is
+        # one block plus one set of histograms at any n
+        rest = block_args()
+        pilot = sample_block(*next(rest))
         edges = histogram_edges(pilot)
-        parts = [reduce_block(edges, pilot)] + map_blocks(
-            sample_reduced, [(edges, *a) for a in args[1:]], client=client
+        total = map_reduce(
+            sample_reduced,
+            ((edges, *a) for a in rest),
+            lambda acc, item: add_reduced(acc, item[1]),
+            reduce_block(edges, pilot),
+            client=client,
         )
-        counts = {k: sum(p["counts"][k] for p in parts) for k in BAND_KEYS}
-        bands = {k: histogram_percentiles(edges[k], counts[k], pct) for k in BAND_KEYS}
+        bands = {k: histogram_percentiles(edges[k], total["counts"][k], pct) for k in BAND_KEYS}
         bands = {k: b[:, 0] if pilot[k].ndim == 1 else b for k, b in bands.items()}
-        met_count = sum(p["met"] for p in parts)
-        feasible_count = int(sum(p["feasible"] for p in parts))
+        met_count = total["met"]
+        feasible_count = int(total["feasible"])
         samples = {}
     return MonteCarloResult(
         speeds=speeds,
@@ -455,8 +471,9 @@ def monte_carlo(
 #: Outputs with percentile bands (keys of :func:`sample_block`).
 BAND_KEYS = ("blow_by", "tension", "free_lift", "blow_by_design", "tension_design")
 #: Above this many samples only histograms leave the blocks (a 10^8 run would need ~20 GB of
-#: samples); below it the samples are kept and the percentiles are exact.
-KEEP_SAMPLES_MAX = 1_000_000
+#: samples, 10^6 peaked at 5.4 GB); below it the samples are kept (about 250 bytes a sample with
+#: 10 band speeds) and the percentiles are exact.
+KEEP_SAMPLES_MAX = 100_000
 #: Histogram bins per output column; the range is the first block's range widened by its span
 #: on each side (values beyond go to the end bins), so a bin is ~1/7000 of the spread.
 HIST_BINS = 20_000
@@ -486,6 +503,16 @@ def reduce_block(edges: dict, block: dict) -> dict:
         counts[k] = c
     met = np.asarray(block["met"], bool)
     return {"counts": counts, "met": met.sum(axis=0), "feasible": int(met.all(axis=1).sum())}
+
+
+def add_reduced(acc: dict, part: dict) -> dict:
+    """Add the histograms and counts of one reduced block (:func:`reduce_block`) into ``acc``
+    (in place) and return it."""
+    for k in BAND_KEYS:
+        acc["counts"][k] += part["counts"][k]
+    acc["met"] = acc["met"] + part["met"]
+    acc["feasible"] += int(part["feasible"])
+    return acc
 
 
 def sample_reduced(edges: dict, *args) -> dict:

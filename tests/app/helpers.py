@@ -62,23 +62,36 @@ def shown_table(at: AppTest, first_column: str) -> pd.DataFrame:
     raise KeyError(f"no static table starting with {first_column!r}")
 
 
+_MD_ESCAPE = re.compile(r"\\([!-/:-@\[-`{-~])")
+
+
+def _as_read(df: pd.DataFrame) -> pd.DataFrame:
+    """A static table's headers as the reader sees them: st.table renders Markdown, so the
+    pages backslash-escape user text (case names) there; the escapes are not shown."""
+    return df.rename(columns=lambda c: _MD_ESCAPE.sub(r"\1", c) if isinstance(c, str) else c)
+
+
+def _tables(at: AppTest) -> list:
+    return [df.value for df in at.dataframe] + [_as_read(df.value) for df in at.table]
+
+
 def table_with(at: AppTest, first_column: str, column: str) -> pd.DataFrame:
     """The dataframe or static table whose first column is ``first_column`` and that has
     ``column`` (pages show a wide table as several by theme)."""
-    for df in [*at.dataframe, *at.table]:
-        cols = list(df.value.columns)
+    for df in _tables(at):
+        cols = list(df.columns)
         if cols[:1] == [first_column] and column in cols:
-            return df.value
+            return df
     raise KeyError(f"no table starting with {first_column!r} with column {column!r}")
 
 
 def table(at: AppTest, first_column: str) -> pd.DataFrame:
     """The dataframe (or static table) element whose first column has this name."""
-    elements = [*at.dataframe, *at.table]
+    elements = _tables(at)
     for df in elements:
-        if len(df.value.columns) and df.value.columns[0] == first_column:
-            return df.value
-    cols = [df.value.columns[0] for df in elements if len(df.value.columns)]
+        if len(df.columns) and df.columns[0] == first_column:
+            return df
+    cols = [df.columns[0] for df in elements if len(df.columns)]
     raise KeyError(f"no table starting with {first_column!r}; tables start with {cols}")
 
 

@@ -330,7 +330,7 @@ def test_case_limit_is_a_message_not_a_traceback(compare):
 
     at = compare
     one = thesis_gui_cases()[GUI[0]]
-    at.session_state["cases"] = {f"c{i}": one for i in range(MAX_CASES - 2)}
+    state.add_cases({f"c{i}": one for i in range(MAX_CASES - 2)}, at.session_state)  # saved
     at.run()
     _button(at, "Load the thesis' GUI test cases").click().run()
     assert not at.exception

@@ -95,6 +95,10 @@ def test_fielded_harness_is_shown_live():
     assert not app.exception
     v = validate_fielded()
     shown = {m.label: m.value for m in app.metric}
-    assert shown["Median |hull-length error| [%]"] == f"{100 * v.median_abs_length_error:.1f}"
+    st = v.statistics()
+    assert shown["Median |length error|, all [%]"] == f"{100 * st['all_median']:.1f}"
+    assert shown["Median |length error|, held out [%]"] == f"{100 * st['held_out_median']:.1f}"
+    assert shown["Median |volume error| [%]"] == f"{100 * st['volume_median']:.1f}"
     df = next(d.value for d in app.dataframe if "Published length [m]" in d.value.columns)
     assert list(df["System"]) == [r.system.name for r in v.rows]
+    assert set(df["Class"]) == {"tactical", "operational", "strategic"}

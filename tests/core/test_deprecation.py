@@ -72,8 +72,11 @@ def test_library_tests_and_benchmarks_use_the_new_names_only() -> None:
 
 def test_dynamics_british_names_warn_and_resolve_to_the_us_ones():
     """``linearise``/``Linearisation`` and the ``realise`` methods keep working for one release."""
+    import importlib
+
     from aerostat_core import dynamics
-    from aerostat_core.dynamics import linearize as lin
+
+    lin = importlib.import_module("aerostat_core.dynamics.linearize")
     from aerostat_core.dynamics.wind import WindScenario
 
     # (``dynamics.linearise`` is also the old module's name, so the package attribute is the shim

@@ -99,13 +99,22 @@ def test_r3_settling_and_period(r3_run):
     assert 2 * np.mean(np.diff(cross[:4])) == pytest.approx(59.0, rel=0.03)
 
 
-def test_surge_period_formula_within_25pct():
-    """Small-oscillation surge period ~ 2 pi sqrt(m_eff L / L_net) (docs/dynamics.md §3.1): 50 s vs the
-    simulated 59 s; the tether mass and drag add inertia (tolerance +-25 % for the formula)."""
+def test_surge_period_formula_within_25pct(r3_run):
+    """Small-oscillation surge period ~ 2 pi sqrt(m_eff L / L_net) (docs/dynamics.md §3.1) against
+    the period of the simulated R3 step response (the run of the fixture, twice the mean spacing
+    of its zero crossings after the step, about 59 s); the tether mass and drag add inertia the
+    formula leaves out (tolerance +-25 %)."""
     m_eff = 71.6 + 0.5 * cases.CASE_P_RHO * 120.0
     lift = (cases.CASE_P_RHO * 120.0 - 71.6) * cases.CASE_P_G
     formula = 2 * math.pi * math.sqrt(m_eff * 320.0 / lift)
-    assert formula == pytest.approx(59.0, rel=0.25)
+    r = r3_run
+    after = r.t > 150.0
+    s = np.sign(r.signal("x_C")[after] - cases.R1["x"])
+    cross = r.t[after][1:][np.diff(s) != 0]
+    assert cross.size >= 4, "the simulated response must oscillate about the new equilibrium"
+    simulated = 2 * float(np.mean(np.diff(cross[:4])))
+    assert formula == pytest.approx(simulated, rel=0.25)
+    assert formula < simulated  # the formula omits the tether's inertia: it must come out short
 
 
 def test_anchor_force_balance_r1():

@@ -110,7 +110,7 @@ def test_requirement_at_scales_length_limits(d):
     ("kw", "text"),
     [
         ({"wind": [-1.0]}, "wind = -1 m/s is outside the valid range [0, 60] m/s"),
-        ({"altitude": [5.0]}, "altitude = 5 m is outside the valid range [10, 3000] m"),
+        ({"altitude": [5.0]}, "altitude = 5 m is outside the valid range [10, 5000] m"),
         ({"wind": []}, "no values"),
         ({"wind": np.zeros(MAX_POINTS + 1)}, "more than"),
     ],

@@ -168,9 +168,9 @@ def test_messages_keep_their_format():
     with pytest.raises(InputError) as err:
         Requirement(payload_mass=-5)
     assert str(err.value) == (
-        "Requirement.payload_mass = -5 kg is outside the valid range (0, 500] kg"
+        "Requirement.payload_mass = -5 kg is outside the valid range (0, 10000] kg"
     )
-    assert err.value.label == "Payload mass" and err.value.valid_range == "(0, 500] kg"
+    assert err.value.label == "Payload mass" and err.value.valid_range == "(0, 10000] kg"
 
 
 def test_cross_field_checks_are_structured():
@@ -247,7 +247,7 @@ def test_range_text_is_in_display_units():
     assert spec_for_path("configuration.fins.position").spec.range_text() == (
         "[40, 95] % of hull length"
     )
-    assert spec_for_path("requirement.payload_mass").spec.range_text() == "(0, 500] kg"
+    assert spec_for_path("requirement.payload_mass").spec.range_text() == "(0, 10000] kg"
     assert math.isclose(spec_for_path("configuration.gas.purity").spec.scale, 100.0)
 
 

@@ -149,3 +149,39 @@ def test_rule_set_comparison_keeps_the_mission_and_frees_the_limits():
     assert t.rules == "thesis" and all(getattr(t, k) is None for k in RULE_FIELDS)
     assert (t.payload_mass, t.altitude, t.site_temperature, t.payload_power) == (12, 400, 30.0, 50.0)
     assert t.resolved().blow_by_limit == pytest.approx(0.178 * 400, rel=1e-3)
+
+
+def test_streamed_histograms_hold_memory_flat_in_n(d):
+    """Above the in-memory limit the blocks are folded into one set of histograms as they
+    arrive: the peak memory of 16 blocks is that of 2 blocks (holding every block's histograms,
+    as before, grew by about 3.7 MB a block), so it stays bounded at any N."""
+    import tracemalloc
+
+    def peak(n):
+        tracemalloc.start()
+        try:
+            monte_carlo(d, n, seed=1, chunk=100, keep_samples=False)
+            return tracemalloc.get_traced_memory()[1]
+        finally:
+            tracemalloc.stop()
+
+    small, large = peak(200), peak(1600)
+    assert large < 1.25 * small, (small, large)
+
+
+def test_above_the_limit_the_blocks_are_streamed_by_default(d, monkeypatch):
+    import aerostat_core.studies.uncertainty as u
+
+    monkeypatch.setattr(u, "KEEP_SAMPLES_MAX", 300)
+    mc = monte_carlo(d, 400, seed=2, chunk=100, speeds=[8.0])
+    assert mc.samples == {} and mc.n == 400
+    exact = monte_carlo(d, 400, seed=2, chunk=100, speeds=[8.0], keep_samples=True)
+    width = exact.blow_by_design[2] - exact.blow_by_design[0]
+    assert abs(mc.blow_by_design[1] - exact.blow_by_design[1]) < 0.01 * width
+
+
+def test_the_in_process_budget_holds_in_the_library(d):
+    from aerostat_core.model import budget
+
+    with pytest.raises(budget.BudgetError, match="samples"):
+        monte_carlo(d, 10**6)

@@ -35,17 +35,17 @@ def test_input_error_is_a_value_error_with_the_details():
         Requirement(payload_mass=-5)
     e = err.value
     assert isinstance(e, ValueError)
-    assert str(e) == "Requirement.payload_mass = -5 kg is outside the valid range (0, 500] kg"
+    assert str(e) == "Requirement.payload_mass = -5 kg is outside the valid range (0, 10000] kg"
     assert (e.owner, e.field, e.value, e.lo, e.hi, e.unit) == (
         "Requirement",
         "payload_mass",
         -5,
         0,
-        500,
+        10000,
         "kg",
     )
-    assert e.lo_open and not e.hi_open and e.valid_range == "(0, 500] kg"
-    assert e.label == "Payload mass" and e.reason == "is outside the valid range (0, 500] kg"
+    assert e.lo_open and not e.hi_open and e.valid_range == "(0, 10000] kg"
+    assert e.label == "Payload mass" and e.reason == "is outside the valid range (0, 10000] kg"
 
 
 def test_not_a_number_keeps_the_old_message_and_is_capped():

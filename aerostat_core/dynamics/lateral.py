@@ -1,0 +1,220 @@
+"""Lateral-directional stability of the tethered aerostat from the 6-DOF model
+(docs/dynamics.md §7.5): modes about the equilibrium at each wind speed, the wind speed where
+the first lateral mode goes unstable, and the static lateral derivatives.
+
+Linearisation. At the equilibrium y_e in a steady wind along x (no veer), the model is symmetric
+about the vertical plane of the wind, so its Jacobian A = df/dy splits exactly into a
+longitudinal and a lateral block; the lateral states are the nodes' y and v_y, the hull's y_O,
+the quaternion's q1 and q3, v, p and r. The eigenvalues lambda of the lateral block are the
+lateral-directional modes (hull roll-yaw "kiting", tail swing, the pendulum and the line's
+lateral string modes): frequency |Im lambda|/2 pi, damping ratio -Re lambda/|lambda|, and when
+Re lambda > 0 the time to double ln 2/Re lambda. A is built by central differences of the
+compiled right-hand side (increments 1e-6 of each state's scale).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from aerostat_core.dynamics.sixdof import System6, Wind3D, initial_state6, system6_from_design
+from aerostat_core.dynamics.sixdof_kernel import DIAG6_NAMES
+
+#: Real part above which a mode counts as unstable [1/s] (the finite-difference Jacobian's
+#: noise is ~1e-7 1/s).
+UNSTABLE_TOL = 1e-5
+#: Highest frequency listed in the mode table [Hz] (faster ones are the line's string modes).
+TABLE_MAX_FREQUENCY = 1.0
+
+
+@dataclass(frozen=True)
+class LateralMode:
+    """One lateral-directional mode: eigenvalue [1/s], frequency [Hz], damping ratio [-], time to
+    double [s] (None when it decays), time to half [s] (None when it grows)."""
+
+    eigenvalue: complex
+    frequency_hz: float
+    damping_ratio: float
+    time_to_double_s: float | None
+    time_to_half_s: float | None
+
+    @property
+    def unstable(self) -> bool:
+        return self.eigenvalue.real > UNSTABLE_TOL
+
+    def row(self) -> dict:
+        """Table row with units in the keys."""
+        return {"real_1_s": self.eigenvalue.real, "imag_rad_s": abs(self.eigenvalue.imag),
+                "frequency_Hz": self.frequency_hz, "damping_ratio": self.damping_ratio,
+                "time_to_double_s": self.time_to_double_s, "time_to_half_s": self.time_to_half_s}
+
+
+def mode_of(lam: complex) -> LateralMode:
+    """The :class:`LateralMode` of an eigenvalue.
+
+    Examples
+    --------
+    >>> m = mode_of(complex(0.1, 2 * math.pi))
+    >>> round(m.frequency_hz, 3), round(m.time_to_double_s, 3), m.unstable
+    (1.0, 6.931, True)
+    """
+    mag = abs(lam)
+    zeta = -lam.real / mag if mag > 0 else 1.0
+    grow = lam.real > UNSTABLE_TOL
+    decay = lam.real < -UNSTABLE_TOL
+    return LateralMode(complex(lam), abs(lam.imag) / (2 * math.pi), float(zeta),
+                       math.log(2.0) / lam.real if grow else None,
+                       math.log(2.0) / -lam.real if decay else None)
+
+
+def lateral_indices(system: System6) -> np.ndarray:
+    """Indices of the lateral states (module docstring)."""
+    n = system.tether.segments
+    idx = []
+    for i in range(1, n):
+        k = 6 * (i - 1)
+        idx += [k + 1, k + 4]
+    b = system.hull_index
+    idx += [b + 1, b + 4, b + 6, b + 8, b + 10, b + 12]
+    return np.array(idx)
+
+
+def jacobian6(system: System6, data, y: np.ndarray) -> np.ndarray:
+    """Dense central-difference Jacobian df/dy of the 6-DOF right-hand side at t = 0."""
+    n = y.size
+    jac = np.empty((n, n))
+    b = system.hull_index
+    for j in range(n):
+        h = 1e-6 * (max(1.0, 0.01 * system.tether.length) if j < b + 3 else 1.0)
+        yp = y.copy()
+        ym = y.copy()
+        yp[j] += h
+        ym[j] -= h
+        jac[:, j] = (system.rhs(0.0, yp, data)[0] - system.rhs(0.0, ym, data)[0]) / (2 * h)
+    return jac
+
+
+@dataclass(frozen=True)
+class LateralAnalysis:
+    """Lateral modes at one wind speed [m/s]: ``modes`` (slow ones, least stable first), the
+    largest real part of all lateral eigenvalues [1/s] and the equilibrium state."""
+
+    speed: float
+    modes: tuple
+    max_real: float
+    state: np.ndarray
+
+    @property
+    def stable(self) -> bool:
+        return self.max_real <= UNSTABLE_TOL
+
+
+def lateral_modes(system: System6, speed: float, design=None) -> LateralAnalysis:
+    """Linearise ``system`` about its equilibrium in a steady wind ``speed`` [m/s] along x and
+    return the lateral-directional modes (module docstring)."""
+    wind = Wind3D.steady(float(speed))
+    field_ = wind.base.realize(system.tether.length, 60.0)
+    data = system.data(field_, wind)
+    y = initial_state6(system, wind, design, field_, data)
+    a = jacobian6(system, data, y)
+    idx = lateral_indices(system)
+    lam = np.linalg.eigvals(a[np.ix_(idx, idx)])
+    lam = lam[np.argsort(-lam.real)]
+    modes = []
+    for v in lam:
+        if v.imag < -1e-9:
+            continue  # one of each conjugate pair
+        m = mode_of(complex(v))
+        if m.frequency_hz <= TABLE_MAX_FREQUENCY and abs(v) < 2 * math.pi * 2.0:
+            modes.append(m)
+    return LateralAnalysis(float(speed), tuple(modes), float(np.max(lam.real)), y)
+
+
+def lateral_sweep(design, speeds=None, segments: int = 8):
+    """Lateral stability over wind speeds (default 2 m/s to the survival wind in 1 m/s steps).
+
+    Returns (analyses, unstable_above [m/s] or None): the speed where the largest real part of
+    the lateral eigenvalues crosses zero (linear interpolation between the bracketing speeds),
+    None when every lateral mode is stable up to the survival wind. A speed without an
+    equilibrium (a line too slack to converge) is left out of ``analyses``."""
+    if speeds is None:
+        top = float(design.requirement.survival_wind)
+        speeds = np.arange(2.0, top + 1e-9, 1.0)
+        if speeds[-1] < top:
+            speeds = np.append(speeds, top)
+    system = system6_from_design(design, segments=segments)
+    out = []
+    for v in speeds:
+        try:
+            out.append(lateral_modes(system, float(v), design))
+        except RuntimeError:
+            continue  # no equilibrium found at this speed: the sweep goes on without it
+    if not out:
+        raise RuntimeError("lateral stability: no equilibrium found at any wind speed")
+    return out, unstable_above(out)
+
+
+def unstable_above(analyses) -> float | None:
+    """Wind speed [m/s] where the first lateral mode goes unstable (None: stable throughout).
+
+    Examples
+    --------
+    >>> A = LateralAnalysis
+    >>> round(unstable_above([A(5.0, (), -0.1, None), A(6.0, (), 0.1, None)]), 3)
+    5.5
+    """
+    prev = None
+    for a in analyses:
+        if not a.stable:
+            if prev is None:
+                return a.speed
+            x0, y0 = prev.speed, prev.max_real
+            x1, y1 = a.speed, a.max_real
+            return float(x0 + (x1 - x0) * (UNSTABLE_TOL - y0) / (y1 - y0))
+        prev = a
+    return None
+
+
+def static_lateral_derivatives(system: System6, speed: float, design=None,
+                               state: np.ndarray | None = None, dpsi: float = 1e-3) -> dict:
+    """Static lateral derivatives of the hull + fins about the centre of volume at the trim in a
+    steady wind ``speed`` [m/s] (body axes; beta > 0: wind from starboard):
+
+    C_Y_beta = dY/dbeta/(q S), C_n_beta = dN/dbeta/(q S l), C_l_beta = dL/dbeta/(q S l) [1/rad]
+
+    with q = rho V^2/2, S the hull reference area (V^(2/3)) and l its length, the normalisation
+    of the static engine's C_m_alpha (weathervane stability: C_n_beta > 0; C_l_beta < 0 rolls
+    away from the sideslip). The hull is yawed by +-``dpsi`` [rad] at rest in the wind.
+
+    About the centre of volume an axisymmetric hull with symmetric fins has no roll moment, so
+    C_l_beta is given about the confluence point C (x_c, 0, z_c), where the side force acts with
+    the arm z_c: C_l,C = C_l,O + z_c C_Y/l; C_n_beta_confluence = C_n,O - x_c C_Y/l likewise."""
+    from aerostat_core.dynamics.sixdof import quat_mul
+
+    wind = Wind3D.steady(float(speed))
+    field_ = wind.base.realize(system.tether.length, 60.0)
+    data = system.data(field_, wind)
+    y = state if state is not None else initial_state6(system, wind, design, field_, data)
+    b = system.hull_index
+    out = []
+    for sgn in (1.0, -1.0):
+        yy = y.copy()
+        dq = np.array([math.cos(0.5 * sgn * dpsi), 0.0, 0.0, math.sin(0.5 * sgn * dpsi)])
+        yy[b + 3:b + 7] = quat_mul(dq, y[b + 3:b + 7])
+        d = system.rhs(0.0, yy, data)[1]
+        out.append([d[DIAG6_NAMES.index(k)] for k in ("beta", "aero_side", "aero_yaw",
+                                                       "aero_roll")])
+    (b1, y1, n1, l1), (b2, y2, n2, l2) = out
+    db = b1 - b2
+    h = system.hull6.hull
+    rho = system.atmosphere.density
+    qs = 0.5 * rho * speed**2 * h.volume ** (2.0 / 3.0)
+    cy = (y1 - y2) / db / qs
+    cn = (n1 - n2) / db / (qs * h.length)
+    cl = (l1 - l2) / db / (qs * h.length)
+    xc, zc = h.confluence
+    return {"C_Y_beta_per_rad": float(cy), "C_n_beta_per_rad": float(cn),
+            "C_l_beta_per_rad": float(cl + zc * cy / h.length),
+            "C_n_beta_confluence_per_rad": float(cn - xc * cy / h.length)}
