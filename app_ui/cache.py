@@ -1,24 +1,36 @@
 """Cached wrappers around the engine for the pages (the only place pages get designs from).
 
 The cache key is the frozen inputs themselves: a resolved :class:`~aerostat_core.Requirement`
-and a :class:`~aerostat_core.Configuration` (frozen dataclasses, hashed and compared field by
-field), so two sessions with the same inputs share one computation and a hit costs one hash.
-The results are shared, not copied: treat them as read-only. Inputs that arrive as the canonical
-JSON text of the session state (:func:`app_ui.state.inputs_key`) are parsed once per distinct
-text. Invalid inputs raise ``ValueError`` (nothing is cached for them); the pages catch it and
-show the message.
+and a :class:`~aerostat_core.Configuration` (frozen dataclasses, compared field by field), so two
+sessions with the same inputs share one computation. The Design form builds them once per
+submit and keeps them beside the inputs dict (:func:`set_current`, :func:`current_inputs`): the
+page, the cache and the plots read those objects, with no JSON text on the way. Designs,
+reports and the case comparison are kept by Streamlit's own ``st.cache_resource`` (shared by
+every session, one compute per key while other sessions wait for it, nothing stored when the
+compute raises), hashed by the exact ``repr`` of the frozen inputs. The results are shared, not
+copied: treat them as read-only. Invalid inputs raise ``ValueError`` (nothing is cached for
+them); the pages catch it and show the message.
 
-The study pages (Sensitivity, Optimise, Envelope, Shapes, Dynamics) cache through the same
-store with :func:`memo`: the key is the frozen inputs plus the study's other parameters as
-hashable values (tuples, numbers, names; :func:`freeze` for a plain request dict), never JSON
-text. A compute that raises (a rejected request, a cancelled run) stores nothing, and a hit
-returns at once without running ``compute``, so a progress bar drawn by it is never replayed.
+The study pages (Sensitivity, Optimise, Envelope, Shapes, Dynamics) cache through :func:`memo`:
+the key is the frozen inputs plus the study's other parameters as hashable values (tuples,
+numbers, names; :func:`freeze` for a plain request dict), never JSON text. That store is this
+module's own small LRU, for what ``st.cache_resource`` does not offer: :func:`peek` (is a result
+there, without computing: a page draws a progress bar only when there is something to compute),
+a size per kind of study, and the keys held (:func:`memo_keys`, which the tests read). A compute
+that raises (a rejected request, a cancelled run) stores nothing, a second caller of a key being
+computed waits for it, and a hit returns at once without running ``compute``, so a progress bar
+drawn by it is never replayed (``st.cache_resource`` replays the elements a cached function
+drew).
+
+Inputs that arrive as the canonical JSON text of the session state (:func:`inputs_of`, used by
+the Envelope, Shapes and Optimise views) are parsed once per distinct text.
 
 Typical use in a page::
 
-    from app_ui import cache, state
-    rep = cache.cached_report(state.current_inputs_key())    # DesignReport for tables and plots
-    d = cache.design_of(req, cfg)                            # the Design object itself
+    from app_ui import cache
+    req, cfg = cache.current_inputs()        # frozen, built once by the form
+    rep = cache.report_of(req, cfg)          # DesignReport for tables and plots
+    d = cache.design_of(req, cfg)            # the Design object itself
     env = cache.memo("envelope", cache.frozen_inputs(req, cfg), lambda: operating_envelope(d), 32)
 """
 
@@ -28,7 +40,7 @@ import functools
 import json
 import threading
 from collections import OrderedDict
-from collections.abc import Callable, Hashable, Mapping
+from collections.abc import Callable, Hashable, Mapping, MutableMapping
 from typing import Any, TypeVar
 
 import streamlit as st
@@ -38,6 +50,7 @@ from aerostat_core.model import budget
 from aerostat_core.model.io import cases_to_json, inputs_from_dict, rows_to_csv
 from aerostat_core.output.report import DesignReport, cases_csv, comparison_rows, design_report
 from aerostat_core.studies.robust import design_with_confidence
+from app_ui import state
 
 #: Designs (and reports) kept for every session together.
 MAX_DESIGNS = 256
@@ -175,17 +188,67 @@ def frozen_inputs(req: Requirement, cfg: Configuration) -> tuple[Requirement, Co
     return req.resolved(), cfg  # the limits as applied (rule-set values filled in)
 
 
+def _exact(obj: Requirement | Configuration) -> str:
+    """The hash key of frozen inputs for ``st.cache_resource``: their ``repr``, which lists every
+    field exactly (floats to the last bit, ``True`` apart from ``1``)."""
+    return repr(obj)
+
+
+_HASH_FUNCS = {Requirement: _exact, Configuration: _exact}
+
+
+@st.cache_resource(max_entries=MAX_DESIGNS, show_spinner=False, hash_funcs=_HASH_FUNCS)
+def _design(req: Requirement, cfg: Configuration) -> Design:
+    # design(), or the robust sizing when the requirement asks a confidence (issue 22)
+    return design_with_confidence(req, cfg)
+
+
+@st.cache_resource(max_entries=MAX_DESIGNS, show_spinner=False, hash_funcs=_HASH_FUNCS)
+def _report(req: Requirement, cfg: Configuration) -> DesignReport:
+    return design_report(_design(req, cfg))
+
+
 def design_of(req: Requirement, cfg: Configuration) -> Design:
     """:func:`aerostat_core.model.design` of the inputs, computed once per distinct inputs."""
-    key = frozen_inputs(req, cfg)
-    # design(), or the robust sizing when the requirement asks a confidence (issue 22)
-    return memo("design", key, lambda: design_with_confidence(*key))
+    return _design(*frozen_inputs(req, cfg))
 
 
 def report_of(req: Requirement, cfg: Configuration) -> DesignReport:
     """:func:`aerostat_core.output.report.design_report` of :func:`design_of` the inputs."""
-    key = frozen_inputs(req, cfg)
-    return memo("report", key, lambda: design_report(design_of(*key)))
+    return _report(*frozen_inputs(req, cfg))
+
+
+#: Session-state key of the current inputs' frozen form: (the inputs dict it was built from,
+#: (resolved Requirement, Configuration)).
+FROZEN_KEY = "_design_frozen"
+
+
+def set_current(
+    req: Requirement, cfg: Configuration, session: MutableMapping[str, Any] | None = None
+) -> None:
+    """Make (req, cfg) the current inputs (:func:`app_ui.state.set_current_inputs`: the dict
+    for the workspace store) and keep their frozen form beside that dict, so that
+    :func:`current_inputs` returns these objects without building them again."""
+    s = st.session_state if session is None else session
+    state.set_current_inputs(req, cfg, s)
+    s[FROZEN_KEY] = (s[state.DESIGN_KEY], frozen_inputs(req, cfg))
+
+
+def current_inputs(
+    session: MutableMapping[str, Any] | None = None,
+) -> tuple[Requirement, Configuration]:
+    """The current inputs, frozen and resolved (the cache key of the design). Built from the
+    session's inputs dict only when that dict changed by another way than the form (the
+    baseline button, a file import, the workspace store), then kept."""
+    s = st.session_state if session is None else session
+    state.init_state(s)
+    held = s.get(FROZEN_KEY)
+    current = s[state.DESIGN_KEY]
+    if held is not None and held[0] is current:
+        return held[1]
+    frozen = frozen_inputs(*state.current_inputs(s))
+    s[FROZEN_KEY] = (s[state.DESIGN_KEY], frozen)
+    return frozen
 
 
 @functools.lru_cache(maxsize=MAX_DESIGNS)
@@ -237,13 +300,14 @@ def designs_of(cases: Mapping[str, Mapping[str, Any]]) -> dict[str, Design]:
     return {name: design_of(*key) for name, key in case_inputs(cases).items()}
 
 
+@st.cache_resource(max_entries=64, show_spinner=False, hash_funcs=_HASH_FUNCS)
+def _comparison(keys: tuple[tuple[str, Requirement, Configuration], ...]) -> list[dict]:
+    return comparison_rows({name: _design(req, cfg) for name, req, cfg in keys})
+
+
 def comparison_of(cases: Mapping[str, Mapping[str, Any]]) -> list[dict]:
     """:func:`aerostat_core.output.report.comparison_rows` of ``{name: inputs}``."""
-    keys = case_inputs(cases)
-    key = tuple(keys.items())
-    return memo(
-        "comparison", key, lambda: comparison_rows({n: design_of(*k) for n, k in keys.items()}), 64
-    )
+    return _comparison(tuple((n, *k) for n, k in case_inputs(cases).items()))
 
 
 def cases_csv_of(cases: Mapping[str, Mapping[str, Any]]) -> str:

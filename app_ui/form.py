@@ -14,6 +14,7 @@ from typing import Any
 import streamlit as st
 
 from aerostat_core import FABRICS, TETHERS
+from app_ui import cache
 
 from .form_model import (
     CHOICES,
@@ -24,6 +25,7 @@ from .form_model import (
     GROUPS,
     HULL_FABRIC_KEY,
     LAYOUT,
+    OPEN_GROUPS,
     SRC_KEY,
     SUBMIT_KEY,
     TETHER_KEY,
@@ -33,9 +35,10 @@ from .form_model import (
     Field,
     InputError,
     build_inputs,
+    group_key,
     widget_values,
 )
-from .state import DESIGN_KEY, init_state, set_current_inputs
+from .state import DESIGN_KEY, init_state
 from .text import plain
 
 
@@ -45,6 +48,9 @@ def sync_widgets(state: MutableMapping[str, Any] | None = None, *, force: bool =
     renders, or from a callback."""
     s = st.session_state if state is None else state
     init_state(s)
+    for group in GROUPS:
+        if group_key(group) not in s:
+            s[group_key(group)] = group in OPEN_GROUPS
     inputs = s[DESIGN_KEY]
     missing = any(k not in s for k in WIDGET_KEYS)
     if force or missing or s.get(SRC_KEY) != inputs:
@@ -61,9 +67,13 @@ def _on_submit() -> None:
         req, cfg = build_inputs(values, s[DESIGN_KEY])
     except InputError as exc:
         s[ERROR_KEY] = {"group": exc.group, "text": str(exc), "key": exc.key}
+        if exc.group in GROUPS:
+            s[group_key(exc.group)] = True  # the box with the problem in sight
         return
     s.pop(ERROR_KEY, None)
-    set_current_inputs(req, cfg, s)  # written through to the workspace store
+    # The frozen inputs are built here, once; the page, the cache and the plots read these
+    # objects (the dict beside them is for the workspace store and the widgets).
+    cache.set_current(req, cfg, s)
     sync_widgets(s, force=True)  # show the canonical values (catalogue materials, rounding)
 
 
@@ -117,7 +127,6 @@ _GROUP_ICONS = {
     "materials": ":material/layers:",
     "advanced": ":material/science:",
 }
-_EXPANDED = {"requirement", "wind", "configuration"}
 
 
 def _widget(key: str) -> None:
@@ -184,10 +193,15 @@ def input_form() -> None:
                     icon=":material/warning:",
                 )
         for group, keys in LAYOUT.items():
-            has_error = bool(err and err.get("group") == group)
-            with st.expander(
-                GROUPS[group], expanded=group in _EXPANDED or has_error, icon=_GROUP_ICONS[group]
-            ):
+            # Lazy: a closed group's widgets are not drawn (they keep their values, and
+            # opening it reruns the page): the closed groups hold 34 of the 59 widgets, which
+            # made up most of the page's elements and of a rerun's script time.
+            box = st.expander(
+                GROUPS[group], key=group_key(group), on_change="rerun", icon=_GROUP_ICONS[group]
+            )
+            if not box.open:
+                continue
+            with box:
                 with st.container():
                     _group_error(group)
                 if group == "advanced":

@@ -30,6 +30,15 @@ GROUPS = {
     "advanced": "Advanced model parameters",
 }
 
+#: Groups open when a session starts; the others are drawn only once opened (lazy expanders:
+#: their widgets keep their values while closed).
+OPEN_GROUPS = ("requirement", "wind", "configuration")
+
+
+def group_key(group: str) -> str:
+    """Session-state key of a form group's expander (True while it is open)."""
+    return f"form_group_{group}"
+
 
 class InputError(ValueError):
     """A rejected form input; ``group`` is a key of :data:`GROUPS`, ``key`` the widget's key
@@ -183,13 +192,18 @@ class Choice:
     group: str
     options: Mapping[str, str]
 
+    @cached_property
+    def entry(self) -> PathSpec:
+        """The registry entry (looked up once: the form draws every choice on every run)."""
+        return spec_for_path(self.path)
+
     @property
     def label(self) -> str:
-        return spec_for_path(self.path).label
+        return self.entry.label
 
     @property
     def help(self) -> str:
-        return spec_for_path(self.path).spec.help
+        return self.entry.spec.help
 
 
 CHOICES: dict[str, Choice] = {

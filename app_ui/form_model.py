@@ -41,6 +41,7 @@ from .form_fields import (  # noqa: F401 - re-exported: the form model's vocabul
     GROUPS,
     HULL_FABRIC_KEY,
     LAYOUT,
+    OPEN_GROUPS,
     RULE_SETS,
     SRC_KEY,
     SUBMIT_KEY,
@@ -51,6 +52,7 @@ from .form_fields import (  # noqa: F401 - re-exported: the form model's vocabul
     Choice,
     Field,
     InputError,
+    group_key,
 )
 from .text import clean, format_value, short
 

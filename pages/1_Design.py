@@ -28,6 +28,7 @@ from app_ui import (
     unapplied,
     verdict_view,
 )
+from app_ui.errors import report_unexpected
 from app_ui.tables import (
     PERF_HELP,
     PERF_TABLES,
@@ -65,6 +66,8 @@ def _fmt(v: float, quantity: str) -> str:
 
 TABS = ("Geometry", "3-D view", "Mass", "Performance", "Tether profiles", "Mission", "Envelope")
 TAB_KEY = "design_tab"
+#: Session-state key of the Geometry tab's export section (open: True).
+EXPORTS_KEY = "design_exports"
 
 
 def _geometry_tab(rep: DesignReport) -> None:
@@ -95,8 +98,17 @@ def _geometry_tab(rep: DesignReport) -> None:
             icon=":material/download:",
             key="dl_geometry",
         )
-    st.markdown("**Build it:** STL for CAD and cutting patterns")
-    shapes_view.export_panel(state.current_inputs_key())
+    # Lazy: the files (STL, DXF, SVG, CSV of the gores) took 0.3-0.8 s to make for every new
+    # design, longer than the design itself, and were made on every "Update design".
+    build = st.expander(
+        "Build it: STL for CAD and cutting patterns",
+        key=EXPORTS_KEY,
+        on_change="rerun",
+        icon=":material/precision_manufacturing:",
+    )
+    if build.open:
+        with build:
+            shapes_view.export_panel(state.current_inputs_key())
 
 
 def _mass_tab(rep: DesignReport) -> None:
@@ -182,51 +194,25 @@ def _tether_tab(rep: DesignReport) -> None:
     )
 
 
-col_in, col_out = st.columns([1, 2.7], gap="large")
+# --- results ---------------------------------------------------------------------------------
+# A fragment: a tab switch, the case form and the tether speeds rerun the results alone, not the
+# input form (half of a full run's script time and elements); "Update design" reruns the page.
 
-# --- inputs ------------------------------------------------------------------------------------
-with col_in:
-    st.subheader("Inputs", anchor=False)
-    st.button(
-        "Load thesis baseline",
-        on_click=_load_baseline,
-        icon=":material/restart_alt:",
-        help="10 kg payload at 300 m, 170 m³ NPL hull with fineness ratio 4.0, thesis "
-        "constants (helium 0.169 kg/m³, 130 g/m² fabric, 20 g/m tether).",
-    )
-    with st.expander("Design file: export / import", icon=":material/folder_open:"):
-        req_cur, cfg_cur = state.current_inputs()
-        st.download_button(
-            "Download design inputs (JSON)",
-            data=design_to_json(req_cur, cfg_cur),
-            file_name="aerostat-design.json",
-            mime="application/json",
-            on_click="ignore",
-            icon=":material/download:",
-            key="dl_design_json",
-            help="Every input, including those not shown in the form. Upload it again to "
-            "restore the design.",
-        )
-        st.file_uploader(
-            "Upload a design or cases file (JSON)",
-            type=["json"],
-            key="design_upload",
-            on_change=_on_upload,
-            help="A design file replaces the current inputs; a cases file adds saved cases. "
-            "A file with a problem changes nothing.",
-        )
-    import_box = st.container()  # always present: the form below keeps its place
-    fb = state.pop_import_feedback("design")  # shown once: never next to a later file
-    if fb:
-        with import_box:
-            show.feedback(fb["level"], fb["text"])
-    form.input_form()
-    unapplied.guard()  # edits typed but not applied: asked about before a page switch drops them
 
-# --- results -----------------------------------------------------------------------------------
-with col_out:
+@st.fragment
+def _results() -> None:
+    # The fragment's own error boundary: an error raised in a fragment stops at Streamlit's
+    # fragment handler (a redacted exception box), before app.py's boundary could see it.
     try:
-        rep = cache.cached_report(state.current_inputs_key())
+        _results_body()
+    except Exception as exc:  # noqa: BLE001 - never a traceback; a reference id, logged
+        report_unexpected(exc)
+
+
+def _results_body() -> None:
+    try:
+        frozen = cache.current_inputs()  # built once by the form; no JSON on the way
+        rep = cache.report_of(*frozen)
     except Exception as exc:  # noqa: BLE001 - never show a traceback
         st.error(
             f"The design could not be evaluated with these inputs: {exc}", icon=":material/error:"
@@ -386,10 +372,57 @@ with col_out:
             _tether_tab(rep)
     with tabs["Mission"]:
         if tabs["Mission"].open:
-            mission_view.render(cache.cached_design(state.current_inputs_key()))
+            mission_view.render(cache.design_of(*frozen))
     with tabs["Envelope"]:
         if tabs["Envelope"].open:
             envelope_view.render(state.current_inputs_key(), rep)
+
+
+col_in, col_out = st.columns([1, 2.7], gap="large")
+# The results are drawn first (the columns keep their places): their messages reach the browser
+# before the form's 60 widgets, so the first result paints while the form is still arriving.
+with col_out:
+    _results()
+
+# --- inputs ------------------------------------------------------------------------------------
+with col_in:
+    st.subheader("Inputs", anchor=False)
+    st.button(
+        "Load thesis baseline",
+        on_click=_load_baseline,
+        icon=":material/restart_alt:",
+        help="10 kg payload at 300 m, 170 m³ NPL hull with fineness ratio 4.0, thesis "
+        "constants (helium 0.169 kg/m³, 130 g/m² fabric, 20 g/m tether).",
+    )
+    with st.expander("Design file: export / import", icon=":material/folder_open:"):
+        req_cur, cfg_cur = state.current_inputs()
+        st.download_button(
+            "Download design inputs (JSON)",
+            data=design_to_json(req_cur, cfg_cur),
+            file_name="aerostat-design.json",
+            mime="application/json",
+            on_click="ignore",
+            icon=":material/download:",
+            key="dl_design_json",
+            help="Every input, including those not shown in the form. Upload it again to "
+            "restore the design.",
+        )
+        st.file_uploader(
+            "Upload a design or cases file (JSON)",
+            type=["json"],
+            key="design_upload",
+            on_change=_on_upload,
+            help="A design file replaces the current inputs; a cases file adds saved cases. "
+            "A file with a problem changes nothing.",
+        )
+    import_box = st.container()  # always present: the form below keeps its place
+    fb = state.pop_import_feedback("design")  # shown once: never next to a later file
+    if fb:
+        with import_box:
+            show.feedback(fb["level"], fb["text"])
+    form.input_form()
+    unapplied.guard()  # edits typed but not applied: asked about before a page switch drops them
+
 
 # Last element: the chart and grid code loads while the user reads the first result.
 preload.warm_bundles()

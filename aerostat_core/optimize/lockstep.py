@@ -102,34 +102,47 @@ def run_lockstep(tasks: list[Callable], evaluate_requests: Callable) -> list[Any
     return outcome
 
 
-def fd_stencil(u: np.ndarray, h: float) -> tuple[np.ndarray, np.ndarray]:
-    """Second-order finite-difference stencil in the unit cube.
+def fd_stencil(u: np.ndarray, h: float, order: int = 2) -> tuple[np.ndarray, np.ndarray]:
+    """Finite-difference stencil in the unit cube.
 
-    Per coordinate j two points: u -/+ h e_j (central) where both lie in [0, 1], else
-    u + h e_j, u + 2h e_j (one-sided, at the lower bound) or u - h e_j, u - 2h e_j (upper).
-    Returns the points (2d + 1, d) (centre first) and the per-coordinate kind (d,):
-    0 central, +1 forward, -1 backward. See :func:`fd_gradient`.
+    ``order=2`` (second order): per coordinate j two points, u -/+ h e_j (central) where both
+    lie in [0, 1], else u + h e_j, u + 2h e_j (one-sided, at the lower bound) or u - h e_j,
+    u - 2h e_j (upper). Returns the points (2d + 1, d) (centre first) and the per-coordinate kind
+    (d,): 0 central, +1 forward, -1 backward.
+
+    ``order=1`` (first order, for smooth functions and a small h): one point per coordinate,
+    u + h e_j (kind +1), or u - h e_j (kind -1) where u + h e_j leaves the cube; (d + 1, d)
+    points. See :func:`fd_gradient`.
     """
     d = u.size
+    idx = np.arange(d)
+    if order == 1:
+        kind = np.where(u + h > 1.0, -1, 1)
+        pts = np.repeat(u[None, :], d + 1, axis=0)
+        pts[1 + idx, idx] += kind * h
+        return pts, kind
     kind = np.where(u - h < 0.0, 1, np.where(u + h > 1.0, -1, 0))
     a = np.where(kind == 0, -h, kind * h)
     b = np.where(kind == 0, h, 2.0 * kind * h)
     pts = np.repeat(u[None, :], 2 * d + 1, axis=0)
-    idx = np.arange(d)
     pts[1 + 2 * idx, idx] += a
     pts[2 + 2 * idx, idx] += b
     return pts, kind
 
 
-def fd_gradient(values: np.ndarray, kind: np.ndarray, h: float) -> np.ndarray:
-    """Gradient from values on a :func:`fd_stencil` (first axis: the 2d + 1 points).
+def fd_gradient(values: np.ndarray, kind: np.ndarray, h: float, order: int = 2) -> np.ndarray:
+    """Gradient from values on a :func:`fd_stencil` of the same ``order`` (first axis: the
+    stencil's points).
 
-    Central: (f(u+h) - f(u-h))/2h; forward: (-3 f(u) + 4 f(u+h) - f(u+2h))/2h; backward: the
-    mirror image. All O(h^2). Returns shape (d,) + values.shape[1:].
+    Order 2: central (f(u+h) - f(u-h))/2h; forward (-3 f(u) + 4 f(u+h) - f(u+2h))/2h; backward
+    the mirror image; all O(h^2). Order 1: k (f(u + k h) - f(u))/h with k = +/-1, O(h).
+    Returns shape (d,) + values.shape[1:].
     """
     f0 = values[0]
-    fa, fb = values[1::2], values[2::2]
     k = kind.reshape((-1,) + (1,) * (values.ndim - 1))
+    if order == 1:
+        return k * (values[1:] - f0[None]) / h
+    fa, fb = values[1::2], values[2::2]
     central = (fb - fa) / (2.0 * h)
     onesided = k * (-3.0 * f0[None] + 4.0 * fa - fb) / (2.0 * h)
     return np.where(k == 0, central, onesided)
@@ -172,7 +185,7 @@ def slsqp_task(u0, bounds, maxiter, ftol):
 
 
 def stencil_evaluator(
-    fn_eval: Callable, d: int, h: float, objective_of: Callable, scale: dict
+    fn_eval: Callable, d: int, h: float, objective_of: Callable, scale: dict, order: int = 2
 ) -> Callable:
     """Build ``evaluate_requests`` for :func:`run_lockstep` from a batch evaluator: every
     request's point and its :func:`fd_stencil` go into one batch; the reply is (F, g, dF, dg).
@@ -189,14 +202,16 @@ def stencil_evaluator(
         ``objective_of(batch) -> ndarray`` objective per design.
     scale : dict
         ``{"value": float or None}``; set from the first batch (median |objective|) when None.
+    order : {1, 2}
+        Order of the :func:`fd_stencil`.
     """
 
-    m = 2 * d + 1
+    m = 2 * d + 1 if order == 2 else d + 1
 
     def evaluate_requests(batch: dict[int, np.ndarray]) -> dict[int, tuple]:
         """Evaluate every request's stencil in one batch; reply (F, g, dF, dg) per task."""
         ids = list(batch)
-        stencils = [fd_stencil(batch[i], h) for i in ids]
+        stencils = [fd_stencil(batch[i], h, order) for i in ids]
         pts = np.concatenate([s[0] for s in stencils])
         owners = np.repeat(ids, m)
         b = fn_eval(pts, owners)
@@ -211,8 +226,8 @@ def stencil_evaluator(
             sl = slice(k * m, (k + 1) * m)
             f_k, g_k = fval[sl], g[sl]
             kind = stencils[k][1]
-            df = fd_gradient(f_k, kind, h)
-            dg = fd_gradient(g_k, kind, h).T
+            df = fd_gradient(f_k, kind, h, order)
+            dg = fd_gradient(g_k, kind, h, order).T
             out[i] = (float(f_k[0]), g_k[0].copy(), df, dg)
         return out
 

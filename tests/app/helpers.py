@@ -120,8 +120,28 @@ def raw_messages(at: AppTest, kind: str) -> list[str]:
     return [str(e.value) for e in getattr(at, kind)]
 
 
+def open_groups(at: AppTest, *keys: str) -> AppTest:
+    """Open the design-form groups holding these widget keys (a closed group draws no widgets:
+    lazy expanders), with one run when any was closed."""
+    from app_ui.form_fields import LAYOUT, group_key
+
+    closed = [
+        g
+        for g, held in LAYOUT.items()
+        if set(held) & set(keys)
+        and not (group_key(g) in at.session_state and at.session_state[group_key(g)])
+    ]
+    for g in closed:
+        at.session_state[group_key(g)] = True
+    if closed:
+        at.run()
+    return at
+
+
 def submit(at: AppTest, **widget_values: Any) -> AppTest:
-    """Set form widgets by key (number inputs, radios, selectboxes) and press Update design."""
+    """Set form widgets by key (number inputs, radios, selectboxes) and press Update design
+    (opening the form groups that hold them first)."""
+    open_groups(at, *widget_values)
     for key, value in widget_values.items():
         widget = _widget(at, key)
         if widget.type == "text_input" and isinstance(value, (int, float)):
@@ -134,6 +154,7 @@ def submit(at: AppTest, **widget_values: Any) -> AppTest:
 
 def field_value(at: AppTest, key: str) -> float | None:
     """The number shown in a design-form box (text boxes: "12,5" reads as 12.5)."""
+    open_groups(at, key)
     text = _widget(at, key).value
     return None if not str(text).strip() else float(str(text).replace(",", "."))
 

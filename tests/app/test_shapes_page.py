@@ -66,6 +66,9 @@ def test_design_page_shape_selector_resets_fineness_and_redraws(at):
     assert not any("not applied" in m for m in messages(at, "warning"))
     side = side_view(at)
     assert side["hull_length"] == pytest.approx(side["hull_height"], rel=1e-2)  # a circle, to scale
+    assert "Hull and fins (STL)" not in [b.label for b in at.get("download_button")]  # lazy
+    at.session_state["design_exports"] = True  # open "Build it"
+    at.run()
     names = [b.label for b in at.get("download_button")]
     assert {
         "Hull and fins (STL)",
