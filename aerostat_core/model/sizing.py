@@ -272,6 +272,8 @@ def _prune(open_, x_lo, x_hi, group, up):
     becomes met) whose bracket lies wholly below another of its design's lower boundaries (it
     is not the largest), and an upper boundary whose bracket lies wholly above every lower
     boundary of its design (it cannot cut the window)."""
+    if group.size == 0:  # no bracket left to refine (every boundary already found)
+        return open_
     n = int(group.max()) + 1
     lo_up = np.full(n, -np.inf)
     hi_up = np.full(n, -np.inf)
@@ -547,6 +549,18 @@ def size_volume(req: Requirement, cfg: Configuration, fineness_ratio=None, area_
         if not pend.any():
             break
         i = np.argmax(avail, axis=0)
+        # a grid point that meets the whole table and opens the next candidate interval: the
+        # interval below it held a constraint that crosses its tolerance twice within one grid
+        # step (the search's assumption fails there). The point is feasible by evaluation, so
+        # it is the answer (the smallest feasible volume lies between it and the lower boundary
+        # found below it).
+        at_ok = pend & ok[i, np.arange(nb)]
+        for b in np.nonzero(at_ok)[0]:
+            found[b], volume[b], src[b] = True, grid[i[b]], (0, i[b])
+            binding[b] = NAMES[int(np.argmax(gg[i[b], b] - _TOL))]
+        pend &= ~at_ok
+        if not pend.any():
+            break
         bsel = np.nonzero(pend)[0]
         ib = i[bsel]
         sw = met[ib, bsel] != met[ib + 1, bsel]  # the constraints that change in the interval
