@@ -496,25 +496,51 @@ def _uncertainty(inputs_json: str, rep: DesignReport) -> None:
 
 def _text_frame(df: pd.DataFrame) -> pd.DataFrame:
     """Numbers at 4 significant digits as text, so a static table's cells can wrap."""
-    return df.map(lambda v: f"{v:.4g}" if isinstance(v, float) else v)
+
+    def cell(v: Any) -> Any:
+        if isinstance(v, (float, np.floating)):
+            return f"{v:.4g}" if np.isfinite(v) else "not computed: no finite sample"
+        return v
+
+    return df.map(cell)
+
+
+def limits_frame(env: Envelope, payload_index: int = 0) -> pd.DataFrame:
+    """The envelope's altitude -> highest flyable wind table as text: a wind where there is one,
+    else why there is none in words (never "nan": :meth:`Envelope.limit_wind` is NaN where the
+    lowest wind of the grid already breaks a limit).
+
+    The wind column is "Flyable up to [m/s]"; the grid's top wind reads "≥ top" when every
+    wind of the grid is flyable (the limit lies beyond the map).
+    """
+    lw = env.limit_wind()[payload_index]
+    names = env.binding_names()[payload_index]
+    fly = env.flyable[payload_index]
+    top = float(env.wind[-1])
+    cells = []
+    for ia, w in enumerate(lw):
+        if np.isfinite(w):
+            at_top = bool(fly[ia].all())
+            cells.append(f"≥ {top:.1f} (top of the map)" if at_top else f"{w:.1f}")
+        else:
+            broken = BY_NAME[str(names[ia, 0])].label.lower()
+            cells.append(f"not flyable: {broken} broken at {float(env.wind[0]):g} m/s already")
+    return pd.DataFrame(
+        {"Altitude [m]": [f"{h:.0f}" for h in env.altitude], "Flyable up to [m/s]": cells}
+    )
 
 
 def render(inputs_json: str, rep: DesignReport) -> None:
     """The Envelope tab."""
     env = cached_envelope(inputs_json)
     st.plotly_chart(envelope_figure(env), key="envelope_map")
-    lw = env.limit_wind()[0]
     st.caption(
         f"{env.points} points for the built {env.volume:.1f} m³ aerostat (tether length "
         "= altitude, length limits scaled with it). Colour: the largest normalised "
         "constraint value g (> 0: a limit is broken); hover for the binding constraint "
         "and its margin."
     )
-    limits = pd.DataFrame({"Altitude [m]": env.altitude, "Flyable up to [m/s]": lw})
-    st.table(
-        limits.style.format({"Altitude [m]": "{:.0f}", "Flyable up to [m/s]": "{:.1f}"}),
-        hide_index=True,
-    )
+    st.table(limits_frame(env), hide_index=True)
     st.subheader("Flyable time", anchor=False)
     _flyable(inputs_json)
     st.subheader("Uncertainty", anchor=False)

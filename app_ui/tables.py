@@ -105,7 +105,7 @@ def geometry_frame(rows: Sequence[Mapping[str, Any]]) -> pd.DataFrame:
         {
             "Quantity": [r["quantity"] for r in rows],
             "Value": [float(r["value"]) for r in rows],
-            "Unit": [formats.unit(r["unit"]) for r in rows],
+            "Unit": [formats.cell_unit(r["unit"]) for r in rows],
         }
     )
 
@@ -121,7 +121,14 @@ def geometry_styler(df: pd.DataFrame) -> Styler:
         rows.setdefault(formats.kind_of_unit(_SHOWN_UNIT.get(str(u), str(u)), str(q)), []).append(i)
     styler = df.style.set_table_styles(WRAP)
     for kind, idx in rows.items():
-        styler = styler.format(formats.formatter(kind), subset=pd.IndexSlice[idx, ["Value"]])
+        styler = styler.format(formats.shown_formatter(kind), subset=pd.IndexSlice[idx, ["Value"]])
+        # the unit of the chosen system (ft for m, ...) next to the converted value
+        styler = styler.format(
+            lambda u, kind=kind: (
+                formats.cell_unit(formats.unit_of(kind)) if formats.KINDS[kind].si else u
+            ),
+            subset=pd.IndexSlice[idx, ["Unit"]],
+        )
     return styler
 
 
@@ -155,7 +162,9 @@ def mass_frame(rows: Sequence[Mapping[str, Any]]) -> pd.DataFrame:
 
 def mass_styler(df: pd.DataFrame) -> Styler:
     """:func:`mass_frame` as a static table: masses and shares at their decimals, no index."""
-    fmt = {"Mass [kg]": formats.formatter("mass"), "Share [%]": formats.formatter("share")}
+    df = df.rename(columns=formats.relabel)  # "Mass [lb]" in US customary units
+    fmt = {formats.relabel("Mass [kg]"): formats.shown_formatter("mass")}
+    fmt["Share [%]"] = formats.formatter("share")
     return df.style.format(fmt).hide(axis="index")
 
 
@@ -180,7 +189,13 @@ def performance_styler(df: pd.DataFrame, columns: Sequence[str] | None = None) -
     def rowstyle(row: pd.Series) -> list[str]:
         return [LIMIT_ROW_STYLE if limited[row.name] else ""] * len(row)
 
-    fmt = {c: formats.formatter(PERF_KINDS[c]) for c in shown.columns if c in PERF_KINDS}
+    # values and headers in the chosen unit system ("Blow-by [ft]")
+    fmt = {
+        formats.relabel(c): formats.shown_formatter(PERF_KINDS[c])
+        for c in shown.columns
+        if c in PERF_KINDS
+    }
+    shown = shown.rename(columns=formats.relabel)
     return shown.style.apply(rowstyle, axis=1).format(fmt).hide(axis="index")
 
 
@@ -242,18 +257,22 @@ def comparison_frame(
         kind = _RESULT_KINDS.get(r["quantity"]) if r["section"] == "result" else None
         v = r.get(n)
         if kind and isinstance(v, (int, float, np.floating)) and not isinstance(v, bool):
-            return formats.text(v, kind)
+            return formats.shown(v, kind)  # in the chosen unit system, as its label says
         return format_value(v)
 
     for n in names:
         data[n] = [cell(r, n) for r in keep]
-    data["Differs"] = [bool(r["differs"]) for r in keep]
+    data["Quantity"] = [
+        formats.relabel(q) if r["section"] == "result" and q in _RESULT_KINDS else q
+        for r, q in zip(keep, data["Quantity"])
+    ]
+    data["Differs"] = [formats.yes_no(r["differs"]) for r in keep]  # words, never True/False
     return pd.DataFrame(data)
 
 
 def comparison_styler(df: pd.DataFrame) -> Styler:
     """Yellow background on the rows where the cases differ."""
-    differs = df["Differs"].to_numpy(bool)
+    differs = (df["Differs"] == formats.yes_no(True)).to_numpy(bool)
 
     def rowstyle(row: pd.Series) -> list[str]:
         return [DIFF_ROW_STYLE if differs[row.name] else ""] * len(row)

@@ -49,3 +49,21 @@ def base_layout(title: str, **layout: Any) -> dict[str, Any]:
     )
     lay.update(layout)
     return lay
+
+
+#: Sidebar width at first paint [px]: Streamlit's default 300 px left a 1024 px window 724 px
+#: for the page, where the Design page's tabs scrolled sideways and labels broke mid-word.
+SIDEBAR_WIDTH = 220
+
+#: The app's few CSS rules (layout only; colours come from .streamlit/config.toml).
+#: * tab bars wrap onto a second line instead of scrolling sideways (every tab in sight);
+#: * labels and table cells break between words, never inside one ("Ope-rational");
+#: * chart titles are never clipped by their container.
+PAGE_CSS = """
+<style>
+[data-baseweb="tab-list"] { flex-wrap: wrap; row-gap: 0.25rem; }
+[data-baseweb="tab-list"] ~ button, [data-testid="stTabs"] [aria-label*="scroll"] { display: none; }
+[data-testid="stWidgetLabel"] p, [data-testid="stMetricLabel"] p, [data-testid="stTable"] th,
+[data-testid="stTable"] td { word-break: normal; overflow-wrap: normal; hyphens: manual; }
+</style>
+"""

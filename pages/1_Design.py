@@ -69,8 +69,9 @@ def _on_upload() -> None:
 
 
 def _fmt(v: float, quantity: str) -> str:
-    """A headline number at the decimals of its quantity (the same in every table)."""
-    return formats.text(v, quantity)
+    """A headline number at the decimals of its quantity (the same in every table), in the
+    unit system chosen in the sidebar (its label from :func:`app_ui.formats.label`)."""
+    return formats.shown(v, quantity)
 
 
 TABS = ("Geometry", "3-D view", "Mass", "Performance", "Tether profiles", "Mission", "Envelope")
@@ -266,7 +267,7 @@ with col_out:
         )
     c = show.metric_row(5)
     c[0].metric(
-        "Volume [m³]",
+        formats.label("Volume", "volume"),
         _fmt(s.volume_m3, "volume"),
         help="Hull volume. Sized: the smallest hull meeting the blow-by limit with positive "
         "free lift."
@@ -276,29 +277,37 @@ with col_out:
         delta_color="off",
         delta_arrow="off",
     )
-    c[1].metric("Length [m]", _fmt(s.length_m, "length"), help="Hull length l.")
-    c[2].metric("Diameter [m]", _fmt(s.diameter_m, "diameter"), help="Maximum hull diameter d.")
+    c[1].metric(
+        formats.label("Length", "length"), _fmt(s.length_m, "length"), help="Hull length l."
+    )
+    c[2].metric(
+        formats.label("Diameter", "diameter"),
+        _fmt(s.diameter_m, "diameter"),
+        help="Maximum hull diameter d.",
+    )
     c[3].metric(
-        "Total mass [kg]",
+        formats.label("Total mass", "total_mass"),
         _fmt(s.total_mass_kg, "total_mass"),
         help="Hull, fins, lifting gas, miscellaneous, payload and tether.",
     )
     c[4].metric(
-        "Free lift [kg]",
+        formats.label("Free lift", "free_lift"),
         _fmt(s.free_lift_kg, "free_lift"),
         help="Gross buoyancy minus total weight, in kilograms "
         f"({s.percent_static_lift:.0f} % of the gross buoyancy).",
     )
-    st.caption(f"At the design wind, {lim.design_wind:g} m/s:")
+    st.caption(f"At the design wind, {formats.shown(lim.design_wind, 'wind', with_unit=True)}:")
     c = show.metric_row(5)
     bb = s.blow_by_at_design_wind_m
     c[0].metric(
-        "Blow-by [m]",
+        formats.label("Blow-by", "blow_by"),
         _fmt(bb, "blow_by"),
-        delta=f"{text.signed(bb - lim.blow_by_limit, formats.decimals('blow_by'))} m",
+        delta=text.signed(formats.convert(bb - lim.blow_by_limit, "blow_by"), 1)
+        + f" {formats.unit_of('blow_by')}",
         delta_color="inverse",
         help=f"Downwind offset of the confluence point from the winch; limit "
-        f"{lim.blow_by_limit:g} m (the delta is blow-by minus limit).",
+        f"{formats.shown(lim.blow_by_limit, 'blow_by', with_unit=True)} (the delta is blow-by "
+        "minus limit).",
     )
     c[1].metric(
         "α_eq [deg]",
@@ -306,7 +315,7 @@ with col_out:
         help="Equilibrium angle of attack (moment balance about the confluence point).",
     )
     c[2].metric(
-        "Tension [N]",
+        formats.label("Tension", "tension"),
         _fmt(s.tension_top_at_design_wind_N, "tension"),
         help="Tether tension at the confluence point.",
     )
@@ -318,9 +327,7 @@ with col_out:
         help="Breaking strength of the tether / largest tension along the tether; required "
         f"{lim.min_safety_factor:g} (the delta is the margin).",
     )
-    c[4].metric(
-        "Gas cost [USD]", _fmt(s.gas_cost_USD, "gas_cost"), help="Hull volume × gas price."
-    )
+    c[4].metric("Gas cost [USD]", _fmt(s.gas_cost_USD, "gas_cost"), help="Hull volume × gas price.")
 
     if rep.feasible:
         st.success(
