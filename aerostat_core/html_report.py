@@ -116,8 +116,13 @@ def _table(rows: list[dict], columns: list[tuple[str, str]] | None = None, cls=N
 
 
 def _svg(fig) -> str:
+    # Reproducible bytes: no save date in the metadata and element ids hashed from a fixed salt
+    # (matplotlib salts them at random otherwise), so one design always gives one report.
     buf = io.StringIO()
-    fig.savefig(buf, format="svg", bbox_inches="tight")
+    import matplotlib as mpl
+
+    with mpl.rc_context({"svg.hashsalt": "aerostat-report"}):
+        fig.savefig(buf, format="svg", bbox_inches="tight", metadata={"Date": None})
     s = buf.getvalue()
     return s[s.index("<svg") :]
 
