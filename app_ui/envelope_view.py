@@ -27,7 +27,7 @@ from aerostat_core.report import DesignReport
 from aerostat_core.site_wind import MAX_CSV_BYTES, WeibullSite, flyable_time, read_wind_csv
 from aerostat_core.uncertainty import monte_carlo, rule_set_spread
 
-from . import cache, entry
+from . import cache, entry, formats
 from .plots import WIND_AXIS
 from .text import plain
 from .theme import MARGIN, PALETTE
@@ -89,6 +89,7 @@ class ReportKey(NamedTuple):
     site: SiteKey | None  # None: the default Weibull site
     n_samples: int  # Monte Carlo samples (0 leaves the uncertainty out)
     seed: int
+    units: str = "SI"  # unit system of the values shown (the sidebar's choice)
 
 
 # --- cached engine calls --------------------------------------------------------------------------
@@ -185,9 +186,10 @@ def cached_report_html(
     csv_bytes: bytes | None = None,
     n: int = 2000,
     seed: int = 0,
+    units: str = "SI",
 ) -> bytes:
     """The HTML design report with the tab's site wind and Monte Carlo (defaults: the default
-    Weibull site, 2000 samples)."""
+    Weibull site, 2000 samples), its values in unit system ``units``."""
     req, cfg = cache.given_inputs(inputs_json)
     key = ReportKey(
         requirement=req,
@@ -195,6 +197,7 @@ def cached_report_html(
         site=_site_key(site_json, csv_bytes),
         n_samples=int(n),
         seed=int(seed),
+        units=str(units),
     )
 
     def compute() -> bytes:
@@ -204,6 +207,7 @@ def cached_report_html(
             n_monte_carlo=key.n_samples,
             seed=key.seed,
             base_requirement=key.requirement,
+            units=key.units,
         ).encode("utf-8")
 
     return cache.memo("report_html", key, compute, 8)
@@ -329,14 +333,15 @@ def report_button(inputs_json: str) -> None:
     and Monte Carlo size of the Envelope tab once set there."""
     site = st.session_state.get(SITE_KEY) or {}
     run = st.session_state.get(MC_KEY) or {"n": 2000, "seed": 0}
+    units = formats.system()  # the sidebar's unit system, read now (the build runs later)
 
     def build() -> bytes:
         try:
             return cached_report_html(
-                inputs_json, site.get("json"), site.get("csv"), run["n"], run["seed"]
+                inputs_json, site.get("json"), site.get("csv"), run["n"], run["seed"], units
             )
         except ValueError:  # a bad site file (its message is on the tab): the default site
-            return cached_report_html(inputs_json, None, None, run["n"], run["seed"])
+            return cached_report_html(inputs_json, None, None, run["n"], run["seed"], units)
 
     st.download_button(
         "Design report (HTML)",
