@@ -38,16 +38,42 @@ LEGEND_BELOW = dict(orientation="h", y=-0.22)
 LEGEND_RIGHT = dict(orientation="v", x=1.02, xanchor="left", y=1.0, yanchor="top")
 
 
+#: Characters of a title line: a half-width chart at 1024 px is about 350 px wide, where a
+#: 15 px title of more than ~45 characters ran off the figure and was cut.
+TITLE_CHARS = 45
+
+
+def wrap_title(title: str, width: int = TITLE_CHARS) -> str:
+    """A figure title broken into lines of at most ``width`` characters (at spaces, with
+    plotly's ``<br>``), so a long title is never cut at the figure's edge.
+
+    >>> wrap_title("Total mass over fineness ratio × fin position (hull re-sized)", 30)
+    'Total mass over fineness ratio<br>× fin position (hull re-sized)'
+    """
+    lines: list[str] = []
+    for word in str(title).split(" "):
+        if lines and len(lines[-1]) + 1 + len(word) <= width:
+            lines[-1] += " " + word
+        else:
+            lines.append(word)
+    return "<br>".join(lines)
+
+
 def base_layout(title: str, **layout: Any) -> dict[str, Any]:
-    """The common layout of a figure: title, font, margins and a legend below the plot;
-    ``layout`` overrides or adds keys."""
+    """The common layout of a figure: title (wrapped, with room above the plot for every line),
+    font, margins and a legend below the plot; ``layout`` overrides or adds keys."""
+    text = wrap_title(title)
+    lines = text.count("<br>") + 1
     lay: dict[str, Any] = dict(
-        title=dict(text=title, font=dict(size=TITLE_SIZE)),
+        title=dict(text=text, font=dict(size=TITLE_SIZE)),
         font=FONT,
         margin=MARGIN,
         legend=LEGEND_BELOW,
     )
     lay.update(layout)
+    margin = dict(lay.get("margin") or MARGIN)
+    margin["t"] = max(int(margin.get("t", MARGIN["t"])), 30 + 20 * lines)
+    lay["margin"] = margin
     return lay
 
 

@@ -134,7 +134,7 @@ def test_overlaid_tether_profiles_to_scale(with_gui_cases):
     np.testing.assert_allclose(xu, designs[GUI[1]].tether_x[:, int(u)])
     at.select_slider(key="compare_wind").set_value(5.0).run()
     fig = chart(at, "cmp_tether")
-    assert fig["layout"]["title"]["text"].startswith("Tether profiles at 5 m/s")
+    assert fig["layout"]["title"]["text"].replace("<br>", " ").startswith("Tether profiles at 5 m/s")
 
 
 def test_two_saved_designs_compared(at):
