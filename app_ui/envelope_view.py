@@ -27,7 +27,7 @@ from aerostat_core.report import DesignReport
 from aerostat_core.site_wind import MAX_CSV_BYTES, WeibullSite, flyable_time, read_wind_csv
 from aerostat_core.uncertainty import monte_carlo, rule_set_spread
 
-from . import cache, entry, formats
+from . import cache, entry, formats, show
 from .plots import WIND_AXIS
 from .text import plain
 from .theme import MARGIN, PALETTE
@@ -437,7 +437,7 @@ def _flyable(inputs_json: str) -> None:
     except ValueError as exc:  # quotes the file's cell: never rendered as markup
         st.error(str(exc).translate(_MD), icon=":material/error:")
         return
-    c = st.columns(3)
+    c = show.metric_row(3)  # metrics as wide as their labels: columns cut them
     c[0].metric(
         "Time flyable [%]",
         f"{f['percent_time_flyable']:.1f}",
@@ -481,10 +481,12 @@ def _uncertainty(inputs_json: str, rep: DesignReport) -> None:
         return
     mc = cached_monte_carlo(inputs_json, run["n"], run["seed"])
     s = mc["summary"]
-    c = st.columns(4)
-    c[0].metric("Blow-by 5-95 % [m]", f"{s['blow_by_p05_m']:.1f}-{s['blow_by_p95_m']:.1f}")
-    c[1].metric("Tension 5-95 % [N]", f"{s['tension_p05_N']:.0f}-{s['tension_p95_N']:.0f}")
-    c[2].metric("Free lift 5-95 % [kg]", f"{s['free_lift_p05_kg']:.2f}-{s['free_lift_p95_kg']:.2f}")
+    c = show.metric_row(4)  # metrics as wide as their labels: four columns cut them
+    c[0].metric("Blow-by 5-95 % [m]", f"{s['blow_by_p05_m']:.1f} – {s['blow_by_p95_m']:.1f}")
+    c[1].metric("Tension 5-95 % [N]", f"{s['tension_p05_N']:.0f} – {s['tension_p95_N']:.0f}")
+    c[2].metric(
+        "Free lift 5-95 % [kg]", f"{s['free_lift_p05_kg']:.2f} – {s['free_lift_p95_kg']:.2f}"
+    )
     c[3].metric("P(all limits met)", f"{100 * s['probability_feasible']:.0f} %")
     st.plotly_chart(bands_figure(mc, rep), key="mc_bands")
     # static tables, full width, cells that wrap: every column in sight at 1024 px

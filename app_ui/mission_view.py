@@ -201,11 +201,14 @@ def render(d) -> None:
             "Group": [r["group"] for r in rows],
             "Quantity": [r["quantity"] for r in rows],
             "Value": [r["value"] for r in rows],
-            "Unit": [r["unit"] for r in rows],
+            "Unit": [formats.cell_unit(r["unit"]) for r in rows],  # "-" was a Markdown bullet
         }
     )
     # static, cells that wrap: every row and column in sight at 1024 px (the grid scrolled)
-    st.table(frame.style.format({"Value": "{:.4g}"}, na_rep="–"), hide_index=True)
+    st.table(
+        frame.style.format({"Value": "{:.4g}"}, na_rep=formats.missing("no finite value")),
+        hide_index=True,
+    )
     st.download_button(
         "Mission table (CSV)",
         data=cache.csv_bytes(rows),

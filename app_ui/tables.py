@@ -281,22 +281,39 @@ def comparison_styler(df: pd.DataFrame) -> Styler:
 
 
 def labelled_table(
-    rows: Sequence[Mapping[str, Any]], columns: Mapping[str, tuple[str, str | None]]
+    rows: Sequence[Mapping[str, Any]],
+    columns: Mapping[str, tuple[str, str | None] | tuple[str, str | None, str]],
 ) -> pd.DataFrame:
     """Rows as the text of a static table (cells wrap, so every column is in sight at 1024 px):
-    the ``columns`` {key: (header, format)} in order, numbers by ``format`` ("{:.3f}"), booleans
-    as yes/no, a missing or non-finite number as "–"; keys absent from the rows are left out."""
+    the ``columns`` {key: (header, format[, missing])} in order, numbers by ``format``
+    ("{:.3f}", never "-0.000"), booleans as yes/no, a missing or non-finite number as
+    ``missing`` (default "not computed: no value"); a "Unit" column's "-" as "–" (Markdown made
+    it a bullet); keys absent from the rows are left out.
 
-    def cell(v: Any, fmt: str | None) -> Any:
+    >>> labelled_table([{"a": -0.0001, "u": "-", "t": None}],
+    ...                {"a": ("A", "{:.3f}"), "u": ("Unit", None), "t": ("T", None, "never")}
+    ...                ).iloc[0].tolist()
+    ['0.000', '–', 'never']
+    """
+
+    def cell(v: Any, spec: tuple) -> Any:
+        header, fmt = spec[0], spec[1]
         if isinstance(v, (bool, np.bool_)):
             return "yes" if v else "no"
         if v is None or (isinstance(v, (float, np.floating)) and not np.isfinite(v)):
-            return "–"
+            return spec[2] if len(spec) > 2 else formats.missing("no value")
+        if header == "Unit" and isinstance(v, str):
+            return formats.cell_unit(v)
         if fmt and isinstance(v, (int, float, np.integer, np.floating)):
-            return fmt.format(v)
+            return _no_negative_zero(fmt.format(v))
         return v
 
     keys = [k for k in columns if any(k in r for r in rows)]
-    return pd.DataFrame(
-        {columns[k][0]: [cell(r.get(k), columns[k][1]) for r in rows] for k in keys}
-    )
+    return pd.DataFrame({columns[k][0]: [cell(r.get(k), columns[k]) for r in rows] for k in keys})
+
+
+def _no_negative_zero(text: str) -> str:
+    """ "-0.000" -> "0.000": a value that rounds to zero has no sign."""
+    if text.startswith("-") and not any(ch in "123456789" for ch in text):
+        return text[1:]
+    return text
