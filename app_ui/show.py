@@ -25,7 +25,7 @@ def metric_row(n: int) -> list[_MetricSlot]:
     """``n`` places for headline numbers, used like ``st.columns(n)``: a wrapping horizontal
     row whose metrics take the width of their label and value, so a narrow window moves a
     metric to the next line instead of cutting it to "1…" (fixed columns did at 1024 px)."""
-    row = st.container(horizontal=True, wrap=True, gap="large")
+    row = st.container(horizontal=True, wrap=True, gap="medium")
     return [_MetricSlot(row)] * n
 
 

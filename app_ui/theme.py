@@ -82,14 +82,27 @@ def base_layout(title: str, **layout: Any) -> dict[str, Any]:
 SIDEBAR_WIDTH = 220
 
 #: The app's few CSS rules (layout only; colours come from .streamlit/config.toml).
-#: * tab bars wrap onto a second line instead of scrolling sideways (every tab in sight);
+#: * the sidebar 220 px wide, the page's side padding 1.5 rem (5 rem left a 1024 px window a
+#:   125 px wide input column), a smaller page title and headline numbers: the verdict and the
+#:   ten key numbers of the Design page above the fold at 1024 x 768;
+#: * tab bars wrap onto a second line instead of scrolling sideways (every tab in sight; the
+#:   sliding underline, placed for one line, is replaced by the selected tab's own);
 #: * labels and table cells break between words, never inside one ("Ope-rational");
-#: * chart titles are never clipped by their container.
-PAGE_CSS = """
+#: * a button's label wraps instead of ending in an ellipsis ("Load thesis b…", "Sav…").
+PAGE_CSS = f"""
 <style>
-[data-baseweb="tab-list"] { flex-wrap: wrap; row-gap: 0.25rem; }
-[data-baseweb="tab-list"] ~ button, [data-testid="stTabs"] [aria-label*="scroll"] { display: none; }
+section[data-testid="stSidebar"] {{ width: {SIDEBAR_WIDTH}px !important;
+  min-width: {SIDEBAR_WIDTH}px !important; }}
+[data-testid="stTabs"] [role="tablist"] {{ flex-wrap: wrap; overflow-x: visible; row-gap: 0.25rem; }}
+[data-testid="stTabs"] [role="tablist"] [data-baseweb="tab-highlight"],
+[data-testid="stTabs"] [role="tablist"] [data-baseweb="tab-border"] {{ display: none; }}
+[data-testid="stTabs"] [role="tab"][aria-selected="true"] {{ box-shadow: inset 0 -3px 0 {ACCENT}; }}
 [data-testid="stWidgetLabel"] p, [data-testid="stMetricLabel"] p, [data-testid="stTable"] th,
-[data-testid="stTable"] td { word-break: normal; overflow-wrap: normal; hyphens: manual; }
+[data-testid="stTable"] td {{ word-break: normal; overflow-wrap: normal; hyphens: manual; }}
+button [data-testid="stMarkdownContainer"] {{ overflow: visible; text-overflow: clip; }}
+button [data-testid="stMarkdownContainer"] p {{ white-space: normal; text-align: left; }}
+[data-testid="stMainBlockContainer"] {{ padding: 1.5rem 1.5rem 4rem 1.5rem; }}
+[data-testid="stMain"] h1 {{ font-size: 1.75rem; padding: 0 0 0.5rem 0; }}
+[data-testid="stMetricValue"] {{ font-size: 1.6rem; }}
 </style>
 """

@@ -36,9 +36,9 @@ from app_ui.tables import (
 )
 
 st.title("Aerostat design")
-st.caption(
-    "Enter the requirement and the design choices, then press **Update design**. "
-    "Everything is recomputed from the inputs; units are SI unless a label says otherwise."
+st.caption(  # one line at 1024 px: the verdict stays above the fold
+    "Enter the requirement and the design choices, then press **Update design**; results in "
+    "the units chosen in the sidebar."
 )
 
 
@@ -193,7 +193,9 @@ def _tether_tab(rep: DesignReport) -> None:
     )
 
 
-col_in, col_out = st.columns([1, 2.7], gap="large")
+# 1 : 2.2 with the app's narrow padding: at 1024 px the input column is ~230 px (labels whole),
+# the result column ~500 px (four headline numbers a row)
+col_in, col_out = st.columns([1, 2.2], gap="medium")
 
 # --- inputs ------------------------------------------------------------------------------------
 with col_in:
@@ -249,9 +251,10 @@ with col_out:
 
     st.subheader("Result", anchor=False)
     rules = form_model.RULE_SETS[rep.inputs["requirement"]["rules"]]
-    st.caption(
-        f"Rule set: **{rules.name}** ({rules.title}). "
-        + (f"Sized by: {s.binding_constraint.replace('_', ' ')}." if rep.sized else "")
+    st.caption(  # short (one line at 1024 px); the rule set's title in its help
+        f"Rule set: **{rules.name}**. "
+        + (f"Sized by: {s.binding_constraint.replace('_', ' ')}." if rep.sized else ""),
+        help=rules.title,
     )
     with st.expander(
         "Constraint table: every limit, its margin and where it is checked", icon=":material/rule:"

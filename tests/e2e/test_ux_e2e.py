@@ -36,18 +36,22 @@ _CUT = """
 () => {
   const sel = ['[data-testid="stWidgetLabel"] p', '[data-testid="stMetricLabel"] *',
                '[data-testid="stMetricValue"] *', '[data-testid="stMetricValue"]',
-               'button[role="tab"] p', '[data-testid="stBaseButton-secondary"] p',
-               '[data-testid="stBaseButton-primary"] p', '[data-testid="stDownloadButton"] p',
-               '[data-testid="stTable"] th', '[data-testid="stTable"] td'];
+               '[role="tab"] p', '[data-testid="stTable"] th', '[data-testid="stTable"] td'];
   const out = [];
+  const cut = e => e.offsetParent && e.clientWidth > 0 && e.scrollWidth > e.clientWidth + 1;
   for (const e of document.querySelectorAll(sel.join(','))) {
-    if (!e.offsetParent || e.clientWidth === 0) continue;
     const style = getComputedStyle(e);
     const clips = style.overflowX !== 'visible' || style.textOverflow === 'ellipsis';
-    if (clips && e.scrollWidth > e.clientWidth + 1)
+    if (clips && cut(e))
       out.push(`${e.tagName} "${e.textContent.trim().slice(0, 60)}" ${e.scrollWidth} > ${e.clientWidth}`);
   }
-  return out;
+  // any text that ends in an ellipsis (buttons: "Sav…"), outside select boxes' chosen value
+  for (const e of document.querySelectorAll('[data-testid="stMain"] *, [data-testid="stSidebar"] *')) {
+    if (e.closest('[data-baseweb="select"]') || !e.textContent.trim()) continue;
+    if (getComputedStyle(e).textOverflow === 'ellipsis' && cut(e))
+      out.push(`ellipsis: ${e.tagName} "${e.textContent.trim().slice(0, 60)}" ${e.scrollWidth} > ${e.clientWidth}`);
+  }
+  return [...new Set(out)];
 }
 """
 #: Anything that makes the page scroll sideways, and Markdown bullets inside table cells.
@@ -60,11 +64,12 @@ _WIDE = """
   return wide.concat(bullets);
 }
 """
-#: Tabs whose button lies outside the visible part of its tab bar (reachable only by scrolling).
+#: Tabs outside the visible part of their tab bar or of the window (reachable only by
+#: scrolling sideways).
 _HIDDEN_TABS = """
-() => [...document.querySelectorAll('[data-baseweb="tab-list"]')].flatMap(list => {
-  const box = list.getBoundingClientRect();
-  return [...list.querySelectorAll('button[role="tab"]')]
+() => [...document.querySelectorAll('[data-testid="stTabs"]')].flatMap(tabs => {
+  const box = tabs.getBoundingClientRect();
+  return [...tabs.querySelectorAll('[role="tab"]')]
     .filter(t => { const r = t.getBoundingClientRect();
                    return r.right > box.right + 1 || r.left < box.left - 1 || r.right > innerWidth; })
     .map(t => t.textContent.trim());
@@ -129,7 +134,7 @@ def test_every_page_and_tab_is_whole_in_sight_and_free_of_raw_values(
     try:
         page = ctx.new_page()
         page.goto("/")
-        wait_for_rerun(page)
+        wait_for_rerun(page, timeout=PAGE_TIMEOUT_MS)
         problems = _walk(page, width)
         assert problems == [], "\n".join(problems)
     finally:
@@ -144,7 +149,7 @@ def test_design_verdict_and_key_numbers_above_the_fold(
     try:
         page = ctx.new_page()
         page.goto("/")
-        wait_for_rerun(page)
+        wait_for_rerun(page, timeout=PAGE_TIMEOUT_MS)
         verdict = page.get_by_test_id("stAlert").filter(
             has_text=re.compile("Meets every requirement|Requirements not met")
         )
