@@ -317,3 +317,91 @@ def _no_negative_zero(text: str) -> str:
     if text.startswith("-") and not any(ch in "123456789" for ch in text):
         return text[1:]
     return text
+
+
+#: CSV column-name suffixes (the SI unit in the key, "blow_by_m") -> unit token; two-part
+#: suffixes first ("m_s" before "s").
+_SUFFIX_UNIT = {
+    "m_s": "m/s",
+    "per_rad": "1/rad",
+    "m3": "m3",
+    "m2": "m2",
+    "m": "m",
+    "kg": "kg",
+    "N": "N",
+    "deg": "deg",
+    "pct": "%",
+    "USD": "USD",
+    "W": "W",
+    "s": "s",
+}
+#: US unit -> its CSV suffix ("ft³" -> "ft3").
+_US_SUFFIX = {"ft": "ft", "ft²": "ft2", "ft³": "ft3", "lb": "lb", "lbf": "lbf", "kt": "kt"}
+
+
+def column_unit(name: str) -> str:
+    """The SI unit of a CSV column from its name's suffix ("blow_by_m" -> "m", "wind_speed_m_s"
+    -> "m/s", "safety_factor" -> "").
+
+    >>> column_unit("blow_by_m"), column_unit("wind_speed_m_s"), column_unit("safety_factor")
+    ('m', 'm/s', '')
+    """
+    parts = str(name).split("_")
+    for n in (2, 1):
+        if len(parts) > n and "_".join(parts[-n:]) in _SUFFIX_UNIT:
+            return _SUFFIX_UNIT["_".join(parts[-n:])]
+    return ""
+
+
+def export_csv(rows: Sequence[Mapping[str, Any]], system: str = "SI") -> bytes:
+    """UTF-8 CSV of result rows for download: the SI columns as always (their names end in the
+    unit), a second row giving each column's unit, and in US customary units one more column
+    after each converted one ("blow_by_ft" after "blow_by_m"). Text cells are protected against
+    formula injection as in :func:`aerostat_core.io.rows_to_csv`.
+
+    >>> print(export_csv([{"blow_by_m": 30.48, "flags": ""}], "US").decode(), end="")
+    blow_by_m,blow_by_ft,flags
+    m,ft,
+    30.48,100.0,
+    """
+    import csv
+    import io
+
+    from aerostat_core.fields import unit_in
+    from aerostat_core.io import csv_safe
+
+    if not rows:
+        return b""
+    names = list(rows[0].keys())
+    cols: list[tuple[str, str, Any]] = []  # (name, unit, converter)
+    for n in names:
+        u = column_unit(n)
+        cols.append((n, u, None))
+        du = unit_in(_RAW.get(u, u), system) if u else None
+        if system != "SI" and du is not None and du.unit in _US_SUFFIX:
+            base = n[: -len(u.replace("/", "_"))].rstrip("_") if u != "m/s" else n[:-4]
+            cols.append((f"{base}_{_US_SUFFIX[du.unit]}", du.unit, du.show))
+    buf = io.StringIO()
+    w = csv.writer(buf, lineterminator="\n")
+    w.writerow([csv_safe(c[0]) for c in cols])
+    w.writerow([c[1] for c in cols])
+    for r in rows:
+        out = []
+        for n, _u, conv in cols:
+            if conv is None:
+                out.append(csv_safe(r.get(n, "")))
+            else:
+                v = r.get(_source(cols, n))
+                ok = isinstance(v, (int, float)) and not isinstance(v, bool)
+                out.append(round(conv(float(v)), 12) if ok else "")
+        w.writerow(out)
+    return buf.getvalue().encode("utf-8")
+
+
+_RAW = {"m³": "m3", "m²": "m2"}
+
+
+def _source(cols: list[tuple[str, str, Any]], name: str) -> str:
+    """The SI column a converted column follows."""
+    i = [c[0] for c in cols].index(name)
+    return cols[i - 1][0]

@@ -22,6 +22,7 @@ from app_ui import (
     show,
     side_view,
     state,
+    tables,
     text,
 )
 from app_ui.tables import (
@@ -117,7 +118,7 @@ def _mass_tab(rep: DesignReport) -> None:
         st.table(mass_styler(mass_frame(rep.mass_rows)))  # static: no grid bundle to load
         st.download_button(
             "Mass table (CSV)",
-            data=cache.csv_bytes(rep.mass_rows),
+            data=tables.export_csv(rep.mass_rows, formats.system()),  # SI + unit row
             file_name="mass.csv",
             mime="text/csv",
             on_click="ignore",
@@ -140,7 +141,7 @@ def _performance_tab(rep: DesignReport) -> None:
     st.caption("Rows with a red background break an operating limit (last column says which).")
     st.download_button(
         "Performance table (CSV)",
-        data=cache.csv_bytes(rep.performance_rows),
+        data=tables.export_csv(rep.performance_rows, formats.system()),  # SI + unit row
         file_name="performance.csv",
         mime="text/csv",
         on_click="ignore",

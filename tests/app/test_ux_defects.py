@@ -235,3 +235,23 @@ def test_report_requirement_has_labels_and_units_and_the_verdict_first():
     assert us_rows["Operating altitude"]["unit"] == "ft"
     assert us_rows["Operating altitude"]["value"] == pytest.approx(req.altitude / 0.3048)
     assert not any(isinstance(r["value"], float) and math.isnan(r["value"]) for r in rows)
+
+
+def test_exports_keep_si_with_a_unit_row_and_optionally_the_chosen_units():
+    import csv
+    import io
+
+    rep = design_report(design(*thesis_baseline()))
+    si = list(csv.reader(io.StringIO(tables.export_csv(rep.performance_rows, "SI").decode())))
+    assert si[0] == list(rep.performance_rows[0])  # the public SI column names, unchanged
+    units = dict(zip(si[0], si[1]))
+    assert units["blow_by_m"] == "m" and units["wind_speed_m_s"] == "m/s"
+    assert units["tension_top_N"] == "N" and units["safety_factor"] == ""
+    assert float(si[2][si[0].index("blow_by_m")]) == rep.performance_rows[0]["blow_by_m"]
+    us_ = list(csv.DictReader(io.StringIO(tables.export_csv(rep.performance_rows, "US").decode())))
+    unit_row, first = us_[0], us_[1]
+    assert unit_row["blow_by_ft"] == "ft" and unit_row["wind_speed_kt"] == "kt"
+    assert float(first["blow_by_ft"]) == pytest.approx(float(first["blow_by_m"]) / 0.3048)
+    assert float(first["tension_top_lbf"]) == pytest.approx(
+        float(first["tension_top_N"]) / 4.4482216152605
+    )
