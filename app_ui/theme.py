@@ -88,7 +88,8 @@ SIDEBAR_WIDTH = 220
 #: * tab bars wrap onto a second line instead of scrolling sideways (every tab in sight; the
 #:   sliding underline, placed for one line, is replaced by the selected tab's own);
 #: * labels and table cells break between words, never inside one ("Ope-rational");
-#: * a button's label wraps instead of ending in an ellipsis ("Load thesis b…", "Sav…").
+#: * a button's or a check box's label wraps instead of ending in an ellipsis ("Load thesis
+#:   b…", "Sav…", "Ramp and h…").
 PAGE_CSS = f"""
 <style>
 section[data-testid="stSidebar"] {{ width: {SIDEBAR_WIDTH}px !important;
@@ -99,7 +100,9 @@ section[data-testid="stSidebar"] {{ width: {SIDEBAR_WIDTH}px !important;
 [data-testid="stTabs"] [role="tab"][aria-selected="true"] {{ box-shadow: inset 0 -3px 0 {ACCENT}; }}
 [data-testid="stWidgetLabel"] p, [data-testid="stMetricLabel"] p, [data-testid="stTable"] th,
 [data-testid="stTable"] td {{ word-break: normal; overflow-wrap: normal; hyphens: manual; }}
-button [data-testid="stMarkdownContainer"] {{ overflow: visible; text-overflow: clip; }}
+button [data-testid="stMarkdownContainer"],
+[data-testid="stWidgetLabel"] [data-testid="stMarkdownContainer"] {{ overflow: visible;
+  text-overflow: clip; white-space: normal; }}
 button [data-testid="stMarkdownContainer"] p {{ white-space: normal; text-align: left; }}
 [data-testid="stMainBlockContainer"] {{ padding: 1.5rem 1.5rem 4rem 1.5rem; }}
 [data-testid="stMain"] h1 {{ font-size: 1.75rem; padding: 0 0 0.5rem 0; }}

@@ -169,8 +169,18 @@ def test_design_verdict_and_key_numbers_above_the_fold(
         ctx.close()
 
 
-def test_unit_switch_shows_the_design_in_us_customary_units(app_page: Page):
-    page = app_page
+def test_unit_switch_shows_the_design_in_us_customary_units(browser: Browser, base_url: str):
+    ctx = browser.new_context(viewport={"width": 1400, "height": 900}, base_url=base_url)
+    try:
+        page = ctx.new_page()
+        page.goto("/")
+        wait_for_rerun(page, timeout=PAGE_TIMEOUT_MS)
+        _switch_units(page)
+    finally:
+        ctx.close()
+
+
+def _switch_units(page: Page) -> None:
     metric = page.get_by_test_id("stMetric")
     expect(metric.filter(has_text="Volume [m³]").first).to_be_visible()
     page.get_by_test_id("stSidebar").get_by_role("button", name="US customary").click()
