@@ -505,6 +505,8 @@ def _text_frame(df: pd.DataFrame) -> pd.DataFrame:
     """Numbers at 4 significant digits as text, so a static table's cells can wrap."""
 
     def cell(v: Any) -> Any:
+        if isinstance(v, (bool, np.bool_)):
+            return formats.yes_no(v)  # never True/False
         if isinstance(v, (float, np.floating)):
             return f"{v:.4g}" if np.isfinite(v) else "not computed: no finite sample"
         return v

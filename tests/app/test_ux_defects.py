@@ -255,3 +255,12 @@ def test_exports_keep_si_with_a_unit_row_and_optionally_the_chosen_units():
     assert float(first["tension_top_lbf"]) == pytest.approx(
         float(first["tension_top_N"]) / 4.4482216152605
     )
+
+
+def test_rule_set_spread_flags_read_yes_no():
+    import pandas as pd
+
+    from app_ui.envelope_view import _text_frame
+
+    df = _text_frame(pd.DataFrame({"q": ["feasible", "volume"], "practice": [True, 55.2]}))
+    assert df["practice"].tolist() == ["yes", "55.2"]
