@@ -183,7 +183,7 @@ def test_unit_switch_shows_the_design_in_us_customary_units(browser: Browser, ba
 def _switch_units(page: Page) -> None:
     metric = page.get_by_test_id("stMetric")
     expect(metric.filter(has_text="Volume [m³]").first).to_be_visible()
-    page.get_by_test_id("stSidebar").get_by_role("button", name="US customary").click()
+    page.get_by_test_id("stSidebar").get_by_text("US customary", exact=True).click()
     wait_for_rerun(page)
     expect(metric.filter(has_text="Volume [ft³]").first).to_be_visible()
     expect(metric.filter(has_text="Total mass [lb]").first).to_be_visible()
@@ -192,7 +192,7 @@ def _switch_units(page: Page) -> None:
     wait_for_rerun(page)
     expect(page.get_by_test_id("stTable").first).to_contain_text("Wind [kt]")
     goto_page(page, "Compare")  # the choice holds for the whole app
-    page.get_by_test_id("stSidebar").get_by_role("button", name="SI").click()
+    page.get_by_test_id("stSidebar").get_by_text("SI", exact=True).click()
     wait_for_rerun(page)
     goto_page(page, "Design")
     expect(metric.filter(has_text="Volume [m³]").first).to_be_visible()
