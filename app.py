@@ -8,7 +8,7 @@ from pathlib import Path
 
 import streamlit as st
 
-from aerostat_core.fields import UNIT_SYSTEM_LABELS, UNIT_SYSTEMS
+from aerostat_core.base.fields import UNIT_SYSTEM_LABELS, UNIT_SYSTEMS
 from app_ui import formats, theme
 from app_ui.errors import report_unexpected
 from app_ui.state import STORE_ERR_KEY, attach_workspace

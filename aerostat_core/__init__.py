@@ -7,9 +7,9 @@ Typical use::
     d.summary().volume_m3
 """
 
-from .deprecation import deprecated_aliases
-from .design import Design, design
-from .inputs import (
+from aerostat_core.base.deprecation import deprecated_aliases
+from aerostat_core.model.design import Design, design
+from aerostat_core.model.inputs import (
     AeroModel,
     Configuration,
     ConfluenceSpec,
@@ -19,9 +19,9 @@ from .inputs import (
     Requirement,
     WindProfile,
 )
-from .materials import FABRICS, TETHERS, Fabric, TetherSpec
-from .presets import thesis_baseline, thesis_optimized
-from .sizing import SizingResult, size_volume
+from aerostat_core.model.presets import thesis_baseline, thesis_optimized
+from aerostat_core.model.sizing import SizingResult, size_volume
+from aerostat_core.structures.materials import FABRICS, TETHERS, Fabric, TetherSpec
 
 __all__ = [
     "AeroModel", "ConfluenceSpec", "Configuration", "Design", "FABRICS", "Fabric", "FinSpec",

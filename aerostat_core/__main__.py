@@ -1,7 +1,7 @@
-"""``python -m aerostat_core``: see :mod:`aerostat_core.cli`."""
+"""``python -m aerostat_core``: see :mod:`aerostat_core.cli.entry`."""
 
 import sys
 
-from .cli import main
+from aerostat_core.cli.entry import main
 
 sys.exit(main())

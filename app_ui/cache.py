@@ -33,9 +33,10 @@ from typing import Any, TypeVar
 
 import streamlit as st
 
-from aerostat_core import Configuration, Design, Requirement, budget, design
-from aerostat_core.io import cases_to_json, inputs_from_dict, rows_to_csv
-from aerostat_core.report import DesignReport, cases_csv, comparison_rows, design_report
+from aerostat_core import Configuration, Design, Requirement, design
+from aerostat_core.model import budget
+from aerostat_core.model.io import cases_to_json, inputs_from_dict, rows_to_csv
+from aerostat_core.output.report import DesignReport, cases_csv, comparison_rows, design_report
 
 #: Designs (and reports) kept for every session together.
 MAX_DESIGNS = 256
@@ -174,13 +175,13 @@ def frozen_inputs(req: Requirement, cfg: Configuration) -> tuple[Requirement, Co
 
 
 def design_of(req: Requirement, cfg: Configuration) -> Design:
-    """:func:`aerostat_core.design` of the inputs, computed once per distinct inputs."""
+    """:func:`aerostat_core.model.design` of the inputs, computed once per distinct inputs."""
     key = frozen_inputs(req, cfg)
     return memo("design", key, lambda: design(*key))
 
 
 def report_of(req: Requirement, cfg: Configuration) -> DesignReport:
-    """:func:`aerostat_core.report.design_report` of :func:`design_of` the inputs."""
+    """:func:`aerostat_core.output.report.design_report` of :func:`design_of` the inputs."""
     key = frozen_inputs(req, cfg)
     return memo("report", key, lambda: design_report(design_of(*key)))
 
@@ -235,7 +236,7 @@ def designs_of(cases: Mapping[str, Mapping[str, Any]]) -> dict[str, Design]:
 
 
 def comparison_of(cases: Mapping[str, Mapping[str, Any]]) -> list[dict]:
-    """:func:`aerostat_core.report.comparison_rows` of ``{name: inputs}``."""
+    """:func:`aerostat_core.output.report.comparison_rows` of ``{name: inputs}``."""
     keys = case_inputs(cases)
     key = tuple(keys.items())
     return memo(
@@ -264,7 +265,7 @@ def cached_cases_csv(cases_json: str) -> str:
 
 
 def csv_bytes(rows: list[dict]) -> bytes:
-    """UTF-8 CSV of flat rows (see :func:`aerostat_core.io.rows_to_csv`)."""
+    """UTF-8 CSV of flat rows (see :func:`aerostat_core.model.io.rows_to_csv`)."""
     return rows_to_csv(rows).encode("utf-8")
 
 

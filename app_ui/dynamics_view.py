@@ -32,6 +32,7 @@ import plotly.graph_objects as go
 import streamlit as st
 
 from aerostat_core import Configuration, Requirement
+from aerostat_core.base.fields import field_spec
 from aerostat_core.dynamics.linearize import linearize
 from aerostat_core.dynamics.options import SolverOptions
 from aerostat_core.dynamics.results import SIGNALS, limit_flags, response_metrics
@@ -54,9 +55,8 @@ from aerostat_core.dynamics.thesis import (
 )
 from aerostat_core.dynamics.turbulence import DRYDEN_W20
 from aerostat_core.dynamics.wind import DrydenTurbulence, Gust, MeanProfile
-from aerostat_core.fields import field_spec
-from aerostat_core.io import inputs_from_dict, inputs_to_dict
-from aerostat_core.presets import thesis_optimized_label
+from aerostat_core.model.io import inputs_from_dict, inputs_to_dict
+from aerostat_core.model.presets import thesis_optimized_label
 
 from . import cache, entry, formats
 from .theme import ACCENT, FONT, MARGIN, SECOND, THIRD
@@ -88,7 +88,7 @@ _RUN_BOXES = {
     "u_new2": ("Second new wind speed", 0.0, 30.0, "m/s"),
 }
 #: Boxes that are fields of a dynamics input dataclass: key -> (dataclass, field, the app's
-#: bounds). Label and unit come from the field registry (aerostat_core.fields); the app's bounds
+#: bounds). Label and unit come from the field registry (aerostat_core.base.fields); the app's bounds
 #: keep a browser request's compute small and lie inside the registry's range.
 _SPEC_BOXES = {
     "exponent": (MeanProfile, "exponent", 0.0, 0.6),

@@ -14,7 +14,7 @@ from typing import Any
 
 import streamlit as st
 
-from aerostat_core.fields import field_spec
+from aerostat_core.base.fields import field_spec
 
 from .widgets import format_value, parse_number
 
@@ -89,7 +89,7 @@ def _spec_label(owner: type, name: str) -> tuple[Any, str]:
 
 def spec_box(container: Any, owner: type, name: str, value: float, key: str) -> str:
     """:func:`number_box` for field ``name`` of input dataclass ``owner``: label, unit, display
-    scale and help from the field registry (aerostat_core.fields); ``value`` in SI units."""
+    scale and help from the field registry (aerostat_core.base.fields); ``value`` in SI units."""
     s, label = _spec_label(owner, name)
     return number_box(
         label, key=key, value=value * s.scale, container=container, help=s.help or None

@@ -1,8 +1,8 @@
 """UI of the Design page's Envelope tab: operating envelope heat map with the limit boundaries,
 flyable time at a site, Monte Carlo bands with the rule-set spread, and the HTML report button.
 
-Physics lives in :mod:`aerostat_core.envelope`, :mod:`aerostat_core.site_wind`,
-:mod:`aerostat_core.uncertainty` and :mod:`aerostat_core.html_report`; this module caches their
+Physics lives in :mod:`aerostat_core.studies.envelope`, :mod:`aerostat_core.studies.site_wind`,
+:mod:`aerostat_core.studies.uncertainty` and :mod:`aerostat_core.output.html_report`; this module caches their
 results (:func:`app_ui.cache.memo`, keyed by the frozen inputs, the site as frozen values and the
 sample size and seed, one :class:`~typing.NamedTuple` per study (:class:`FlyableKey` ...), so every
 compute reads its key by field name; shared by every session, read-only) and draws them.
@@ -20,12 +20,12 @@ import plotly.graph_objects as go
 import streamlit as st
 
 from aerostat_core import Configuration, Requirement
-from aerostat_core.constraints import BY_NAME
-from aerostat_core.envelope import ENVELOPE_NAMES, Envelope, operating_envelope
-from aerostat_core.html_report import build_report
-from aerostat_core.report import DesignReport
-from aerostat_core.site_wind import MAX_CSV_BYTES, WeibullSite, flyable_time, read_wind_csv
-from aerostat_core.uncertainty import monte_carlo, rule_set_spread
+from aerostat_core.model.constraints import BY_NAME
+from aerostat_core.output.html_report import build_report
+from aerostat_core.output.report import DesignReport
+from aerostat_core.studies.envelope import ENVELOPE_NAMES, Envelope, operating_envelope
+from aerostat_core.studies.site_wind import MAX_CSV_BYTES, WeibullSite, flyable_time, read_wind_csv
+from aerostat_core.studies.uncertainty import monte_carlo, rule_set_spread
 
 from . import cache, entry, formats, show
 from .plots import WIND_AXIS

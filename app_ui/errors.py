@@ -9,7 +9,7 @@ import secrets
 
 import streamlit as st
 
-from aerostat_core.validation import short
+from aerostat_core.base.validation import short
 
 log = logging.getLogger("aerostat.app")
 

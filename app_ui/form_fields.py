@@ -1,6 +1,6 @@
 """The design form's field table: which widget key shows which input path, in which group
 and order. Label, unit, display scale, step, format and help of each widget come from the core's
-field registry (:mod:`aerostat_core.fields`); nothing about an input is typed here. No Streamlit
+field registry (:mod:`aerostat_core.base.fields`); nothing about an input is typed here. No Streamlit
 import. Conversions and errors: :mod:`app_ui.form_model`."""
 
 from __future__ import annotations
@@ -9,9 +9,9 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from functools import cached_property
 
-from aerostat_core.fields import PathSpec, spec_for_path
-from aerostat_core.rules import RULE_SETS
-from aerostat_core.shapes import SHAPE_INFO
+from aerostat_core.geometry.shapes import SHAPE_INFO
+from aerostat_core.model.input_paths import PathSpec, spec_for_path
+from aerostat_core.model.rules import RULE_SETS
 
 from .text import short
 

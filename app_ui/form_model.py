@@ -2,14 +2,14 @@
 the engine's errors in the form's words. No Streamlit import (rendering: :mod:`app_ui.form`).
 
 Every fact about an input (label, unit, display scale, step, format, help, valid range) comes
-from the core's field registry (:mod:`aerostat_core.fields`); :mod:`app_ui.form_fields` only
+from the core's field registry (:mod:`aerostat_core.base.fields`); :mod:`app_ui.form_fields` only
 says which widget key shows which input path, and where (re-exported here).
 
 * :data:`FIELDS` - every numeric widget (key, path, group; the rest from the registry);
 * :func:`widget_values` - inputs dict -> widget values (display units);
 * :func:`build_inputs` - widget values + the current inputs -> (Requirement, Configuration), or
   :class:`InputError` naming the widget and group the problem belongs to;
-* :func:`form_error` - an engine :class:`aerostat_core.validation.InputError` in the form's
+* :func:`form_error` - an engine :class:`aerostat_core.base.validation.InputError` in the form's
   words, placed by its ``owner`` and ``field`` (no message parsing).
 
 Inputs the form does not show (e.g. the tether's axial stiffness) are carried over unchanged from
@@ -25,10 +25,11 @@ from collections.abc import Mapping, MutableMapping
 from dataclasses import fields
 from typing import Any
 
-from aerostat_core import FABRICS, TETHERS, Configuration, Requirement, budget
-from aerostat_core import validation as _validation
-from aerostat_core.fields import paths_for
-from aerostat_core.io import inputs_from_dict
+from aerostat_core import FABRICS, TETHERS, Configuration, Requirement
+from aerostat_core.base import validation as _validation
+from aerostat_core.model import budget
+from aerostat_core.model.input_paths import paths_for
+from aerostat_core.model.io import inputs_from_dict
 
 from .form_fields import (  # noqa: F401 - re-exported: the form model's vocabulary
     CHOICES,
@@ -104,7 +105,7 @@ def _range_words(lo: float, hi: float, lo_open: bool, hi_open: bool) -> str:
 
 
 def form_error(exc: _validation.InputError, values: Mapping[str, Any] | None = None) -> InputError:
-    """An engine :class:`aerostat_core.validation.InputError` in the form's words: its label and
+    """An engine :class:`aerostat_core.base.validation.InputError` in the form's words: its label and
     display unit (e.g. % of hull length for the fin position), the value as typed, the range.
     The widget is found by the error's ``owner`` and ``field``; ``values`` (the widget values)
     tell the hull fabric from the fin fabric.

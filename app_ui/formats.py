@@ -8,7 +8,7 @@ mass of 89.1 kg is never 89.14 kg elsewhere. Pure (no Streamlit, no plotly).
 Unit system: values are SI everywhere in the program; :func:`use_system` (called once per script
 run by ``app.py`` from the sidebar's choice) makes :func:`text`, :func:`formatter`,
 :func:`unit_of` and :func:`label` show them in SI or US customary units, from the field
-registry's display units (:data:`aerostat_core.fields.US_CUSTOMARY`). The choice is a context
+registry's display units (:data:`aerostat_core.base.fields.US_CUSTOMARY`). The choice is a context
 variable: every session's script thread has its own.
 
 Missing values say why in words (:func:`missing`), never "nan", "None" or a bare dash.
@@ -21,7 +21,7 @@ import math
 from dataclasses import dataclass
 from typing import Any
 
-from aerostat_core.fields import UNIT_SYSTEMS, DisplayUnit, unit_in
+from aerostat_core.base.fields import UNIT_SYSTEMS, DisplayUnit, unit_in
 
 
 @dataclass(frozen=True)

@@ -1,6 +1,6 @@
 """UI of the Design page's Mission tab: payload power, endurance, ballonet, envelope, survival
 wind and winch (issue 13). No physics here: every number comes from
-:class:`aerostat_core.mission.MissionReport` (``Design.mission``); this module lays them out and
+:class:`aerostat_core.model.mission_report.MissionReport` (``Design.mission``); this module lays them out and
 edits the mission inputs through :func:`app_ui.state.set_current_inputs`."""
 
 from __future__ import annotations
@@ -12,9 +12,9 @@ import pandas as pd
 import streamlit as st
 
 from aerostat_core import Requirement
-from aerostat_core.fields import spec_for_path
-from aerostat_core.mission import MissionSpec
-from aerostat_core.validation import InputError
+from aerostat_core.base.validation import InputError
+from aerostat_core.model.input_paths import spec_for_path
+from aerostat_core.model.mission import MissionSpec
 
 from . import cache, entry, formats, show, state
 from .text import plain

@@ -16,8 +16,9 @@ from typing import Any
 import numpy as np
 import streamlit as st
 
-from aerostat_core import Configuration, Requirement, budget, fields, thesis_baseline
-from aerostat_core.io import inputs_to_dict
+from aerostat_core import Configuration, Requirement, thesis_baseline
+from aerostat_core.model import budget, input_paths
+from aerostat_core.model.io import inputs_to_dict
 from aerostat_core.optimize import (
     DEFAULT_BOUNDS,
     SETTINGS,
@@ -44,7 +45,7 @@ SENS_RESOLUTION = {"Quick": (7, 10), "Normal": (15, 20)}
 DISPLAY: dict[str, tuple[float, str, str]] = {
     name: (scale, label, u)
     for name in VARIABLES
-    for label, u, scale in [fields.variable_info(name)]
+    for label, u, scale in [input_paths.variable_info(name)]
     if scale != 1.0
 }
 

@@ -38,7 +38,7 @@ from aerostat_core.optimize import (
     solve,
     thesis_comparison_rows,
 )
-from aerostat_core.sensitivity import (
+from aerostat_core.studies.sensitivity import (
     SensitivityMap,
     SensitivityResult,
     one_at_a_time,
@@ -128,7 +128,7 @@ def cached_sensitivity(
     n_points: int,
     resize: bool,
 ) -> SensitivityResult:
-    """:func:`aerostat_core.sensitivity.one_at_a_time` of the inputs (raises ValueError)."""
+    """:func:`aerostat_core.studies.sensitivity.one_at_a_time` of the inputs (raises ValueError)."""
     req_k, cfg_k = cache.frozen_inputs(req, cfg)
     key = SensitivityKey(
         requirement=req_k,
@@ -160,7 +160,7 @@ def cached_map(
     n: int,
     resize: bool,
 ) -> SensitivityMap:
-    """:func:`aerostat_core.sensitivity.two_variable_map` of the inputs (raises ValueError)."""
+    """:func:`aerostat_core.studies.sensitivity.two_variable_map` of the inputs (raises ValueError)."""
     req_k, cfg_k = cache.frozen_inputs(req, cfg)
     key = MapKey(
         requirement=req_k,

@@ -12,7 +12,7 @@ import streamlit as st
 from pandas.io.formats.style import Styler
 
 from aerostat_core.optimize import OptimizationResult, ParetoFront, comparison_rows
-from aerostat_core.sensitivity import SensitivityResult
+from aerostat_core.studies.sensitivity import SensitivityResult
 
 from . import formats
 from .cache import csv_bytes
@@ -211,7 +211,7 @@ def summary_frame(res: SensitivityResult) -> pd.DataFrame:
 
 
 def csv_of(rows: list[dict]) -> bytes:
-    """CSV bytes of flat rows (pure: :func:`aerostat_core.io.rows_to_csv`)."""
+    """CSV bytes of flat rows (pure: :func:`aerostat_core.model.io.rows_to_csv`)."""
     return csv_bytes(rows)
 
 

@@ -4,7 +4,7 @@ for the pages.
 The rooms: :mod:`app_ui.optimize_form` (bound boxes, request), :mod:`app_ui.optimize_jobs`
 (cached engine calls, the chunked and cancellable run), :mod:`app_ui.optimize_tables` and
 :mod:`app_ui.plots_optimize` (what is shown). Everything physical comes from
-:mod:`aerostat_core.optimize` and :mod:`aerostat_core.sensitivity`.
+:mod:`aerostat_core.optimize` and :mod:`aerostat_core.studies.sensitivity`.
 """
 
 from __future__ import annotations
@@ -16,6 +16,7 @@ import numpy as np
 import streamlit as st
 
 from aerostat_core import Configuration, Requirement
+from aerostat_core.model.presets import THESIS_BLOW_BY_LIMIT
 from aerostat_core.optimize import (
     CONSTRAINT_TEXT,
     DEFAULT_BOUNDS,
@@ -26,7 +27,6 @@ from aerostat_core.optimize import (
     comparison_rows,
     history_rows,
 )
-from aerostat_core.presets import THESIS_BLOW_BY_LIMIT
 
 from . import formats
 from .optimize_form import (

@@ -1,5 +1,5 @@
 """Plot and table builders: pure functions from the typed report
-(:class:`~aerostat_core.report.DesignReport` of :func:`aerostat_core.report.design_report`) to plotly figures and display-ready pandas frames (no
+(:class:`~aerostat_core.output.report.DesignReport` of :func:`aerostat_core.output.report.design_report`) to plotly figures and display-ready pandas frames (no
 Streamlit; tested directly).
 
 Conventions: SI units in every axis title; operating-limit rows marked with red crosses (trace
@@ -20,7 +20,7 @@ from typing import Any
 import numpy as np
 import plotly.graph_objects as go
 
-from aerostat_core.report import (
+from aerostat_core.output.report import (
     DesignReport,
     TetherProfiles,
     hull_outline,

@@ -20,7 +20,7 @@ from aerostat_core.optimize import (
     OptimizationResult,
     ParetoFront,
 )
-from aerostat_core.sensitivity import OUTPUTS, SensitivityMap, SensitivityResult
+from aerostat_core.studies.sensitivity import OUTPUTS, SensitivityMap, SensitivityResult
 
 from . import formats
 from .optimize_form import shown, unit, var_label

@@ -1,7 +1,7 @@
 """Shapes page and shape widgets: cached engine calls, frames and figures (no physics here).
 
-Everything numeric comes from :mod:`aerostat_core.shapes`, :mod:`aerostat_core.shape_comparison`,
-:mod:`aerostat_core.shape_optimize` and :mod:`aerostat_core.export`; this module only caches
+Everything numeric comes from :mod:`aerostat_core.geometry.shapes`, :mod:`aerostat_core.studies.shape_comparison`,
+:mod:`aerostat_core.studies.shape_optimize` and :mod:`aerostat_core.output.export`; this module only caches
 (:func:`app_ui.cache.memo`, keyed by the frozen inputs and the study's parameters, one
 :class:`~typing.NamedTuple` per study (:class:`ShapeStudyKey` ...), so every compute reads its key
 by field name; shared by every session, read-only), tabulates and plots.
@@ -18,9 +18,10 @@ import plotly.graph_objects as go
 import streamlit as st
 
 from aerostat_core import Configuration, Requirement
-from aerostat_core.export import design_stl, gore_csv, gore_dxf, gore_pattern, gore_svg
-from aerostat_core.fields import column_label
-from aerostat_core.shape_comparison import (
+from aerostat_core.geometry.shapes import SHAPE_INFO, profile_radius_ratio
+from aerostat_core.model.input_paths import column_label
+from aerostat_core.output.export import design_stl, gore_csv, gore_dxf, gore_pattern, gore_svg
+from aerostat_core.studies.shape_comparison import (
     TABLE_SHAPES,
     THESIS_SHAPE_PRESET,  # noqa: F401 - re-exported for pages/7_Shapes.py
     comparison_notes,
@@ -30,8 +31,7 @@ from aerostat_core.shape_comparison import (
     thesis_reference_rows,
     thesis_shape_comparison,
 )
-from aerostat_core.shape_optimize import fineness_sweeps, optimize_shapes
-from aerostat_core.shapes import SHAPE_INFO, profile_radius_ratio
+from aerostat_core.studies.shape_optimize import fineness_sweeps, optimize_shapes
 
 from . import cache, entry, formats
 from .theme import PALETTE, base_layout
@@ -98,13 +98,13 @@ def cached_comparisons() -> dict[str, Any]:
 
 
 def cached_library(volume: float = 100.0) -> list[dict]:
-    """:func:`aerostat_core.shape_comparison.shape_dimensions_rows` at ``volume`` [m3]."""
+    """:func:`aerostat_core.studies.shape_comparison.shape_dimensions_rows` at ``volume`` [m3]."""
     key = LibraryKey(volume=float(volume))
     return cache.memo("shape_library", key, lambda: shape_dimensions_rows(key.volume), 4)
 
 
 def cached_shape_study(inputs_json: str, objective: str) -> list[dict]:
-    """Rows of :func:`aerostat_core.shape_optimize.optimize_shapes` (SLSQP, quick) for the
+    """Rows of :func:`aerostat_core.studies.shape_optimize.optimize_shapes` (SLSQP, quick) for the
     inputs."""
     req_k, cfg_k = cache.inputs_of(inputs_json)
     key = ShapeStudyKey(requirement=req_k, configuration=cfg_k, objective=str(objective))
@@ -117,7 +117,7 @@ def cached_shape_study(inputs_json: str, objective: str) -> list[dict]:
 
 
 def cached_sweeps(inputs_json: str, n_points: int = 15) -> dict[str, dict[str, list]]:
-    """:func:`aerostat_core.shape_optimize.fineness_sweeps` as plain lists."""
+    """:func:`aerostat_core.studies.shape_optimize.fineness_sweeps` as plain lists."""
     req_k, cfg_k = cache.inputs_of(inputs_json)
     key = SweepsKey(requirement=req_k, configuration=cfg_k, n_points=int(n_points))
 

@@ -16,7 +16,7 @@ from html import escape
 
 import numpy as np
 
-from aerostat_core.report import DesignReport, hull_outline
+from aerostat_core.output.report import DesignReport, hull_outline
 
 from . import formats
 from .theme import ACCENT, FONT, LIMIT_COLOUR, NEUTRAL, THIRD

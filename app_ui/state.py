@@ -3,7 +3,7 @@
 Contract (other pages rely on it):
 
 * ``st.session_state["design_inputs"]``: the current inputs as an
-  :func:`aerostat_core.io.inputs_to_dict` dict (the practice default until the user changes it);
+  :func:`aerostat_core.model.io.inputs_to_dict` dict (the practice default until the user changes it);
 * ``st.session_state["cases"]``: ``{name: inputs dict}``, in the order they were saved.
 
 Every function takes an optional ``state`` mapping (default ``st.session_state``) so that it can be
@@ -26,7 +26,8 @@ from typing import Any
 import streamlit as st
 
 from aerostat_core import Configuration, Requirement
-from aerostat_core.io import (
+from aerostat_core.base.validation import InputError, check_name, short
+from aerostat_core.model.io import (
     MAX_CASES,
     MAX_JSON_BYTES,
     cases_from_json,
@@ -34,8 +35,7 @@ from aerostat_core.io import (
     inputs_from_dict,
     inputs_to_dict,
 )
-from aerostat_core.presets import practice_configuration
-from aerostat_core.validation import InputError, check_name, short
+from aerostat_core.model.presets import practice_configuration
 
 from . import store as _store
 
@@ -179,7 +179,7 @@ def get_cases(state: MutableMapping[str, Any] | None = None) -> dict[str, dict[s
 def check_case_name(name: Any) -> str:
     """Return the stripped name or raise ``ValueError`` saying what is wrong with it (empty,
     too long, control characters or lone surrogates: see
-    :func:`aerostat_core.validation.check_name`)."""
+    :func:`aerostat_core.base.validation.check_name`)."""
     if not isinstance(name, str) or not name.strip():
         raise ValueError("Give the case a name.")
     try:

@@ -1,5 +1,5 @@
 """Display tables of the Design and Compare pages: pure functions from the plain rows of
-:func:`aerostat_core.report.design_report` to pandas frames and stylers (no Streamlit; tested
+:func:`aerostat_core.output.report.design_report` to pandas frames and stylers (no Streamlit; tested
 directly). Units sit in every column name; decimals come from :mod:`app_ui.formats`.
 
 The performance sweep has 15 columns, too many for one table at 1024 px (the result column is
@@ -17,7 +17,7 @@ import numpy as np
 import pandas as pd
 from pandas.io.formats.style import Styler
 
-from aerostat_core.report import SUMMARY_FIELDS
+from aerostat_core.output.report import SUMMARY_FIELDS
 
 from . import formats
 
@@ -245,7 +245,7 @@ def comparison_frame(
     rows: Sequence[Mapping[str, Any]], names: Sequence[str], only_differences: bool = False
 ) -> pd.DataFrame:
     """Side-by-side table (one column per case, values as text) from
-    :func:`aerostat_core.report.comparison_rows`; ``Differs`` says where the cases disagree."""
+    :func:`aerostat_core.output.report.comparison_rows`; ``Differs`` says where the cases disagree."""
     keep = [r for r in rows if r["differs"] or not only_differences]
     data: dict[str, list] = {
         "Section": [r["section"] for r in keep],
@@ -357,7 +357,7 @@ def export_csv(rows: Sequence[Mapping[str, Any]], system: str = "SI") -> bytes:
     """UTF-8 CSV of result rows for download: the SI columns as always (their names end in the
     unit), a second row giving each column's unit, and in US customary units one more column
     after each converted one ("blow_by_ft" after "blow_by_m"). Text cells are protected against
-    formula injection as in :func:`aerostat_core.io.rows_to_csv`.
+    formula injection as in :func:`aerostat_core.model.io.rows_to_csv`.
 
     >>> print(export_csv([{"blow_by_m": 30.48, "flags": ""}], "US").decode(), end="")
     blow_by_m,blow_by_ft,flags
@@ -367,8 +367,8 @@ def export_csv(rows: Sequence[Mapping[str, Any]], system: str = "SI") -> bytes:
     import csv
     import io
 
-    from aerostat_core.fields import unit_in
-    from aerostat_core.io import csv_safe
+    from aerostat_core.base.fields import unit_in
+    from aerostat_core.model.io import csv_safe
 
     if not rows:
         return b""

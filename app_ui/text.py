@@ -6,7 +6,7 @@ from __future__ import annotations
 import re
 from typing import Any
 
-from aerostat_core.validation import short
+from aerostat_core.base.validation import short
 
 __all__ = [
     "clean",
@@ -89,7 +89,7 @@ def speed_ranges(speeds: Any, step: float | None = None) -> str:
 
 
 def constraint_table_rows(rows: list[dict]) -> list[dict]:
-    """Display rows of the constraint table (aerostat_core.constraints via the design report):
+    """Display rows of the constraint table (aerostat_core.model.constraints via the design report):
     label, where checked, value, limit and margin with the unit (4 significant digits; an
     unbounded margin shows as a dash), and met."""
 

@@ -188,7 +188,7 @@ def bench_3d_cost(browser: Any) -> dict[str, Any]:
 
     sys.path.insert(0, str(ROOT))
     from aerostat_core import design, thesis_baseline
-    from aerostat_core.report import design_report
+    from aerostat_core.output.report import design_report
     from app_ui import plots
 
     fig = plots.hull_3d_figure(design_report(design(*thesis_baseline())))
@@ -350,7 +350,7 @@ def bench_progress() -> None:
     sys.path.insert(0, str(ROOT))
     try:
         from aerostat_core import thesis_baseline
-        from aerostat_core.io import inputs_to_dict
+        from aerostat_core.model.io import inputs_to_dict
         from aerostat_core.optimize import DEFAULT_BOUNDS, OptimizationProblem, solve
     except ImportError as exc:
         print(f"optimisation progress: skipped ({exc})")

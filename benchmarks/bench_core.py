@@ -20,11 +20,11 @@ os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 import numpy as np  # noqa: E402
 
 from aerostat_core import design, size_volume, thesis_baseline  # noqa: E402
-from aerostat_core.airframe import build_airframe  # noqa: E402
-from aerostat_core.constraints import constraint_state  # noqa: E402
-from aerostat_core.inputs import Requirement, WindProfile  # noqa: E402
-from aerostat_core.performance import evaluate  # noqa: E402
-from aerostat_core.presets import rules_configuration  # noqa: E402
+from aerostat_core.model.airframe import build_airframe  # noqa: E402
+from aerostat_core.model.constraints import constraint_state  # noqa: E402
+from aerostat_core.model.inputs import Requirement, WindProfile  # noqa: E402
+from aerostat_core.model.performance import evaluate  # noqa: E402
+from aerostat_core.model.presets import rules_configuration  # noqa: E402
 
 
 def median_time(fn, repeats: int) -> float:
@@ -51,7 +51,7 @@ def median_cpu(fn, repeats: int) -> float:
 def marches(fn) -> int:
     """Number of tether marches ``fn()`` runs (each is ~50 steps of ~25 numpy calls: the cost
     of a sheared-wind height pass)."""
-    from aerostat_core import tether
+    from aerostat_core.tether import statics as tether
 
     plain, count = tether.march, [0]
 
@@ -70,7 +70,7 @@ def marches(fn) -> int:
 def kernel_calls_per_trim(fn) -> float:
     """Moment-kernel evaluations (grid products and calls) per trim while ``fn()`` runs, the
     weathervane slopes excluded (a figure the shared machine's load cannot move)."""
-    from aerostat_core import performance, statics
+    from aerostat_core.model import performance, statics
 
     counts = {"trims": 0, "calls": 0}
     plain_trim, plain_call, plain_grid = (

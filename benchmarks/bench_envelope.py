@@ -21,10 +21,10 @@ os.environ.setdefault("OMP_NUM_THREADS", "1")
 import numpy as np  # noqa: E402
 
 from aerostat_core import Requirement, design  # noqa: E402
-from aerostat_core.envelope import operating_envelope  # noqa: E402
-from aerostat_core.html_report import build_report  # noqa: E402
-from aerostat_core.site_wind import flyable_time  # noqa: E402
-from aerostat_core.uncertainty import monte_carlo  # noqa: E402
+from aerostat_core.output.html_report import build_report  # noqa: E402
+from aerostat_core.studies.envelope import operating_envelope  # noqa: E402
+from aerostat_core.studies.site_wind import flyable_time  # noqa: E402
+from aerostat_core.studies.uncertainty import monte_carlo  # noqa: E402
 
 
 def median_time(fn, repeats: int) -> tuple[float, float, object]:
@@ -78,7 +78,7 @@ def main() -> None:
         f"median {w:.3f} s wall, {c:.3f} s CPU"
     )
     if a.dask:
-        from aerostat_core.scale import close_client, dask_client
+        from aerostat_core.studies.scale import close_client, dask_client
 
         client = dask_client("local")
         try:

@@ -8,11 +8,11 @@ Every engine entry point below is wrapped with a counter in every loaded module 
 empty caches: "cold" is the first run of the page (nothing cached), "warm" a plain rerun after it
 (everything the page needs is cached, so it should evaluate nothing). Counted:
 
-- ``design``: :func:`aerostat_core.design.design` (one sized or given design with its sweep);
-- ``size_volume``: :func:`aerostat_core.sizing.size_volume` (a batch of sizings);
-- ``constraint_state``: :func:`aerostat_core.constraints.constraint_state` (the table at two
+- ``design``: :func:`aerostat_core.model.design.design` (one sized or given design with its sweep);
+- ``size_volume``: :func:`aerostat_core.model.sizing.size_volume` (a batch of sizings);
+- ``constraint_state``: :func:`aerostat_core.model.constraints.constraint_state` (the table at two
   winds for a batch);
-- ``evaluate``: :func:`aerostat_core.performance.evaluate` (one vectorised trim + tether solve
+- ``evaluate``: :func:`aerostat_core.model.performance.evaluate` (one vectorised trim + tether solve
   of a batch: the evaluation every other entry point ends in);
 - ``evaluate_designs``: the optimiser's batch evaluator.
 
@@ -38,10 +38,10 @@ APP = ROOT / "app.py"
 
 #: (module, function) of the counted entry points.
 TARGETS = (
-    ("aerostat_core.design", "design"),
-    ("aerostat_core.sizing", "size_volume"),
-    ("aerostat_core.constraints", "constraint_state"),
-    ("aerostat_core.performance", "evaluate"),
+    ("aerostat_core.model.design", "design"),
+    ("aerostat_core.model.sizing", "size_volume"),
+    ("aerostat_core.model.constraints", "constraint_state"),
+    ("aerostat_core.model.performance", "evaluate"),
     ("aerostat_core.optimize", "evaluate_designs"),
 )
 COUNTS: Counter = Counter()

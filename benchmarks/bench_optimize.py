@@ -25,7 +25,7 @@ from aerostat_core.optimize import (  # noqa: E402
     pareto_front,
     solve,
 )
-from aerostat_core.sensitivity import one_at_a_time, two_variable_map  # noqa: E402
+from aerostat_core.studies.sensitivity import one_at_a_time, two_variable_map  # noqa: E402
 
 
 def median_time(fn, repeats: int) -> tuple[float, object]:

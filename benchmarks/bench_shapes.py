@@ -22,13 +22,13 @@ os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 import numpy as np  # noqa: E402
 
 from aerostat_core import HullSpec, Requirement, design, thesis_baseline  # noqa: E402
-from aerostat_core.airframe import build_airframe  # noqa: E402
-from aerostat_core.constraints import constraint_state  # noqa: E402
-from aerostat_core.export import design_stl, gore_pattern  # noqa: E402
-from aerostat_core.performance import evaluate  # noqa: E402
-from aerostat_core.presets import practice_configuration  # noqa: E402
-from aerostat_core.shape_comparison import thesis_shape_comparison  # noqa: E402
-from aerostat_core.shapes import SHAPE_INFO  # noqa: E402
+from aerostat_core.geometry.shapes import SHAPE_INFO  # noqa: E402
+from aerostat_core.model.airframe import build_airframe  # noqa: E402
+from aerostat_core.model.constraints import constraint_state  # noqa: E402
+from aerostat_core.model.performance import evaluate  # noqa: E402
+from aerostat_core.model.presets import practice_configuration  # noqa: E402
+from aerostat_core.output.export import design_stl, gore_pattern  # noqa: E402
+from aerostat_core.studies.shape_comparison import thesis_shape_comparison  # noqa: E402
 from benchmarks.bench_core import median_cpu, median_time  # noqa: E402
 
 

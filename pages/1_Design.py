@@ -7,8 +7,8 @@ import pandas as pd
 import streamlit as st
 
 from aerostat_core import thesis_baseline
-from aerostat_core.io import design_to_json
-from aerostat_core.report import DesignReport, tether_profile_rows
+from aerostat_core.model.io import design_to_json
+from aerostat_core.output.report import DesignReport, tether_profile_rows
 from app_ui import (
     cache,
     envelope_view,

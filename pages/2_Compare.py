@@ -5,10 +5,10 @@ from __future__ import annotations
 
 import streamlit as st
 
-from aerostat_core import budget
-from aerostat_core.io import inputs_from_dict
-from aerostat_core.report import thesis_gui_cases
-from aerostat_core.validation import short
+from aerostat_core.base.validation import short
+from aerostat_core.model import budget
+from aerostat_core.model.io import inputs_from_dict
+from aerostat_core.output.report import thesis_gui_cases
 from app_ui import cache, plots, show, state, text
 
 st.title("Compare saved cases")

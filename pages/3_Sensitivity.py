@@ -5,8 +5,8 @@ from __future__ import annotations
 
 import streamlit as st
 
+from aerostat_core.base.validation import short
 from aerostat_core.optimize import VARIABLE_INFO, VARIABLES
-from aerostat_core.validation import short
 from app_ui import optimize_view as view
 from app_ui import shapes_view, widgets
 

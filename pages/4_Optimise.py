@@ -6,8 +6,8 @@ from __future__ import annotations
 import pandas as pd
 import streamlit as st
 
+from aerostat_core.base.validation import short
 from aerostat_core.optimize import OBJECTIVES, SOLVERS
-from aerostat_core.validation import short
 from app_ui import entry, widgets
 from app_ui import optimize_view as view
 

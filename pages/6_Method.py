@@ -1,5 +1,5 @@
 """Method page: the equations, assumptions and sources of the engine, which numbers are
-calibrated and which predicted, and the live validation table (aerostat_core.reference)."""
+calibrated and which predicted, and the live validation table (aerostat_core.studies.reference)."""
 
 from __future__ import annotations
 
@@ -8,8 +8,8 @@ from pathlib import Path
 import pandas as pd
 import streamlit as st
 
-from aerostat_core.io import rows_to_csv
-from aerostat_core.validation import short
+from aerostat_core.base.validation import short
+from aerostat_core.model.io import rows_to_csv
 from app_ui import show, text
 
 st.title("Method")
@@ -35,7 +35,7 @@ with st.expander("Design documents (docs/): method, dynamics, validation, archit
 @st.cache_data(show_spinner="Running the reference checks...")
 def _reference_rows() -> list[dict] | None:
     try:
-        from aerostat_core.reference import reference_checks
+        from aerostat_core.studies.reference import reference_checks
     except ImportError:
         return None
     return reference_checks()
@@ -43,7 +43,7 @@ def _reference_rows() -> list[dict] | None:
 
 @st.cache_data(show_spinner="Sizing the fielded aerostats...")
 def _fielded_rows() -> list[dict]:
-    from aerostat_core.fielded import validate_fielded
+    from aerostat_core.studies.fielded import validate_fielded
 
     v = validate_fielded()
     return [v.median_abs_length_error, v.max_abs_length_error, v.table()]
@@ -304,7 +304,7 @@ with tab_val:
         st.error(text.plain(short(f"The reference checks could not be run: {exc}")))
     if ref is None:
         st.info(
-            "The live validation table needs `aerostat_core.reference`, which is not "
+            "The live validation table needs `aerostat_core.studies.reference`, which is not "
             "installed in this version of the engine.",
             icon=":material/info:",
         )

@@ -156,13 +156,13 @@ PAGE_THIRD_PARTY = {"streamlit", "pandas"}
 #: The library modules a page may import (docs/architecture.md §2.3).
 PAGE_FACES = (
     "aerostat_core",
-    "aerostat_core.io",
-    "aerostat_core.report",
-    "aerostat_core.reference",
+    "aerostat_core.model.io",
+    "aerostat_core.output.report",
+    "aerostat_core.studies.reference",
     "aerostat_core.optimize",
-    "aerostat_core.budget",
-    "aerostat_core.validation",
-    "aerostat_core.fielded",
+    "aerostat_core.model.budget",
+    "aerostat_core.base.validation",
+    "aerostat_core.studies.fielded",
 )
 
 
@@ -232,21 +232,67 @@ def test_core_imports_only_the_standard_library_and_its_numeric_stack() -> None:
     assert not bad, "aerostat_core must not import UI or other packages:\n" + "\n".join(bad)
 
 
+#: The packages of aerostat_core, bottom-up (docs/architecture.md §1): a module may import its own
+#: package and the packages below it, never one above. Function-level imports count too: an
+#: import hidden in a function body is still a dependency.
+LADDER = (
+    "base", "atmosphere", "geometry", "aerodynamics", "structures", "tether", "model",
+    "optimize", "dynamics", "studies", "output", "cli",
+)
+#: The faces at the top of the library: they may import every package.
+FACES = ("aerostat_core", "aerostat_core.__main__")
+
+
+def _package_of(module: str) -> str | None:
+    parts = module.split(".")
+    return parts[1] if len(parts) > 1 and parts[0] == "aerostat_core" and parts[1] in LADDER else None
+
+
+def _core_modules() -> dict[str, Path]:
+    return {_module_name(f): f for f in _python_files("aerostat_core")}
+
+
+def test_every_core_module_lives_in_a_package_of_the_ladder() -> None:
+    loose = sorted(m for m in _core_modules() if m not in FACES and _package_of(m) is None)
+    assert not loose, "modules outside the packages of docs/architecture.md §1: " + ", ".join(loose)
+
+
+def test_no_package_imports_a_package_above_it() -> None:
+    bad = []
+    for me, f in _core_modules().items():
+        mine = _package_of(me)
+        if mine is None:
+            continue
+        for name in _imports(f):
+            if _top(name) != "aerostat_core":
+                continue
+            theirs = _package_of(name)
+            if theirs is None:
+                bad.append(f"{f.relative_to(ROOT)} imports the top-level face {name}")
+            elif LADDER.index(theirs) > LADDER.index(mine):
+                bad.append(f"{f.relative_to(ROOT)} ({mine}) imports {name} ({theirs}, above)")
+    assert not bad, "upward imports (docs/architecture.md §1):\n" + "\n".join(sorted(bad))
+
+
 def test_static_engine_never_imports_the_dynamics() -> None:
     static = [
-        f for f in _python_files("aerostat_core")
-        if "dynamics" not in f.relative_to(ROOT).parts and f.name != "cli.py"  # the CLI front end
+        f for m, f in _core_modules().items()
+        if _package_of(m) in LADDER[: LADDER.index("dynamics")]
     ]
     bad = _violations(static, lambda n: not n.startswith("aerostat_core.dynamics"))
     assert not bad, "\n".join(bad)
 
 
-def test_no_import_cycles_in_the_core() -> None:
+@pytest.mark.parametrize("module_level_only", [True, False], ids=["module-level", "all-imports"])
+def test_no_import_cycles_in_the_core(module_level_only: bool) -> None:
+    """No circle of imports between core modules, counting imports inside functions as well
+    (a function-level import that dodges an import-time cycle still makes a circle)."""
     graph: dict[str, set[str]] = defaultdict(set)
     for f in _python_files("aerostat_core"):
         me = _module_name(f)
-        graph[me] = {n for n in _imports(f, module_level_only=True) if _is_module(n)}
-        graph[me] = {n for n in graph[me] if n.startswith("aerostat_core") and n != me}
+        deps = {n for n in _imports(f, module_level_only=module_level_only) if _is_module(n)}
+        # a package's __init__ that only documents the package is no edge back to its modules
+        graph[me] = {n for n in deps if n.startswith("aerostat_core") and n != me}
     state: dict[str, int] = {}
     cycle: list[str] = []
 
@@ -264,7 +310,19 @@ def test_no_import_cycles_in_the_core() -> None:
     for node in sorted(graph):
         if node not in state and visit(node, []):
             break
-    assert not cycle, "module-level import cycle: " + " -> ".join(cycle)
+    assert not cycle, "import cycle: " + " -> ".join(cycle)
+
+
+def test_architecture_names_every_module() -> None:
+    """docs/architecture.md §1 is the map: every module of aerostat_core is named there by its
+    path (``model/sizing.py``), so a newcomer finds each room from the document."""
+    text = (DOCS / "architecture.md").read_text(encoding="utf-8")
+    missing = sorted(
+        str(f.relative_to(ROOT / "aerostat_core"))
+        for f in _python_files("aerostat_core")
+        if f.name != "__init__.py" and str(f.relative_to(ROOT / "aerostat_core")) not in text
+    )
+    assert not missing, "modules docs/architecture.md does not name: " + ", ".join(missing)
 
 
 def test_no_module_imports_another_modules_private_names() -> None:

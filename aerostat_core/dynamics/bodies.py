@@ -20,8 +20,9 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 
-from ..fields import number, validate
-from ..geometry import lamb_factors
+from aerostat_core.base.fields import number, validate
+from aerostat_core.geometry.added_mass import lamb_factors
+
 from .layout import T_ROWS
 
 #: Spacing of the aerodynamic tables [rad].
@@ -173,7 +174,7 @@ class HullModel:
 
 def lamb_added_mass(fineness_ratio: float, volume: float, rho: float, i_air: float):
     """Added masses of a hull from Lamb's prolate-spheroid factors (static engine's
-    :func:`aerostat_core.geometry.lamb_factors` when available).
+    :func:`aerostat_core.geometry.added_mass.lamb_factors` when available).
 
     m_x = k1 rho V, m_z = k2 rho V, I_a = k' I_air, with I_air = rho int (x^2 + z^2) dV about O.
 
@@ -196,7 +197,7 @@ def lamb_added_mass(fineness_ratio: float, volume: float, rho: float, i_air: flo
     -----
     Source: Lamb, *Hydrodynamics* (1932) §373; Tuckerman NACA 210; thesis Appendix G.
     """
-    from ..geometry import lamb_factors
+    from aerostat_core.geometry.added_mass import lamb_factors
 
     k1, k2, kr = (float(k) for k in lamb_factors(fineness_ratio))
     return k1 * rho * volume, k2 * rho * volume, kr * i_air, (k1, k2, kr)
@@ -285,19 +286,19 @@ def hull_from_airframe(af, aero, *, unsteady_wind_inertia: bool = True, strips_p
                        index=None, **options) -> HullModel:
     """Build the dynamic hull of a static-engine airframe, calling the engine's aerodynamics.
 
-    The per-unit-q tables are made by calling :func:`aerostat_core.aerodynamics.hull_inviscid`,
-    :func:`~aerostat_core.aerodynamics.hull_axial` and
-    :func:`~aerostat_core.aerodynamics.fin_lift_drag` on a 0.01 deg grid over [-180, 180] deg,
-    and Hoerner's C_DV from :func:`aerostat_core.statics.axial_drag_coefficient` on a 0.05 m/s
+    The per-unit-q tables are made by calling :func:`aerostat_core.aerodynamics.forces.hull_inviscid`,
+    :func:`~aerostat_core.aerodynamics.forces.hull_axial` and
+    :func:`~aerostat_core.aerodynamics.forces.fin_lift_drag` on a 0.01 deg grid over [-180, 180] deg,
+    and Hoerner's C_DV from :func:`aerostat_core.model.statics.axial_drag_coefficient` on a 0.05 m/s
     airspeed grid; linear interpolation on these grids is exact to ~1e-8 relative. The cross-flow
     term is split into strips whose weights are corrected to reproduce the engine's J1 and J2
     exactly, so with q = 0 the dynamic hull loads equal the static ones.
 
     Parameters
     ----------
-    af : aerostat_core.airframe.Airframe
+    af : aerostat_core.model.airframe.Airframe
         One design (scalar arrays), or a batch with ``index`` selecting one.
-    aero : aerostat_core.inputs.AeroModel
+    aero : aerostat_core.model.inputs.AeroModel
     unsteady_wind_inertia : bool
         Switch of the unsteady-wind inertia terms.
     strips_per_half : int
@@ -314,9 +315,9 @@ def hull_from_airframe(af, aero, *, unsteady_wind_inertia: bool = True, strips_p
     breakdown (lifting gas included, it moves with the hull); the added masses from Lamb's factors
     at the operating air density, with I_air = rho int ((xi - xi_CV)^2 + r^2/4) dV.
     """
-    from .. import aerodynamics as ad
-    from ..geometry import profile_quadrature, radius
-    from ..statics import axial_drag_coefficient
+    from aerostat_core.aerodynamics import forces as ad
+    from aerostat_core.geometry.hull import profile_quadrature, radius
+    from aerostat_core.model.statics import axial_drag_coefficient
 
     def sc(v):
         a = np.asarray(v, float)

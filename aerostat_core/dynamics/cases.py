@@ -74,7 +74,8 @@ def thesis_design(volume: float | None = None, fineness_ratio: float | None = No
     120 m3, 10 kg payload at 300 m, volume sized to the calibrated blow-by limit). ``volume`` [m3]
     and ``fineness_ratio`` [-] override the preset (e.g. 120 m3 with f = 4, the issue's reading of
     the thesis)."""
-    from .. import design, thesis_optimized
+    from aerostat_core.model.design import design
+    from aerostat_core.model.presets import thesis_optimized
 
     req, cfg = thesis_optimized()
     if volume is not None:

@@ -3,7 +3,7 @@
     python -m aerostat_core simulate --scenario {steady,varying,gust,turbulence}
         [--design design.json] [--duration S] [--seed N] [--csv out.csv] [--json]
 
-The default design is the thesis optimised design (:func:`aerostat_core.presets.thesis_optimized`)
+The default design is the thesis optimised design (:func:`aerostat_core.model.presets.thesis_optimized`)
 and each scenario has the thesis comparison's settings (:mod:`.thesis`). ``--json`` prints
 settling_time_s, pitch_range_deg [min, max], u_peak_mps, w_peak_mps, pitch_peak_deg (peak
 deviations from the mean over the stated window), tension_range_N [min, max], status, the
@@ -44,7 +44,7 @@ def add_parser(subparsers) -> argparse.ArgumentParser:
 
 
 def _read_design(path: Path) -> dict:
-    from ..io import design_from_json, inputs_to_dict
+    from aerostat_core.model.io import design_from_json, inputs_to_dict
 
     if not path.is_file():
         raise ValueError(f"--design {path}: not a regular file")

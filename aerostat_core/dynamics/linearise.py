@@ -2,7 +2,8 @@
 (identifiers in US spelling, docs/architecture.md §7). Every name resolves to the same object
 with a ``DeprecationWarning``."""
 
-from ..deprecation import deprecated_aliases
+from aerostat_core.base.deprecation import deprecated_aliases
+
 from . import linearize
 
 #: Old names -> the names in :mod:`.linearize`.

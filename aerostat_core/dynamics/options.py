@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from ..fields import choice, integer, number, validate
+from aerostat_core.base.fields import choice, integer, number, validate
 
 #: Extra status codes of the driver.
 STATUS_DRIVER = {

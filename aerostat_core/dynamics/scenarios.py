@@ -79,9 +79,9 @@ def default_request(scenario: str = "gust", **changes: Any) -> dict:
 
 def design_of(req: Mapping[str, Any]):
     """The static-engine design of a request (the thesis optimised design when no inputs)."""
-    from .. import design
-    from ..io import inputs_from_dict
-    from ..presets import thesis_optimized
+    from aerostat_core.model.design import design
+    from aerostat_core.model.io import inputs_from_dict
+    from aerostat_core.model.presets import thesis_optimized
 
     if req.get("inputs") is None:
         return design(*thesis_optimized())

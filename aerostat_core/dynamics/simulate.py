@@ -494,7 +494,7 @@ def engine_guess(system: DynamicSystem, design, speed: float) -> np.ndarray:
     :func:`equilibrium` then polishes it (the shift it reports is the difference between the
     engine's continuous march and the lumped-mass line).
     """
-    from ..performance import evaluate
+    from aerostat_core.model.performance import evaluate
 
     ev = evaluate(design.requirement, design.configuration, design.airframe, float(speed))
     x = np.asarray(ev.tether.x, float).reshape(-1)

@@ -11,7 +11,8 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from ..constants import G0
+from aerostat_core.base.constants import G0
+
 from .bodies import HullModel, hull_from_airframe
 from .checks import check_number
 from .kernel import DIAG_NAMES, ND, nodes_kernel, rhs_kernel
@@ -69,7 +70,7 @@ class Atmosphere:
 
     ``constant`` (default): one density everywhere, as the static engine does (it takes the air at
     the operating altitude). ``table``: densities ``values`` [kg/m3] on heights ``z0 + k dz`` [m],
-    linearly interpolated (e.g. ISA from :func:`aerostat_core.atmosphere.isa`)."""
+    linearly interpolated (e.g. ISA from :func:`aerostat_core.atmosphere.standard`)."""
 
     density: float = 1.225
     z0: float = 0.0
@@ -79,9 +80,9 @@ class Atmosphere:
     @classmethod
     def isa(cls, site_elevation: float = 0.0, isa_offset: float = 0.0, top: float = 1000.0,
             dz: float = 2.0) -> Atmosphere:
-        """ISA density (static engine's :func:`aerostat_core.atmosphere.isa`) from the winch
+        """ISA density (static engine's :func:`aerostat_core.atmosphere.standard`) from the winch
         (height 0) to ``top`` [m] above it."""
-        from ..atmosphere import isa
+        from aerostat_core.atmosphere.standard import isa
 
         z = np.arange(0.0, top + dz, dz)
         rho = np.asarray(isa(site_elevation + z, isa_offset).density, float)
@@ -107,7 +108,7 @@ class DynamicSystem:
     body : PointAerostat or HullModel
     tether : TetherModel
     g : float
-        Gravity [m/s2] (``aerostat_core.constants.G0`` for designs; 9.81 in the R cases).
+        Gravity [m/s2] (``aerostat_core.base.constants.G0`` for designs; 9.81 in the R cases).
     atmosphere : Atmosphere
     winch : (float, float)
         Winch position [m] (the earth origin by default).
@@ -289,7 +290,7 @@ def dense_jacobian(system: DynamicSystem, y, field_: WindField, eps: float = 1e-
 def system_from_design(design, *, segments: int = 20, damping_ratio: float = 1.0,
                        unsteady_wind_inertia: bool = True, axial_stiffness: float | None = None,
                        atmosphere: str = "constant", **hull_options) -> DynamicSystem:
-    """The dynamic system of a static-engine :class:`aerostat_core.design.Design`.
+    """The dynamic system of a static-engine :class:`aerostat_core.model.design.Design`.
 
     Parameters
     ----------
@@ -310,7 +311,7 @@ def system_from_design(design, *, segments: int = 20, damping_ratio: float = 1.0
 
     Notes
     -----
-    Gravity is the engine's (``aerostat_core.constants.G0``). The hull's mass, CG, inertia,
+    Gravity is the engine's (``aerostat_core.base.constants.G0``). The hull's mass, CG, inertia,
     confluence point, fins and aerodynamics come from the design (:func:`hull_from_airframe`).
     """
     af = design.airframe
@@ -318,7 +319,7 @@ def system_from_design(design, *, segments: int = 20, damping_ratio: float = 1.0
     req = design.requirement
     hull = hull_from_airframe(af, cfg.aero, unsteady_wind_inertia=unsteady_wind_inertia,
                               **hull_options)
-    spec = af.tether or cfg.tether  # as flown: with power conductors (aerostat_core.mission)
+    spec = af.tether or cfg.tether  # as flown: with power conductors (aerostat_core.model.mission)
     tether = TetherModel.from_spec(spec, af.tether_length, segments, damping_ratio)
     if axial_stiffness is not None:
         tether = replace(tether, axial_stiffness=float(axial_stiffness))

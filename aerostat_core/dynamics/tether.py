@@ -35,7 +35,8 @@ from dataclasses import dataclass
 import numpy as np
 from numba import njit
 
-from ..fields import integer, number, validate
+from aerostat_core.base.fields import integer, number, validate
+
 from .layout import (
     P_CD,
     P_CDN,
@@ -123,7 +124,7 @@ class TetherModel:
     @classmethod
     def from_spec(cls, spec, length: float, segments: int = 20, damping_ratio: float = 1.0,
                   **kw) -> TetherModel:
-        """From the static engine's :class:`aerostat_core.materials.TetherSpec`."""
+        """From the static engine's :class:`aerostat_core.structures.materials.TetherSpec`."""
         return cls(
             length=float(length), segments=segments, linear_density=spec.linear_density,
             diameter=spec.diameter, axial_stiffness=spec.axial_stiffness,

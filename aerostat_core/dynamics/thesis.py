@@ -6,7 +6,7 @@ moves +-1.2 m/s horizontally, +-0.2 m/s vertically, with +-3.5 deg of pitch. The
 available here stops in Ch. 2, so its wind settings are not known; the settings below are
 physical ones, stated, and never tuned to the claims:
 
-* design: the thesis optimised design of :func:`aerostat_core.presets.thesis_optimized` (the one
+* design: the thesis optimised design of :func:`aerostat_core.model.presets.thesis_optimized` (the one
   the Optimise page finds), 20 tether segments, unsteady-wind inertia on (physical: it acts on
   the uniform ramp only);
 * varying wind: 10 -> 15 m/s (the design wind) at the aerostat, 5 s linear ramp at t = 20 s;

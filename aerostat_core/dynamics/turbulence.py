@@ -36,8 +36,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..deprecation import deprecated_method
-from ..fields import integer, number, validate
+from aerostat_core.base.deprecation import deprecated_method
+from aerostat_core.base.fields import integer, number, validate
+
 from .checks import check_number as _check
 
 #: One knot [m/s] (international knot, 1852 m/h).

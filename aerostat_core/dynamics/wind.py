@@ -34,8 +34,9 @@ from dataclasses import dataclass, field
 import numpy as np
 from numba import njit
 
-from ..deprecation import deprecated_method
-from ..fields import choice, number, validate
+from aerostat_core.base.deprecation import deprecated_method
+from aerostat_core.base.fields import choice, number, validate
+
 from .checks import check_number as _check
 from .turbulence import (
     DRYDEN_W20,
@@ -84,7 +85,7 @@ class MeanProfile:
     """Shape of the mean wind versus height, P(z), equal to 1 at ``reference_height``.
 
     uniform: P = 1;  power law: P = (z/z_ref)^p;  log law: P = ln(z/z0)/ln(z_ref/z0),
-    with z clipped to >= 1 m (and >= 2 z0 in the log law), as in :mod:`aerostat_core.wind`.
+    with z clipped to >= 1 m (and >= 2 z0 in the log law), as in :mod:`aerostat_core.atmosphere.wind`.
 
     Parameters
     ----------

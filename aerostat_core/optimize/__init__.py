@@ -9,13 +9,13 @@ Objective: minimise the total mass m_Total(x, V*(x)) [kg] (gas, payload and teth
 the hull volume (= the helium bill) as an option.
 
 Volume is *not* a design variable: it enters as the smallest hull that meets the requirement for
-the given x, V*(x) = :func:`aerostat_core.sizing.size_volume` (blow-by at the design wind <= the
+the given x, V*(x) = :func:`aerostat_core.model.sizing.size_volume` (blow-by at the design wind <= the
 limit and every other constraint of the table). This nested form is what makes "fins supply dynamic lift,
 so a smaller hull suffices" visible to an optimiser that only moves f, S_f and l_f (docs/methods.md
 G4). The sizing brackets V* to about 1e-4 relative; :func:`evaluate_designs` finishes it with one
 secant step on the binding constraint so that V*(x) is smooth enough for finite-difference gradients.
 
-Constraints g_i(x) <= 0: the whole constraint table of :mod:`aerostat_core.constraints`
+Constraints g_i(x) <= 0: the whole constraint table of :mod:`aerostat_core.model.constraints`
 (blow-by, altitude loss, free-lift margin, taut tether, tether angle, tether safety factor at the
 design and the survival wind, fin stall, static and weathervane stability, fins on the hull), all
 dimensionless, evaluated on the sized design. The same table sizes V*(x), so an x whose V*
@@ -63,7 +63,8 @@ Python names use the US spelling of ``optimize`` (as scipy.optimize and pymoo do
 
 from __future__ import annotations
 
-from ..deprecation import deprecated_aliases
+from aerostat_core.base.deprecation import deprecated_aliases
+
 from .batch import (
     ACTIVE_TOL,
     BOUNDS_REASONS,

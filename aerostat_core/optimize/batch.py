@@ -12,14 +12,14 @@ from typing import Any
 
 import numpy as np
 
-from .. import fields
-from ..airframe import build_airframe
-from ..constraints import CONSTRAINTS as CONSTRAINT_TABLE
-from ..constraints import NAMES as CONSTRAINT_NAMES
-from ..constraints import TOLERANCE, constraint_state, violation_messages
-from ..cost import gas_fill_cost
-from ..inputs import Configuration, Requirement
-from ..sizing import size_volume
+from aerostat_core.model import input_paths
+from aerostat_core.model.airframe import build_airframe
+from aerostat_core.model.constraints import CONSTRAINTS as CONSTRAINT_TABLE
+from aerostat_core.model.constraints import NAMES as CONSTRAINT_NAMES
+from aerostat_core.model.constraints import TOLERANCE, constraint_state, violation_messages
+from aerostat_core.model.cost import gas_fill_cost
+from aerostat_core.model.inputs import Configuration, Requirement
+from aerostat_core.model.sizing import size_volume
 
 # ------------------------------------------------------------------------------------------------
 # Problem vocabulary
@@ -32,9 +32,9 @@ VARIABLES = ("fineness_ratio", "area_change", "position")
 #: range of each design variable, all read from the field registry (docs/architecture.md §8).
 VARIABLE_INFO: dict[str, tuple[str, str, tuple[float, float]]] = {
     name: (
-        fields.spec_for_path(fields.DESIGN_VARIABLES[name]).label,
-        fields.spec_for_path(fields.DESIGN_VARIABLES[name]).spec.unit or "-",
-        fields.variable_range(name),
+        input_paths.spec_for_path(input_paths.DESIGN_VARIABLES[name]).label,
+        input_paths.spec_for_path(input_paths.DESIGN_VARIABLES[name]).spec.unit or "-",
+        input_paths.variable_range(name),
     )
     for name in VARIABLES
 }
@@ -48,7 +48,7 @@ DEFAULT_BOUNDS: dict[str, tuple[float, float]] = {
 }
 
 #: Constraint names, in the column order of ``DesignBatch.constraints``: the one constraint
-#: table of aerostat_core.constraints.
+#: table of aerostat_core.model.constraints.
 CONSTRAINTS = CONSTRAINT_NAMES
 
 #: Plain-language meaning of each constraint (g <= 0 means met).
@@ -89,7 +89,7 @@ class DesignBatch:
     sizing_feasible : ndarray of bool
         A volume meeting the whole constraint table exists (always True when given).
     binding : ndarray of str
-        The constraint that sets the size (see :class:`~aerostat_core.sizing.SizingResult`), or
+        The constraint that sets the size (see :class:`~aerostat_core.model.sizing.SizingResult`), or
         ``"given"`` for a given volume.
     sizing_message : ndarray of str
         Why no volume is feasible ("" otherwise).
@@ -267,7 +267,7 @@ def evaluate_designs(
 ) -> DesignBatch:
     """Size (or take the volume of) and evaluate a batch of designs in one vectorised pass.
 
-    With ``volume=None`` the hull is sized: V*(x) = :func:`~aerostat_core.sizing.size_volume`
+    With ``volume=None`` the hull is sized: V*(x) = :func:`~aerostat_core.model.sizing.size_volume`
     (smallest volume with blow-by <= limit at the design wind, positive free lift, taut tether),
     then refined by one secant step on the blow-by between V_hi (1 - 5e-4) and V_hi (the
     sizing's feasible end of the bracket): V* = V_lo + (x_max - x_lo)(V_hi - V_lo)/(x_hi - x_lo);

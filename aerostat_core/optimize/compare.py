@@ -8,8 +8,9 @@ import math
 from collections.abc import Callable, Mapping, Sequence
 from typing import Any
 
-from .. import budget
-from ..inputs import Configuration, Requirement
+from aerostat_core.model import budget
+from aerostat_core.model.inputs import Configuration, Requirement
+
 from .problem import OptimizationProblem
 from .pso import solve_pso
 from .slsqp import solve_slsqp
@@ -153,7 +154,7 @@ def optimum_inputs(
     problem: OptimizationProblem, result: OptimizationResult
 ) -> tuple[Requirement, Configuration]:
     """(Requirement, Configuration) of an optimum, volume left to the sizing (``volume=None``),
-    ready for :func:`aerostat_core.io.inputs_to_dict` ("save as case")."""
+    ready for :func:`aerostat_core.model.io.inputs_to_dict` ("save as case")."""
     if not all(math.isfinite(v) for v in result.x.values()):
         raise ValueError("the result has no design (the run stopped before any evaluation)")
     cfg = problem.configuration.with_design_variables(volume=None, **result.x)
@@ -169,7 +170,7 @@ def baseline_vs_optimum(
 
     The baseline is ``cfg_baseline`` as given (its volume if set, else sized); the optimum has
     the design variables ``x_optimum`` and a sized volume. Gas cost = V x price
-    (:func:`aerostat_core.cost.gas_fill_cost`, thesis Appendix H).
+    (:func:`aerostat_core.model.cost.gas_fill_cost`, thesis Appendix H).
 
     Parameters
     ----------
@@ -184,7 +185,7 @@ def baseline_vs_optimum(
         Rows (quantity, unit, baseline, optimum, change).
     """
     req = req.resolved()
-    from ..design import design
+    from aerostat_core.model.design import design
 
     base = design(req, cfg_baseline)
     opt = design(req, optimum_configuration(cfg_baseline, x_optimum))
@@ -201,7 +202,7 @@ def optimum_configuration(
 
 def design_change_rows(base: Any, opt: Any) -> list[dict[str, Any]]:
     """The rows of :func:`baseline_vs_optimum` from two designs already made
-    (:class:`aerostat_core.design.Design`), so a caller that has them designs nothing again."""
+    (:class:`aerostat_core.model.design.Design`), so a caller that has them designs nothing again."""
     items = [
         ("Hull volume", "m3", base.volume, opt.volume),
         ("Total mass", "kg", base.total_mass, opt.total_mass),

@@ -7,7 +7,7 @@ from typing import Any
 
 import numpy as np
 
-from ..inputs import Configuration, Requirement
+from aerostat_core.model.inputs import Configuration, Requirement
 
 #: Performance curves compared between baseline and optimum: key -> (label, unit).
 PERFORMANCE_CURVES = {
@@ -19,7 +19,7 @@ PERFORMANCE_CURVES = {
 
 
 def performance_curves(req: Requirement, cfg: Configuration) -> dict[str, Any]:
-    """Performance versus wind of one design (:func:`aerostat_core.design`), as plain arrays.
+    """Performance versus wind of one design (:func:`aerostat_core.model.design`), as plain arrays.
 
     Parameters
     ----------
@@ -33,13 +33,13 @@ def performance_curves(req: Requirement, cfg: Configuration) -> dict[str, Any]:
         ``volume`` [m3], ``total_mass`` [kg], ``feasible`` (bool) and ``violations`` (list).
     """
     req = req.resolved()
-    from ..design import design
+    from aerostat_core.model.design import design
 
     return curves_of(design(req, cfg))
 
 
 def curves_of(d: Any) -> dict[str, Any]:
-    """:func:`performance_curves` of a design already made (:class:`aerostat_core.design.Design`)."""
+    """:func:`performance_curves` of a design already made (:class:`aerostat_core.model.design.Design`)."""
     p = d.performance
     out = {"wind_speed": np.asarray(p.wind_speed, float)}
     for k in PERFORMANCE_CURVES:

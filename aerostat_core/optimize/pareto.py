@@ -12,8 +12,9 @@ from typing import Any
 
 import numpy as np
 
-from ..inputs import Configuration, Requirement
-from ..sizing import VOLUME_MAX, VOLUME_MIN
+from aerostat_core.model.inputs import Configuration, Requirement
+from aerostat_core.model.sizing import VOLUME_MAX, VOLUME_MIN
+
 from .batch import CONSTRAINTS, VARIABLES, DesignBatch, evaluate_designs
 from .lockstep import run_lockstep, slsqp_task, stencil_evaluator
 from .problem import OptimizationProblem

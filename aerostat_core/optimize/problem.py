@@ -12,7 +12,8 @@ from typing import Any
 
 import numpy as np
 
-from ..inputs import Configuration, Requirement
+from aerostat_core.model.inputs import Configuration, Requirement
+
 from .batch import (
     CONSTRAINT_TEXT,
     CONSTRAINTS,

@@ -32,7 +32,7 @@ def thesis_at() -> AppTest:
     the tests that check the pages against the thesis' numbers. The app's own default is the
     practice rule set (tests/app/test_design_page.py::test_opens_on_the_practice_default)."""
     from aerostat_core import thesis_baseline
-    from aerostat_core.io import inputs_to_dict
+    from aerostat_core.model.io import inputs_to_dict
 
     app = AppTest.from_file(str(APP_PATH), default_timeout=TIMEOUT_S)
     app.session_state["design_inputs"] = inputs_to_dict(*thesis_baseline())

@@ -10,8 +10,8 @@ import numpy as np
 import pytest
 
 from aerostat_core import design, thesis_baseline
-from aerostat_core.io import cases_to_json, inputs_from_dict, inputs_to_dict
-from aerostat_core.report import thesis_gui_cases
+from aerostat_core.model.io import cases_to_json, inputs_from_dict, inputs_to_dict
+from aerostat_core.output.report import thesis_gui_cases
 from app_ui import state
 from tests.app.helpers import (
     COMPARE_PAGE,
@@ -326,7 +326,7 @@ def test_exports_are_offered(with_gui_cases):
 
 
 def test_case_limit_is_a_message_not_a_traceback(compare):
-    from aerostat_core.io import MAX_CASES
+    from aerostat_core.model.io import MAX_CASES
 
     at = compare
     one = thesis_gui_cases()[GUI[0]]

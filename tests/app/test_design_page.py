@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 from aerostat_core import FABRICS, Requirement, design, thesis_baseline
-from aerostat_core.io import design_to_json, inputs_from_dict, inputs_to_dict
+from aerostat_core.model.io import design_to_json, inputs_from_dict, inputs_to_dict
 from app_ui import state
 from app_ui.form_model import FIELD_BY_KEY
 from tests.app.helpers import (

@@ -13,7 +13,7 @@ import pytest
 from streamlit.testing.v1 import AppTest
 
 from aerostat_core import Configuration, HullSpec, Requirement, design
-from aerostat_core.io import inputs_from_dict, inputs_to_dict
+from aerostat_core.model.io import inputs_from_dict, inputs_to_dict
 from app_ui import dynamics_view as view
 from tests.app.conftest import APP_PATH
 from tests.app.helpers import chart, messages, trace, values

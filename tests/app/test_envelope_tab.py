@@ -8,8 +8,8 @@ import json
 import numpy as np
 
 from aerostat_core import design
-from aerostat_core.io import inputs_from_dict
-from aerostat_core.site_wind import flyable_time
+from aerostat_core.model.io import inputs_from_dict
+from aerostat_core.studies.site_wind import flyable_time
 from tests.app.helpers import chart, metric, raw_messages, show_tab, trace, values
 
 

@@ -60,7 +60,7 @@ def test_same_quantity_same_decimals_on_design_optimise_and_in_the_tables(thesis
     assert all(_decimals(v) == formats.decimals("blow_by") for v in where["Blow-by [m]"])
     assert not any(v.startswith("-0.0") or v == "-0" for v in where["Altitude loss [m]"])
     from aerostat_core import design, thesis_baseline
-    from aerostat_core.report import design_report
+    from aerostat_core.output.report import design_report
 
     rep = design_report(design(*thesis_baseline()))
     df = tables.performance_frame(rep.performance_rows)
@@ -103,8 +103,8 @@ def test_every_quantity_has_a_kind(q):
 def test_compare_results_use_the_formatting_tables_decimals():
     """The same quantity shows the same decimals on Compare as on the Design page."""
     from aerostat_core import Requirement, design
-    from aerostat_core.presets import practice_configuration
-    from aerostat_core.report import comparison_rows
+    from aerostat_core.model.presets import practice_configuration
+    from aerostat_core.output.report import comparison_rows
     from app_ui import formats
     from app_ui.tables import comparison_frame
 

@@ -1,5 +1,5 @@
 """Method page (AppTest): equations rendered, live validation table from
-aerostat_core.reference, and a clear message when that module is missing."""
+aerostat_core.studies.reference, and a clear message when that module is missing."""
 
 from __future__ import annotations
 
@@ -57,7 +57,7 @@ def test_equations_and_sections(method):
 
 
 def test_live_validation_table(method):
-    from aerostat_core.reference import reference_checks
+    from aerostat_core.studies.reference import reference_checks
 
     ref = reference_checks()
     df = table(method, "Quantity")
@@ -75,10 +75,10 @@ def test_live_validation_table(method):
 
 
 def test_missing_reference_module_shows_a_message(at, clear_cache, monkeypatch):
-    monkeypatch.setitem(sys.modules, "aerostat_core.reference", None)  # import now fails
+    monkeypatch.setitem(sys.modules, "aerostat_core.studies.reference", None)  # import now fails
     goto(at, METHOD_PAGE)
     assert not at.exception
-    assert any("aerostat_core.reference" in i for i in messages(at, "info"))
+    assert any("aerostat_core.studies.reference" in i for i in messages(at, "info"))
     assert len(at.latex) >= 20  # the equations are still there
 
 
@@ -86,7 +86,7 @@ def test_fielded_harness_is_shown_live():
     """The Method page runs the fielded-aerostat harness and shows its figures (issue 8)."""
     from streamlit.testing.v1 import AppTest
 
-    from aerostat_core.fielded import validate_fielded
+    from aerostat_core.studies.fielded import validate_fielded
     from tests.app.conftest import APP_PATH, TIMEOUT_S
 
     app = AppTest.from_file(str(APP_PATH), default_timeout=TIMEOUT_S)

@@ -10,9 +10,9 @@ import numpy as np
 import pytest
 
 from aerostat_core import thesis_baseline
-from aerostat_core.io import inputs_from_dict, inputs_to_dict
+from aerostat_core.model.io import inputs_from_dict, inputs_to_dict
 from aerostat_core.optimize import DEFAULT_BOUNDS, VARIABLES
-from aerostat_core.sensitivity import one_at_a_time, two_variable_map
+from aerostat_core.studies.sensitivity import one_at_a_time, two_variable_map
 from tests.app.helpers import chart, chart_keys, goto, messages, table, table_with, values
 
 SENS_PAGE = "pages/3_Sensitivity.py"
@@ -355,7 +355,7 @@ def test_cancelling_a_new_run_keeps_the_previous_results(opt):
 def test_an_optimisation_over_the_compute_budget_is_refused_before_it_runs():
     from dataclasses import replace
 
-    from aerostat_core.budget import BudgetError
+    from aerostat_core.model.budget import BudgetError
     from app_ui import optimize_view as view
 
     req, cfg = thesis_baseline()

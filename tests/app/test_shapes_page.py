@@ -5,7 +5,7 @@ from __future__ import annotations
 import pandas as pd
 import pytest
 
-from aerostat_core.shape_comparison import thesis_shape_comparison
+from aerostat_core.studies.shape_comparison import thesis_shape_comparison
 from tests.app.helpers import (
     DESIGN_PAGE,
     chart,

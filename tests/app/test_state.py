@@ -9,7 +9,7 @@ from dataclasses import replace
 import pytest
 
 from aerostat_core import thesis_baseline
-from aerostat_core.io import (
+from aerostat_core.model.io import (
     MAX_CASES,
     MAX_JSON_BYTES,
     cases_to_json,
@@ -17,7 +17,7 @@ from aerostat_core.io import (
     inputs_from_dict,
     inputs_to_dict,
 )
-from aerostat_core.report import thesis_gui_cases
+from aerostat_core.output.report import thesis_gui_cases
 from app_ui import state
 
 

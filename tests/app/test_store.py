@@ -15,8 +15,8 @@ import pytest
 import sqlalchemy as sa
 
 from aerostat_core import thesis_baseline
-from aerostat_core.io import inputs_to_dict
-from aerostat_core.report import thesis_gui_cases
+from aerostat_core.model.io import inputs_to_dict
+from aerostat_core.output.report import thesis_gui_cases
 from app_ui import state, store
 
 PG_URL = os.environ.get("AEROSTAT_TEST_DATABASE_URL", "").strip()

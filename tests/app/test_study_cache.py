@@ -12,7 +12,7 @@ from dataclasses import replace
 import pytest
 
 from aerostat_core import Configuration, Requirement, thesis_baseline
-from aerostat_core.io import inputs_from_dict, inputs_to_dict
+from aerostat_core.model.io import inputs_from_dict, inputs_to_dict
 from app_ui import cache, dynamics_view, envelope_view, optimize_jobs, shapes_view
 from app_ui.state import inputs_key
 

@@ -13,16 +13,12 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from aerostat_core import Configuration, Requirement, design, thesis_baseline
-from aerostat_core.envelope import operating_envelope
-from aerostat_core.fields import (
-    US_CUSTOMARY,
-    all_specs,
-    spec_display,
-    unit_in,
-)
-from aerostat_core.html_report import requirement_rows
+from aerostat_core.base.fields import US_CUSTOMARY, spec_display, unit_in
+from aerostat_core.model.input_paths import all_specs
 from aerostat_core.optimize.pareto import nondominated_mask
-from aerostat_core.report import comparison_rows, design_report
+from aerostat_core.output.html_report import requirement_rows
+from aerostat_core.output.report import comparison_rows, design_report
+from aerostat_core.studies.envelope import operating_envelope
 from app_ui import formats, optimize_view, plots_optimize, shapes_view, tables, theme
 
 RAW = re.compile(r"^(nan|NaN|None|True|False|inf|-inf)$|^-0[.,]0*$|^-$")
@@ -59,7 +55,7 @@ def test_geometry_unit_of_a_dimensionless_row_is_not_a_markdown_bullet():
 
 
 def test_compare_differs_reads_yes_no():
-    from aerostat_core.design import design as _design
+    from aerostat_core.model.design import design as _design
 
     req, cfg = thesis_baseline()
     from dataclasses import replace
@@ -139,7 +135,7 @@ def test_export_buttons_differ_in_what_a_cut_label_shows():
 
 
 def test_resize_caption_matches_the_sweeps():
-    from aerostat_core.sensitivity import one_at_a_time
+    from aerostat_core.studies.sensitivity import one_at_a_time
 
     res = one_at_a_time(Requirement(), Configuration(), n_points=3, resize=True)
     ok = [r for r in res.rows() if r["feasible"]]
@@ -151,7 +147,7 @@ def test_resize_caption_matches_the_sweeps():
 
 
 def test_map_legend_is_clear_of_the_colour_bar():
-    from aerostat_core.sensitivity import two_variable_map
+    from aerostat_core.studies.sensitivity import two_variable_map
 
     req, cfg = thesis_baseline()
     m = two_variable_map(req, cfg, "fineness_ratio", "position", n=4, resize=False)

@@ -10,8 +10,13 @@ import plotly.graph_objects as go
 import pytest
 
 from aerostat_core import FABRICS, TETHERS, design, thesis_baseline
-from aerostat_core.io import inputs_from_dict, inputs_to_dict
-from aerostat_core.report import case_designs, comparison_rows, design_report, thesis_gui_cases
+from aerostat_core.model.io import inputs_from_dict, inputs_to_dict
+from aerostat_core.output.report import (
+    case_designs,
+    comparison_rows,
+    design_report,
+    thesis_gui_cases,
+)
 from app_ui import plots
 from app_ui.form_model import (
     CHOICES,
@@ -174,7 +179,7 @@ def test_a_fabric_error_goes_to_the_fabric_whose_box_holds_the_value(base):
 
 
 def test_every_form_label_unit_scale_and_help_comes_from_the_registry():
-    from aerostat_core.fields import spec_for_path
+    from aerostat_core.model.input_paths import spec_for_path
 
     for f in FIELDS:
         entry = spec_for_path(f.path)
@@ -190,10 +195,11 @@ def test_no_label_string_of_the_registry_is_typed_again_in_the_ui():
     import dataclasses
     from pathlib import Path
 
+    from aerostat_core.base.fields import field_spec
     from aerostat_core.dynamics.options import SolverOptions
     from aerostat_core.dynamics.tether import TetherModel
     from aerostat_core.dynamics.wind import DrydenTurbulence, Gust, MeanProfile
-    from aerostat_core.fields import all_specs, field_spec
+    from aerostat_core.model.input_paths import all_specs
 
     ui = {p.name: p.read_text() for p in [*Path("app_ui").glob("*.py"), *Path("pages").glob("*.py")]}
     labels = {e.label for e in all_specs() if len(e.label) > 12}

@@ -5,8 +5,8 @@ import pytest
 from ambiance import Atmosphere
 
 from aerostat_core import LiftingGas
-from aerostat_core.atmosphere import isa
-from aerostat_core.gas import gas_density
+from aerostat_core.atmosphere.gas import gas_density
+from aerostat_core.atmosphere.standard import isa
 
 HEIGHTS = np.linspace(0.0, 11000.0, 111)
 

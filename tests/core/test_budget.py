@@ -7,11 +7,12 @@ from dataclasses import replace
 
 import pytest
 
-from aerostat_core import budget, design, thesis_baseline
-from aerostat_core.io import inputs_to_dict
+from aerostat_core import design, thesis_baseline
+from aerostat_core.model import budget
+from aerostat_core.model.io import inputs_to_dict
 from aerostat_core.optimize import OptimizationProblem, solve
-from aerostat_core.report import case_designs
-from aerostat_core.sensitivity import one_at_a_time, two_variable_map
+from aerostat_core.output.report import case_designs
+from aerostat_core.studies.sensitivity import one_at_a_time, two_variable_map
 
 
 def _heavy():

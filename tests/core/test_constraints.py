@@ -10,13 +10,13 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from aerostat_core import Requirement, TetherSpec, design
-from aerostat_core.airframe import build_airframe
-from aerostat_core.constraints import CONSTRAINTS, NAMES, TOLERANCE, constraint_state
+from aerostat_core.model.airframe import build_airframe
+from aerostat_core.model.constraints import CONSTRAINTS, NAMES, TOLERANCE, constraint_state
+from aerostat_core.model.presets import practice_configuration, thesis_baseline
+from aerostat_core.model.rules import PRACTICE, RULE_SETS, THESIS
+from aerostat_core.model.sizing import VOLUME_MAX, VOLUME_MIN, size_volume
 from aerostat_core.optimize import CONSTRAINTS as OPT_CONSTRAINTS
 from aerostat_core.optimize import FEASIBILITY_TOL, evaluate_designs
-from aerostat_core.presets import practice_configuration, thesis_baseline
-from aerostat_core.rules import PRACTICE, RULE_SETS, THESIS
-from aerostat_core.sizing import VOLUME_MAX, VOLUME_MIN, size_volume
 
 
 def test_one_table_everywhere() -> None:

@@ -14,9 +14,9 @@ ROOT = Path(__file__).resolve().parents[2]
 MODULES = (
     "aerostat_core",
     "aerostat_core.optimize",
-    "aerostat_core.budget",
-    "aerostat_core.presets",
-    "aerostat_core.shape_optimize",
+    "aerostat_core.model.budget",
+    "aerostat_core.model.presets",
+    "aerostat_core.studies.shape_optimize",
 )
 RENAMED = [
     (m, old, new)

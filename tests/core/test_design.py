@@ -15,8 +15,8 @@ from aerostat_core import (
     size_volume,
     thesis_baseline,
 )
-from aerostat_core.reference import reference_checks
-from aerostat_core.statics import moment_about_confluence
+from aerostat_core.model.statics import moment_about_confluence
+from aerostat_core.studies.reference import reference_checks
 
 
 @pytest.fixture(scope="module")

@@ -6,7 +6,7 @@ import math
 import numpy as np
 import pytest
 
-from aerostat_core import aerodynamics as ad
+from aerostat_core.aerodynamics import forces as ad
 from aerostat_core.dynamics import cases
 from aerostat_core.dynamics.linearize import linearize
 from aerostat_core.dynamics.model import (
@@ -26,7 +26,7 @@ from aerostat_core.dynamics.simulate import (
 )
 from aerostat_core.dynamics.tether import TetherModel
 from aerostat_core.dynamics.wind import SpeedSchedule, WindScenario
-from aerostat_core.statics import aero_loads
+from aerostat_core.model.statics import aero_loads
 
 
 @pytest.fixture(scope="module")

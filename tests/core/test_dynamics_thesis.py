@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 from aerostat_core import design, thesis_baseline, thesis_optimized
-from aerostat_core.cli import main
+from aerostat_core.cli.entry import main
 from aerostat_core.dynamics import cases
 from aerostat_core.dynamics.scenarios import default_request, design_of
 from aerostat_core.dynamics.thesis import (
@@ -16,8 +16,8 @@ from aerostat_core.dynamics.thesis import (
     comparison_rows,
     run_thesis_case,
 )
+from aerostat_core.model.presets import THESIS_OPTIMUM, thesis_optimized_label
 from aerostat_core.optimize import DEFAULT_BOUNDS, OptimizationProblem, solve
-from aerostat_core.presets import THESIS_OPTIMUM, thesis_optimized_label
 
 CLI_KEYS = {
     "settling_time_s",
@@ -112,7 +112,7 @@ def test_cli_turbulence_seed_and_bad_input(tmp_path, capsys):
 
 def test_cli_with_a_design_file_records_its_inputs(tmp_path, capsys):
     from aerostat_core import Configuration, HullSpec, Requirement
-    from aerostat_core.io import design_to_json
+    from aerostat_core.model.io import design_to_json
 
     path = tmp_path / "d.json"
     req, cfg = Requirement(), Configuration(hull=HullSpec(volume=150.0, fineness_ratio=3.5))

@@ -6,6 +6,7 @@ import numpy as np
 import pytest
 from scipy.signal import welch
 
+from aerostat_core.atmosphere.wind import profile_speed
 from aerostat_core.dynamics.wind import (
     DRYDEN_W20,
     FOOT,
@@ -19,8 +20,7 @@ from aerostat_core.dynamics.wind import (
     dryden_psd_u,
     dryden_psd_w,
 )
-from aerostat_core.inputs import WindProfile
-from aerostat_core.wind import profile_speed
+from aerostat_core.model.inputs import WindProfile
 
 
 @pytest.mark.parametrize("kind", ["uniform", "power", "log"])

@@ -8,8 +8,8 @@ import numpy as np
 import pytest
 
 from aerostat_core import Requirement, design
-from aerostat_core.constraints import NAMES
-from aerostat_core.envelope import (
+from aerostat_core.model.constraints import NAMES
+from aerostat_core.studies.envelope import (
     ENVELOPE_NAMES,
     MAX_POINTS,
     operating_envelope,

@@ -10,11 +10,11 @@ from dataclasses import replace
 import pytest
 
 from aerostat_core import Requirement, design
-from aerostat_core.cli import main
-from aerostat_core.envelope import operating_envelope
-from aerostat_core.html_report import SECTIONS, render_report
-from aerostat_core.site_wind import flyable_time
-from aerostat_core.uncertainty import monte_carlo
+from aerostat_core.cli.entry import main
+from aerostat_core.output.html_report import SECTIONS, render_report
+from aerostat_core.studies.envelope import operating_envelope
+from aerostat_core.studies.site_wind import flyable_time
+from aerostat_core.studies.uncertainty import monte_carlo
 
 
 def test_envelope_json_has_points_and_flyable_time(capsys):

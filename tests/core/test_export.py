@@ -9,7 +9,9 @@ import numpy as np
 import pytest
 
 from aerostat_core import HullSpec, design
-from aerostat_core.export import (
+from aerostat_core.geometry.shapes import SHAPES
+from aerostat_core.model.presets import thesis_baseline
+from aerostat_core.output.export import (
     design_stl,
     fin_meshes,
     gore_csv,
@@ -18,8 +20,6 @@ from aerostat_core.export import (
     gore_svg,
     mesh_properties,
 )
-from aerostat_core.presets import thesis_baseline
-from aerostat_core.shapes import SHAPES
 
 
 @pytest.fixture(scope="module")

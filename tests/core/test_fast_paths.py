@@ -3,9 +3,9 @@
 The tether march steps a complex stacked state and the trim root-finder evaluates an
 alpha-expanded moment (both for speed: numpy's per-call overhead dominates on the usual small
 arrays). Here they are checked against the plain definitions over hypothesis-drawn inputs:
-the Heun march on separate arrays with :func:`aerostat_core.tether._line_load`
+the Heun march on separate arrays with :func:`aerostat_core.tether.statics._line_load`
 (``_march_plain``, which wide batches run), and
-:func:`aerostat_core.statics.moment_about_confluence` / ``aerodynamic_moment``.
+:func:`aerostat_core.model.statics.moment_about_confluence` / ``aerodynamic_moment``.
 """
 
 import dataclasses
@@ -18,9 +18,9 @@ from hypothesis import strategies as st
 from scipy.optimize import brentq
 
 from aerostat_core import HullSpec, TetherSpec, design, thesis_baseline
-from aerostat_core.airframe import build_airframe
-from aerostat_core.shapes import SHAPE_INFO
-from aerostat_core.statics import (
+from aerostat_core.geometry.shapes import SHAPE_INFO
+from aerostat_core.model.airframe import build_airframe
+from aerostat_core.model.statics import (
     ALPHA_GRID,
     ALPHA_GRID_WIDE,
     MomentKernel,
@@ -30,7 +30,7 @@ from aerostat_core.statics import (
     moment_about_confluence,
     weathervane_slope,
 )
-from aerostat_core.tether import _WIDE, _march_plain, march
+from aerostat_core.tether.statics import _WIDE, _march_plain, march
 
 
 @settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])

@@ -5,10 +5,10 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from aerostat_core.design import design
-from aerostat_core.fielded import FIELDED, practice_configuration_for, validate_fielded
-from aerostat_core.inputs import Requirement
-from aerostat_core.presets import PRACTICE_FABRIC_AREAL_DENSITY, PRACTICE_FINENESS_RATIO
+from aerostat_core.model.design import design
+from aerostat_core.model.inputs import Requirement
+from aerostat_core.model.presets import PRACTICE_FABRIC_AREAL_DENSITY, PRACTICE_FINENESS_RATIO
+from aerostat_core.studies.fielded import FIELDED, practice_configuration_for, validate_fielded
 
 
 @pytest.fixture(scope="module")

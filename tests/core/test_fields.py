@@ -1,4 +1,4 @@
-"""The field registry (aerostat_core.fields): every input has one spec, and validation, report
+"""The field registry (aerostat_core.base.fields): every input has one spec, and validation, report
 columns and the optimiser's variable info are derived from it."""
 
 from __future__ import annotations
@@ -10,22 +10,22 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from aerostat_core import fields
-from aerostat_core.fields import (
-    SPEC_KEY,
+from aerostat_core.base import fields
+from aerostat_core.base.fields import SPEC_KEY, field_spec
+from aerostat_core.base.validation import POSITIVE_FLOOR, InputError
+from aerostat_core.geometry.shapes import SHAPE_INFO
+from aerostat_core.model.input_paths import (
     all_specs,
     column_label,
-    field_spec,
     paths_for,
+    report_table,
     spec_for_path,
     variable_info,
 )
-from aerostat_core.inputs import Configuration, HullSpec, Requirement
-from aerostat_core.io import inputs_to_dict
-from aerostat_core.presets import thesis_baseline
-from aerostat_core.report import flatten_inputs
-from aerostat_core.shapes import SHAPE_INFO
-from aerostat_core.validation import POSITIVE_FLOOR, InputError
+from aerostat_core.model.inputs import Configuration, HullSpec, Requirement
+from aerostat_core.model.io import inputs_to_dict
+from aerostat_core.model.presets import thesis_baseline
+from aerostat_core.output.report import flatten_inputs
 
 
 def _input_classes() -> set[type]:
@@ -54,7 +54,7 @@ def test_every_field_of_every_input_dataclass_has_a_spec():
         for f in dataclasses.fields(cls)
         if SPEC_KEY not in f.metadata
     ]
-    assert missing == [], f"fields without a spec (add one with aerostat_core.fields): {missing}"
+    assert missing == [], f"fields without a spec (add one with aerostat_core.base.fields): {missing}"
 
 
 def test_every_input_path_of_a_design_is_in_the_registry():
@@ -185,7 +185,7 @@ def test_cross_field_checks_are_structured():
         60,
     )
     with pytest.raises(InputError) as err:
-        from aerostat_core.inputs import FinSpec
+        from aerostat_core.model.inputs import FinSpec
 
         FinSpec(count=3, arrangement="+")
     assert (err.value.field, err.value.label) == ("count", "Number of fins")
@@ -232,7 +232,7 @@ def test_column_labels_and_variable_info():
 
 
 def test_the_report_table_is_the_registry():
-    table = fields.report_table()
+    table = report_table()
     assert table["configuration.hull_fabric.areal_density"] == (
         "Hull fabric areal density",
         "g/m²",
@@ -258,7 +258,7 @@ def _dynamics_entries():
     from aerostat_core.dynamics.tether import TetherModel
     from aerostat_core.dynamics.turbulence import DrydenTurbulence
     from aerostat_core.dynamics.wind import Gust, MeanProfile
-    from aerostat_core.site_wind import WeibullSite
+    from aerostat_core.studies.site_wind import WeibullSite
 
     out = []
     for cls in (
@@ -303,7 +303,7 @@ def test_dynamics_validation_uses_the_registry_range(cls, name, spec):
 
 
 def test_variable_ranges_reproduce_the_optimiser_bounds():
-    from aerostat_core.fields import variable_range
+    from aerostat_core.model.input_paths import variable_range
     from aerostat_core.optimize import VARIABLE_INFO
 
     for name, (_label, _unit, bounds) in VARIABLE_INFO.items():

@@ -6,16 +6,16 @@ from hypothesis import given
 from hypothesis import strategies as st
 from scipy.integrate import quad
 
-from aerostat_core.fins import helmbold_lift_slope
-from aerostat_core.geometry import (
+from aerostat_core.geometry.added_mass import lamb_factors
+from aerostat_core.geometry.fins import helmbold_lift_slope
+from aerostat_core.geometry.hull import (
     half_spheroid_area,
     hull_geometry,
-    lamb_factors,
     radius,
     shape_integrals,
     volume_to_station,
 )
-from aerostat_core.reference import LAMB_TABLE
+from aerostat_core.studies.reference import LAMB_TABLE
 
 
 def _numeric(g):

@@ -7,8 +7,8 @@ import json
 import pytest
 
 from aerostat_core import Configuration, Requirement, design, thesis_baseline
-from aerostat_core.cli import design_csv, main
-from aerostat_core.io import (
+from aerostat_core.cli.entry import design_csv, main
+from aerostat_core.model.io import (
     MAX_JSON_BYTES,
     cases_from_json,
     cases_to_json,

@@ -11,32 +11,32 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from aerostat_core import Requirement, design
-from aerostat_core import constants as c
-from aerostat_core.atmosphere import isa
-from aerostat_core.ballonet import ballonet_fabric_mass, ballonet_fraction, sphere_area
-from aerostat_core.cli import main
-from aerostat_core.constraints import NAMES
-from aerostat_core.endurance import (
+from aerostat_core.atmosphere.permeation import (
     days_to_top_up,
     helium_top_up,
     lift_loss_after,
     permeation_time_constant,
     purity_after,
 )
-from aerostat_core.io import design_from_json, design_to_json
-from aerostat_core.materials import FABRICS, POWER_TETHER_CONDUCTORS, TETHERS, Fabric
-from aerostat_core.mission import (
+from aerostat_core.atmosphere.standard import isa
+from aerostat_core.base import constants as c
+from aerostat_core.cli.entry import main
+from aerostat_core.model.constraints import NAMES
+from aerostat_core.model.io import design_from_json, design_to_json
+from aerostat_core.model.mission import (
     MissionSpec,
     ballonet_state,
     effective_tether,
     onboard_battery_mass,
     tether_conductors,
 )
-from aerostat_core.power import battery_mass, size_conductors
-from aerostat_core.presets import practice_configuration
-from aerostat_core.sizing import size_volume
-from aerostat_core.structure import allowable_pressure, membrane_loads, required_pressure
-from aerostat_core.winch import size_winch
+from aerostat_core.model.presets import practice_configuration
+from aerostat_core.model.sizing import size_volume
+from aerostat_core.structures.ballonet import ballonet_fabric_mass, ballonet_fraction, sphere_area
+from aerostat_core.structures.materials import FABRICS, POWER_TETHER_CONDUCTORS, TETHERS, Fabric
+from aerostat_core.structures.membrane import allowable_pressure, membrane_loads, required_pressure
+from aerostat_core.tether.power import battery_mass, size_conductors
+from aerostat_core.tether.winch import size_winch
 
 #: Sized volume of the default requirement before the mission work (CLI JSON at commit 2e23b90).
 DEFAULT_VOLUME_BEFORE = 55.16168682221109
@@ -436,7 +436,7 @@ def test_fielded_systems_sized_with_their_class_endurance_move_closer():
     ballonet rule, every held-out system's predicted length moves closer to the published one
     (all were under-predicted); the median error drops from 9.3 % to 8.3 %. The fit system
     TIF-1600, already 16 % long, grows to 22 % (the calibration was chosen without them)."""
-    from aerostat_core.fielded import validate_fielded
+    from aerostat_core.studies.fielded import validate_fielded
 
     before = validate_fielded()
     after = validate_fielded(mission=True)

@@ -12,6 +12,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from aerostat_core import design, thesis_baseline, thesis_optimized
+from aerostat_core.model.presets import THESIS_BLOW_BY_LIMIT, THESIS_OPTIMUM
 from aerostat_core.optimize import (
     BOUNDS_REASONS,
     CONSTRAINTS,
@@ -41,7 +42,6 @@ from aerostat_core.optimize import (
     thesis_comparison_rows,
 )
 from aerostat_core.optimize.lockstep import fd_gradient, fd_stencil
-from aerostat_core.presets import THESIS_BLOW_BY_LIMIT, THESIS_OPTIMUM
 
 SOLVER_FUNCS = (solve_slsqp, solve_surrogate, solve_pso)
 

@@ -17,7 +17,7 @@ from aerostat_core import (
     WindProfile,
     design,
 )
-from aerostat_core.statics import moment_about_confluence
+from aerostat_core.model.statics import moment_about_confluence
 
 
 @st.composite

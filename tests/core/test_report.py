@@ -1,4 +1,4 @@
-"""aerostat_core.report: plain-data views, hull/fin shapes, comparison table, tidy CSV of cases."""
+"""aerostat_core.output.report: plain-data views, hull/fin shapes, comparison table, tidy CSV of cases."""
 
 from __future__ import annotations
 
@@ -11,10 +11,10 @@ import numpy as np
 import pytest
 
 from aerostat_core import design, thesis_baseline
-from aerostat_core.geometry import radius
-from aerostat_core.io import inputs_from_dict, inputs_to_dict
-from aerostat_core.presets import PRACTICE_FABRIC_AREAL_DENSITY
-from aerostat_core.report import (
+from aerostat_core.geometry.hull import radius
+from aerostat_core.model.io import inputs_from_dict, inputs_to_dict
+from aerostat_core.model.presets import PRACTICE_FABRIC_AREAL_DENSITY
+from aerostat_core.output.report import (
     INPUT_FIELDS,
     case_designs,
     cases_csv,

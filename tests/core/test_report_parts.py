@@ -1,4 +1,4 @@
-"""The typed design report (aerostat_core.report_parts): the plain dict of before, the documented
+"""The typed design report (aerostat_core.output.report_parts): the plain dict of before, the documented
 shapes of every part, the deprecated key reads, and that no module reads the report by key."""
 
 from __future__ import annotations
@@ -11,12 +11,12 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from aerostat_core.design import Design, DesignSummary, design
-from aerostat_core.fins import ARRANGEMENT_ANGLES_DEG
-from aerostat_core.inputs import Requirement
-from aerostat_core.io import inputs_to_dict
-from aerostat_core.presets import practice_configuration, thesis_baseline
-from aerostat_core.report import (
+from aerostat_core.geometry.fins import ARRANGEMENT_ANGLES_DEG
+from aerostat_core.model.design import Design, DesignSummary, design
+from aerostat_core.model.inputs import Requirement
+from aerostat_core.model.io import inputs_to_dict
+from aerostat_core.model.presets import practice_configuration, thesis_baseline
+from aerostat_core.output.report import (
     DesignLimits,
     DesignReport,
     FinView,
@@ -270,12 +270,12 @@ REPORT_KEYS = frozenset(
 }  # fmt: skip
 #: Dicts that are not the report but share a key with it: (file, base name) -> what they are.
 NOT_THE_REPORT = {
-    ("aerostat_core/commands.py", "out"): "the envelope sweep (its points)",
+    ("aerostat_core/cli/commands.py", "out"): "the envelope sweep (its points)",
     ("aerostat_core/dynamics/cli.py", "m"): "dynamics metrics (limit flags)",
-    ("aerostat_core/reference.py", "p"): "the point-aerostat reference case",
-    ("aerostat_core/shape_comparison.py", "m"): "mass items by name",
-    ("aerostat_core/shape_comparison.py", "t"): "ShapeComparison rows (thesis model)",
-    ("aerostat_core/shape_comparison.py", "f"): "ShapeComparison rows (full model)",
+    ("aerostat_core/studies/reference.py", "p"): "the point-aerostat reference case",
+    ("aerostat_core/studies/shape_comparison.py", "m"): "mass items by name",
+    ("aerostat_core/studies/shape_comparison.py", "t"): "ShapeComparison rows (thesis model)",
+    ("aerostat_core/studies/shape_comparison.py", "f"): "ShapeComparison rows (full model)",
     ("app_ui/dynamics_view.py", "out"): "a dynamics run",
     ("app_ui/envelope_view.py", "mc"): "the Monte Carlo result",
     ("app_ui/form_model.py", "cfg"): "the configuration part of an inputs dict",
@@ -328,7 +328,7 @@ def test_no_module_reads_the_report_by_string_key():
     for folder in ("aerostat_core", "app_ui", "pages"):
         for path in sorted((ROOT / folder).rglob("*.py")):
             rel = path.relative_to(ROOT).as_posix()
-            if rel != "aerostat_core/report_parts.py":  # defines the deprecated key reads
+            if rel != "aerostat_core/output/report_parts.py":  # defines the deprecated key reads
                 found += _key_reads(path.read_text(encoding="utf-8"), rel)
     assert not found, (
         "read the design report by attribute (rep.perf.blow_by, rep.summary.volume_m3), "
@@ -347,7 +347,7 @@ def test_the_key_scan_finds_key_reads():
         'hull = d.airframe.mass.items["hull"]\n'
         'kite = m["fins"]\n'
     )
-    found = _key_reads(text, "aerostat_core/shape_comparison.py")
+    found = _key_reads(text, "aerostat_core/studies/shape_comparison.py")
     assert [f.split(": ", 1)[1] for f in found] == [
         "rep['perf']",
         "p['tension_winch']",
@@ -359,7 +359,7 @@ def test_the_key_scan_finds_key_reads():
 
 
 def test_the_scanned_keys_are_report_fields():
-    from aerostat_core.design import MissionSummary
+    from aerostat_core.model.design import MissionSummary
 
     classes = (DesignReport, PerformanceCurves, MomentCurve, TetherProfiles, HullDimensions,
                FinView, KeyPoints, DesignLimits, DesignSummary, MissionSummary)  # fmt: skip

@@ -8,9 +8,9 @@ import pytest
 from dask.distributed import Client, LocalCluster
 
 from aerostat_core import Requirement, design
-from aerostat_core.envelope import operating_envelope
-from aerostat_core.scale import map_blocks
-from aerostat_core.uncertainty import monte_carlo
+from aerostat_core.studies.envelope import operating_envelope
+from aerostat_core.studies.scale import map_blocks
+from aerostat_core.studies.uncertainty import monte_carlo
 
 
 @pytest.fixture(scope="module")

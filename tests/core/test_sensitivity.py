@@ -10,7 +10,7 @@ from hypothesis import strategies as st
 
 from aerostat_core import design, thesis_baseline
 from aerostat_core.optimize import DEFAULT_BOUNDS, VARIABLES, evaluate_designs
-from aerostat_core.sensitivity import (
+from aerostat_core.studies.sensitivity import (
     OUTPUTS,
     baseline_variables,
     baseline_volume,

@@ -4,9 +4,9 @@ from __future__ import annotations
 
 import pytest
 
+from aerostat_core.model.presets import thesis_configuration, thesis_requirement
 from aerostat_core.optimize import OptimizationProblem, solve
-from aerostat_core.presets import thesis_configuration, thesis_requirement
-from aerostat_core.shape_optimize import optimize_shapes, shape_bounds
+from aerostat_core.studies.shape_optimize import optimize_shapes, shape_bounds
 
 
 @pytest.fixture(scope="module")
@@ -52,7 +52,7 @@ def test_bounds_are_cut_to_the_shape_range_and_inputs_checked():
 
 
 def test_fineness_sweeps_per_shape():
-    from aerostat_core.shape_optimize import fineness_sweeps
+    from aerostat_core.studies.shape_optimize import fineness_sweeps
 
     sw = fineness_sweeps(thesis_requirement(), thesis_configuration(None), ("npl", "sphere"), 5)
     assert sw["sphere"].fineness_ratio.tolist() == [1.0]

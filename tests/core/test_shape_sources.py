@@ -15,9 +15,9 @@ import numpy as np
 import pytest
 from scipy.integrate import quad
 
-from aerostat_core import shapes
-from aerostat_core.geometry import hull_geometry
-from aerostat_core.shapes import SHAPE_INFO
+from aerostat_core.geometry import shapes
+from aerostat_core.geometry.hull import hull_geometry
+from aerostat_core.geometry.shapes import SHAPE_INFO
 
 #: LOTTE as published: length [m], diameter [m], volume [m3].
 LOTTE_PUBLISHED = (16.0, 4.0, 109.0)

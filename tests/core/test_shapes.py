@@ -13,26 +13,29 @@ from hypothesis import strategies as st
 from scipy.integrate import quad
 
 from aerostat_core import Configuration, HullSpec, Requirement, design
-from aerostat_core.geometry import half_spheroid_area, hull_geometry, lamb_factors
-from aerostat_core.helikite import helikite_limits, kite_geometry
-from aerostat_core.presets import thesis_baseline
-from aerostat_core.reference import LAMB_TABLE
-from aerostat_core.shape_comparison import (
+from aerostat_core.aerodynamics.drag import volumetric_drag_coefficient
+from aerostat_core.aerodynamics.helikite import helikite_limits, kite_geometry
+from aerostat_core.geometry.added_mass import (
+    added_mass_factors,
+    added_mass_numerical,
+    lamb_factors,
+    spheroid_lamb_factors,
+)
+from aerostat_core.geometry.hull import half_spheroid_area, hull_geometry
+from aerostat_core.geometry.shapes import (
+    GERTLER_TABLE,
+    SHAPE_INFO,
+    SHAPES,
+    profile_coefficients,
+    profile_data,
+)
+from aerostat_core.model.presets import thesis_baseline
+from aerostat_core.studies.reference import LAMB_TABLE
+from aerostat_core.studies.shape_comparison import (
     THESIS_TABLE_2_2,
     comparison_notes,
     full_model_shape_comparison,
     thesis_shape_comparison,
-)
-from aerostat_core.shapes import (
-    GERTLER_TABLE,
-    SHAPE_INFO,
-    SHAPES,
-    added_mass_factors,
-    added_mass_numerical,
-    profile_coefficients,
-    profile_data,
-    spheroid_lamb_factors,
-    volumetric_drag_coefficient,
 )
 
 GSM = 0.130  # thesis hull fabric [kg/m2] (Table 2.2, docs/methods.md §3.2)
@@ -50,7 +53,7 @@ def test_sphere_closed_forms():
     assert float(g.xi_surface) == pytest.approx(r, rel=1e-10)
     assert float(g.planform_area) == pytest.approx(math.pi * r**2, rel=1e-6)
     assert [float(k) for k in (g.k1, g.k2, g.k_rot)] == pytest.approx([0.5, 0.5, 0.0])
-    xi, rr, ws, wv = __import__("aerostat_core.geometry", fromlist=["x"]).profile_quadrature(g)
+    xi, rr, ws, wv = __import__("aerostat_core.geometry.hull", fromlist=["x"]).profile_quadrature(g)
     assert float(np.sum(wv)) == pytest.approx(100.0, rel=1e-10)
     assert float(np.sum(ws)) == pytest.approx(float(g.surface_area), rel=1e-12)
 
@@ -83,7 +86,7 @@ def test_spheroid_lamb_factors_closed_forms_against_lamb_integrals():
         k1, k2, _ = spheroid_lamb_factors(f)
         assert float(k1) == pytest.approx(al / (2 - al), rel=1e-7)
         assert float(k2) == pytest.approx(be / (2 - be), rel=1e-7)
-    # the prolate branch is geometry.lamb_factors; continuity through the sphere
+    # the prolate branch is added_mass.lamb_factors; continuity through the sphere
     assert [float(k) for k in spheroid_lamb_factors(1.0)] == pytest.approx([0.5, 0.5, 0.0])
     lo = [float(k) for k in spheroid_lamb_factors(0.999)]
     hi = [float(k) for k in spheroid_lamb_factors(1.001)]
@@ -225,7 +228,7 @@ def test_quadrature_converges(shape):
     assert abs(area(pd32) - area(pd256)) < 1e-6
     assert abs(pd64.planform - pd256.planform) < 1e-8
     g = hull_geometry(100.0, f, 0.432, shape)
-    from aerostat_core.geometry import profile_quadrature
+    from aerostat_core.geometry.hull import profile_quadrature
 
     _, _, ws, wv = profile_quadrature(g)
     assert float(np.sum(wv)) == pytest.approx(100.0, rel=1e-10)

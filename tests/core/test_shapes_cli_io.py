@@ -8,10 +8,10 @@ from dataclasses import replace
 import pytest
 
 from aerostat_core import Configuration, HullSpec, Requirement
-from aerostat_core.cli import main
-from aerostat_core.export import mesh_properties
-from aerostat_core.io import VERSION, cases_from_json, design_from_json, design_to_json
-from aerostat_core.shapes import SHAPES
+from aerostat_core.cli.entry import main
+from aerostat_core.geometry.shapes import SHAPES
+from aerostat_core.model.io import VERSION, cases_from_json, design_from_json, design_to_json
+from aerostat_core.output.export import mesh_properties
 
 
 def test_cli_shape_json_has_hull_mass_and_blow_by(capsys):
@@ -99,7 +99,7 @@ def test_version_1_files_load_as_npl():
 
 def test_compare_rows_show_the_shape():
     from aerostat_core import design
-    from aerostat_core.report import comparison_rows
+    from aerostat_core.output.report import comparison_rows
 
     a = design(Requirement(), Configuration(hull=HullSpec(volume=150.0)))
     b = design(Requirement(), Configuration(hull=HullSpec(shape="wang", volume=150.0)))

@@ -11,7 +11,7 @@ from hypothesis import strategies as st
 from scipy.special import gamma
 
 from aerostat_core import Requirement, design
-from aerostat_core.site_wind import (
+from aerostat_core.studies.site_wind import (
     MAX_CSV_BYTES,
     WeibullSite,
     flyable_intervals,

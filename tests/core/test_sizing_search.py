@@ -17,13 +17,13 @@ import numpy as np
 import pytest
 
 from aerostat_core import HullSpec, Requirement, design, size_volume, thesis_baseline
-from aerostat_core import sizing as sizing_mod
-from aerostat_core.airframe import build_airframe
-from aerostat_core.constraints import NAMES, constraint_state
-from aerostat_core.performance import evaluate
-from aerostat_core.presets import practice_configuration
-from aerostat_core.report import DesignReport, design_report
-from aerostat_core.shapes import SHAPE_INFO
+from aerostat_core.geometry.shapes import SHAPE_INFO
+from aerostat_core.model import sizing as sizing_mod
+from aerostat_core.model.airframe import build_airframe
+from aerostat_core.model.constraints import NAMES, constraint_state
+from aerostat_core.model.performance import evaluate
+from aerostat_core.model.presets import practice_configuration
+from aerostat_core.output.report import DesignReport, design_report
 
 #: The keys of ``design --json`` (a public contract), in order, for a design with a mission.
 SUMMARY_KEYS = [

@@ -8,8 +8,8 @@ from pathlib import Path
 
 import pytest
 
-from aerostat_core import constants as c
-from aerostat_core.materials import (
+from aerostat_core.base import constants as c
+from aerostat_core.structures.materials import (
     ADRDE_HELIUM_PERMEABILITY,
     ASSUMED_TENSILE_STRENGTH,
     FABRIC_SOURCES,
@@ -23,7 +23,7 @@ from aerostat_core.materials import (
     VIDEORAY_TETHERS,
     awg_area,
 )
-from aerostat_core.power import Conductors, power_tether
+from aerostat_core.tether.power import Conductors, power_tether
 
 SEED = Path("/work/shared/seed/000_fe1dc8fde547e527.txt")
 KGF_PER_CM = 9.80665 * 100.0  # 1 kgf/cm in N/m
@@ -137,7 +137,7 @@ def test_awg_areas_match_the_gauge_table():
 )
 def test_computed_power_tethers_are_what_power_tether_gives(name):
     """The catalogue's power tethers are the Dyneema 6 mm entry plus two ETFE-insulated copper
-    conductors (0.25 mm wall), exactly as aerostat_core.power.power_tether bundles them."""
+    conductors (0.25 mm wall), exactly as aerostat_core.tether.power.power_tether bundles them."""
     area = POWER_TETHER_CONDUCTORS[name]
     dia = math.sqrt(4 * area / math.pi)
     d_ins = dia + 2 * 0.25e-3

@@ -8,8 +8,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from aerostat_core import TetherSpec, design, thesis_baseline
-from aerostat_core.reference import case_p_static
-from aerostat_core.tether import solve_tether
+from aerostat_core.studies.reference import case_p_static
+from aerostat_core.tether.statics import solve_tether
 
 SPEC = TetherSpec("t", 0.02, 0.005, 1.0, 0.01, 1e4, 1.0e6)
 

@@ -11,9 +11,9 @@ from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
 from aerostat_core import TetherSpec
-from aerostat_core.inputs import WindProfile
-from aerostat_core.tether import interpolated_heights, march, solve_tether
-from aerostat_core.wind import profile_speed
+from aerostat_core.atmosphere.wind import profile_speed
+from aerostat_core.model.inputs import WindProfile
+from aerostat_core.tether.statics import interpolated_heights, march, solve_tether
 
 SPEC = TetherSpec("t", 0.02, 0.006, 1.2, 0.01, 1.6e4, 2.0e6)  # 20 g/m, 6 mm
 TOL = 1e-6
@@ -116,7 +116,7 @@ class _Counted:
     """The march, counted (each is the cost of one height pass)."""
 
     def __init__(self, monkeypatch):
-        from aerostat_core import tether
+        from aerostat_core.tether import statics as tether
 
         self.n = 0
         plain = tether.march
@@ -274,15 +274,15 @@ def test_warm_starts_do_not_change_a_sheared_design(monkeypatch):
     import importlib
     from dataclasses import replace
 
-    from aerostat_core import sizing
-    from aerostat_core.design import design
-    from aerostat_core.inputs import Requirement
-    from aerostat_core.presets import rules_configuration
+    from aerostat_core.model import sizing
+    from aerostat_core.model.design import design
+    from aerostat_core.model.inputs import Requirement
+    from aerostat_core.model.presets import rules_configuration
 
     for kind in ("power", "log"):
         req = Requirement(payload_mass=10, altitude=300)
         cfg = replace(rules_configuration("practice"), wind_profile=WindProfile(kind))
-        design_module = importlib.import_module("aerostat_core.design")
+        design_module = importlib.import_module("aerostat_core.model.design")
         with monkeypatch.context() as m:
             count = _Counted(m)
             warm = design(req, cfg)

@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 from aerostat_core import Requirement, design
-from aerostat_core.uncertainty import (
+from aerostat_core.studies.uncertainty import (
     DEFAULT_UNCERTAINTIES,
     UNCERTAINTY_NAMES,
     monte_carlo,
@@ -140,8 +140,8 @@ def test_histogram_reduction_agrees_with_the_exact_percentiles(d):
 
 def test_rule_set_comparison_keeps_the_mission_and_frees_the_limits():
     from aerostat_core import Requirement
-    from aerostat_core.inputs import RULE_FIELDS
-    from aerostat_core.uncertainty import mission_requirement
+    from aerostat_core.model.inputs import RULE_FIELDS
+    from aerostat_core.studies.uncertainty import mission_requirement
 
     req = Requirement(payload_mass=12, altitude=400, site_temperature=30.0, payload_power=50.0,
                       blow_by_limit=20.0).resolved()

@@ -20,14 +20,14 @@ from aerostat_core import (
     design,
     thesis_baseline,
 )
-from aerostat_core.io import design_to_json, inputs_to_dict
-from aerostat_core.validation import (
+from aerostat_core.base.validation import (
     MAX_MESSAGE_CHARS,
     POSITIVE_FLOOR,
     InputError,
     check_name,
     check_number,
 )
+from aerostat_core.model.io import design_to_json, inputs_to_dict
 
 
 def test_input_error_is_a_value_error_with_the_details():

@@ -12,7 +12,7 @@ import pytest
 from playwright.sync_api import Page, expect
 
 from aerostat_core import thesis_baseline
-from aerostat_core.io import design_from_json, design_to_json
+from aerostat_core.model.io import design_from_json, design_to_json
 from tests.e2e.helpers import (
     assert_no_exception,
     goto_page,

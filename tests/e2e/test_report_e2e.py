@@ -9,8 +9,8 @@ from pathlib import Path
 import pytest
 from playwright.sync_api import Browser
 
-from aerostat_core.cli import main
-from aerostat_core.html_report import SECTIONS
+from aerostat_core.cli.entry import main
+from aerostat_core.output.html_report import SECTIONS
 
 
 @pytest.fixture(scope="module")

@@ -12,7 +12,7 @@ import pytest
 from playwright.sync_api import Browser
 
 from aerostat_core import design, thesis_baseline
-from aerostat_core.html_report import build_report
+from aerostat_core.output.html_report import build_report
 
 #: A4 minus the report's @page margins (12 mm left/right, 14 mm top/bottom) in CSS px (96/in).
 A4_TEXT_WIDTH_PX = (210 - 2 * 12) / 25.4 * 96

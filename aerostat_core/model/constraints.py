@@ -1,0 +1,375 @@
+"""The constraint table: one definition of feasibility for sizing, ``design()``, the optimiser,
+the performance flags, the pages and the CLI.
+
+Each :class:`Constraint` has a name, a dimensionless value g(x) that is met when g <= its
+tolerance, a plain-language meaning and violation message, and a margin in the constraint's own
+unit (positive when met). :func:`constraint_state` evaluates the whole table for a batch of
+airframes at the requirement's design and survival winds (one vectorised trim + tether solve).
+
+Normalisations (docs/methods.md §1.12): an upper limit q <= q_max is g = q/q_max - 1; a lower
+limit q >= q_min is g = 1 - q/q_min; the free-lift margin is g = f_req - L_f/F_B (fraction of
+gross lift); the moment slopes are already coefficients per radian, g = C_m_alpha - limit.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from aerostat_core.model.airframe import Airframe
+from aerostat_core.model.inputs import Configuration, Requirement
+from aerostat_core.model.mission import endurance_quantities, structure_quantities
+from aerostat_core.model.performance import Evaluation, evaluate
+
+#: Feasibility tolerance on every g [-]: a design meets a constraint when g <= this.
+TOLERANCE = 1e-6
+
+
+@dataclass(frozen=True)
+class Constraint:
+    """One row of the constraint table.
+
+    name : key; label : short title; unit : unit of the margin and of value/limit;
+    text : what "met" means; template : violation message, formatted with ``value``, ``limit``
+    and ``wind`` (the wind speed it is checked at); at : "design", "survival" or "static"
+    (where it is checked); advice : what to change when no hull volume meets it;
+    tolerance : on g [-].
+    """
+
+    name: str
+    label: str
+    unit: str
+    text: str
+    template: str
+    at: str
+    advice: str = ""
+    tolerance: float = TOLERANCE
+
+
+#: The table, in display order.
+CONSTRAINTS: tuple[Constraint, ...] = (
+    Constraint("blow_by", "Blow-by", "m", "blow-by at the design wind within the limit",
+               "blow-by {value:.1f} m exceeds the limit {limit:.1f} m at {wind:g} m/s", "design",
+               "relax the blow-by limit or the design wind, or lower the drag"),
+    Constraint("altitude_loss", "Altitude loss", "m",
+               "altitude loss at the design wind within the permissible reduction",
+               "altitude loss {value:.1f} m exceeds the permissible {limit:.1f} m at {wind:g} m/s",
+               "design"),
+    Constraint("free_lift", "Free lift", "kg", "free lift at rest at least the required share "
+               "of gross lift",
+               "free lift {value:.2f} kg is below the required {limit:.2f} kg", "static",
+               "choose a lighter fabric, tether or payload, or a lighter gas"),
+    Constraint("taut_tether", "Taut tether", "N", "tether taut (upward tension everywhere) at "
+               "the design wind",
+               "the tether goes slack at {wind:g} m/s (net upward pull {value:.0f} N)", "design"),
+    Constraint("tether_angle", "Tether angle", "deg",
+               "tether angle from the vertical at the design wind within the limit",
+               "tether {value:.0f} deg from the vertical exceeds {limit:.0f} deg at {wind:g} m/s",
+               "design"),
+    Constraint("safety_factor", "Tether safety factor", "-",
+               "tether safety factor at the design wind at least the required value",
+               "tether safety factor {value:.2f} is below the required {limit:g} at {wind:g} m/s",
+               "design", "a larger hull only pulls harder: choose a stronger tether or relax the "
+               "blow-by limit"),
+    Constraint("survival_safety_factor", "Survival safety factor", "-",
+               "tether safety factor at the survival wind at least the required value",
+               "tether safety factor {value:.2f} is below the required {limit:g} at the "
+               "survival wind {wind:g} m/s", "survival",
+               "a larger hull only pulls harder: choose a stronger tether"),
+    Constraint("stall", "Fin stall", "deg", "equilibrium angle of attack below fin stall",
+               "angle of attack {value:.1f} deg is past fin stall ({limit:g} deg) at {wind:g} m/s",
+               "design"),
+    Constraint("stability", "Static stability", "1/rad",
+               "statically stable trim about the confluence point (C_m_alpha < 0)",
+               "statically unstable about the confluence point at {wind:g} m/s "
+               "(C_m_alpha {value:+.3f}/rad; no stable trim within +-80 deg if it is not found)",
+               "design"),
+    Constraint("weathervane", "Weathervane stability", "1/rad",
+               "aerodynamically stable hull: C_m_alpha of hull + fins about the centre of volume "
+               "at most minus the required margin",
+               "aerodynamically unstable about the centre of volume at {wind:g} m/s (C_m_alpha "
+               "{value:+.3f}/rad, needs <= {limit:+.3f}/rad): the fins lose to the Munk moment",
+               "design"),
+    Constraint("fins_on_hull", "Fins on the hull", "m", "fin trailing edge on the hull",
+               "fin trailing edge {value:.2f} m from the nose lies behind the tail "
+               "({limit:.2f} m)", "static"),
+    # mission rows (issue 13, aerostat_core.model.mission); met by today's designs unless the user asks
+    Constraint("envelope_stress", "Envelope stress", "N/m",
+               "envelope fabric strength at least the safety factor times the membrane load at "
+               "the required internal pressure, at the design wind",
+               "envelope fabric needs {value:.0f} N/m (load x safety factor) but has "
+               "{limit:.0f} N/m at {wind:g} m/s", "design",
+               "a larger hull only loads its fabric harder: choose a stronger fabric"),
+    Constraint("survival_envelope_pressure", "Survival envelope pressure", "Pa",
+               "the fabric carries, with its safety factor, the internal pressure the hull needs "
+               "at the survival wind",
+               "the hull needs {value:.0f} Pa at the survival wind {wind:g} m/s but the fabric "
+               "carries only {limit:.0f} Pa with its safety factor", "survival",
+               "choose a stronger fabric, or reel the aerostat in below the survival wind"),
+    Constraint("endurance", "Endurance", "day",
+               "free lift still at least the required share of gross lift after the required "
+               "days of helium permeation",
+               "the free-lift margin lasts {value:.1f} days of permeation, not the required "
+               "{limit:g} days", "static",
+               "choose a fabric of lower helium permeability or a shorter time between top-ups"),
+)
+
+#: Constraint names in table order (the column order of every g array).
+NAMES: tuple[str, ...] = tuple(c.name for c in CONSTRAINTS)
+#: Constraint by name.
+BY_NAME: dict[str, Constraint] = {c.name: c for c in CONSTRAINTS}
+
+
+def violation_messages(g, value, limit, design_wind: float, survival_wind: float) -> list[str]:
+    """Messages of the constraints broken by one design (rows of g, value, limit in table order)."""
+    out = []
+    for k, c in enumerate(CONSTRAINTS):
+        if float(g[k]) > c.tolerance:
+            wind = survival_wind if c.at == "survival" else design_wind
+            out.append(c.template.format(value=float(value[k]), limit=float(limit[k]), wind=wind))
+    return out
+
+
+def _upper(value, limit):
+    return value / limit - 1.0, limit - value
+
+
+def _lower(value, limit):
+    return 1.0 - value / limit, value - limit
+
+
+def wind_quantities(req: Requirement, cfg: Configuration, ev: Evaluation) -> dict:
+    """Value, limit and g of every wind-dependent constraint for an evaluation at any speed(s).
+
+    Parameters
+    ----------
+    req : Requirement
+        Resolved requirement (its limits are used at every speed of ``ev``).
+    cfg : Configuration
+    ev : Evaluation
+        Trim and tether solution (arrays broadcast over designs and speeds).
+
+    Returns
+    -------
+    dict
+        name -> (value, limit, g, margin) arrays, for the constraints checked at a wind speed
+        (the safety factor uses ``req.min_tether_safety_factor``).
+    """
+    af = ev.airframe
+    shape = np.broadcast_shapes(np.shape(ev.equilibrium.alpha), np.shape(ev.tether.blow_by))
+    one = np.ones(shape)
+    # moment slopes scale with q at the speed itself: normalise by that q (1 m/s in calm air,
+    # where only the buoyancy pendulum acts and the weathervane row is not checked; 1 cm/s floor)
+    u = np.where(ev.speed > 0, np.maximum(ev.speed, 1e-2), 1.0)
+    q = 0.5 * af.air_density * u**2
+    norm = q * af.hull.reference_area * af.hull.length
+    cma = ev.equilibrium.moment_slope / norm * one
+    cma = np.where(ev.equilibrium.found, cma, np.abs(cma) + 1e-3)
+    cma_aero = np.where(ev.speed > 0, ev.weathervane_slope / norm, -np.inf) * one
+    loss = af.tether_length - ev.tether.height
+    out = {}
+    bb = ev.tether.blow_by * one
+    out["blow_by"] = (bb, req.blow_by_limit * one, *_upper(bb, req.blow_by_limit))
+    loss = loss * one
+    out["altitude_loss"] = (loss, req.altitude_loss_limit * one,
+                            *_upper(loss, req.altitude_loss_limit))
+    tz = ev.tension_z * one
+    slack = (ev.tether.slack | (ev.tension_z <= 0.0)) * np.ones(shape, bool)
+    fb = np.maximum(np.abs(af.buoyancy), 1e-9)
+    out["taut_tether"] = (tz, 0.0 * one, np.where(slack, 1.0, -np.minimum(tz / fb, 1.0)),
+                          np.where(slack, np.minimum(tz, 0.0), tz))
+    ang = np.degrees(ev.tether.max_angle_from_vertical) * one
+    out["tether_angle"] = (ang, req.max_tether_angle_deg * one,
+                           *_upper(ang, req.max_tether_angle_deg))
+    sf = ev.safety_factor * one
+    out["safety_factor"] = (sf, req.min_tether_safety_factor * one,
+                            *_lower(sf, req.min_tether_safety_factor))
+    stall = float(cfg.aero.fin_stall_angle_deg)
+    a = np.abs(np.degrees(ev.equilibrium.alpha)) * one
+    out["stall"] = (a, stall * one, *_upper(a, stall))
+    out["stability"] = (cma, 0.0 * one, cma, -cma)
+    lim = -float(req.weathervane_margin)
+    wv_g = np.where(np.isfinite(cma_aero), cma_aero - lim, -1.0)
+    out["weathervane"] = (np.where(np.isfinite(cma_aero), cma_aero, 0.0), lim * one, wv_g, -wv_g)
+    st = structure_quantities(req, cfg, ev)
+    need, fab = st["strength_required"] * one, st["strength"] * one
+    out["envelope_stress"] = (need, fab, need / fab - 1.0, fab - need)
+    p_req, p_ok = st["pressure_required"] * one, st["pressure_allowable"] * one
+    g_p = np.where(p_ok > 0, p_req / np.where(p_ok > 0, p_ok, 1.0) - 1.0, 1.0 + p_req / fab)
+    out["survival_envelope_pressure"] = (p_req, p_ok, g_p, p_ok - p_req)
+    return out
+
+
+def static_quantities(req: Requirement, af: Airframe, cfg: Configuration | None = None) -> dict:
+    """Value, limit, g and margin of the constraints that do not depend on the wind (the
+    endurance row needs ``cfg``; without it the row is off)."""
+    g0 = af.g
+    fb = np.maximum(np.abs(af.buoyancy), 1e-9)
+    fl_kg = af.free_lift / g0
+    need_kg = req.free_lift_fraction * af.buoyancy / g0
+    out = {"free_lift": (fl_kg, need_kg, req.free_lift_fraction - af.free_lift / fb,
+                         fl_kg - need_kg)}
+    te = af.fins.xi_root_te * np.ones_like(af.hull.length)
+    out["fins_on_hull"] = (te, af.hull.length, *_upper(te, af.hull.length))
+    one = np.ones_like(af.hull.length)
+    if cfg is None:
+        out["endurance"] = (np.inf * one, 0.0 * one, -one, np.inf * one)
+    else:
+        e = endurance_quantities(req, cfg, af)
+        out["endurance"] = (e["days_to_top_up"] * one, float(req.endurance_days) * one,
+                            e["g"] * one, e["margin"] * one)
+    return out
+
+
+@dataclass(frozen=True)
+class ConstraintState:
+    """The constraint table evaluated for a batch of designs.
+
+    g, margin, value, limit : ndarray, shape (..., len(NAMES))
+        Columns in the order of :data:`NAMES`; ``margin``, ``value`` and ``limit`` are in each
+        constraint's unit (``CONSTRAINTS[k].unit``).
+    design_wind, survival_wind : float
+        Where the wind-dependent rows were checked [m/s].
+    evaluation : Evaluation
+        The trim + tether solution at [design, survival] wind (first axis of its arrays).
+    """
+
+    g: np.ndarray
+    margin: np.ndarray
+    value: np.ndarray
+    limit: np.ndarray
+    design_wind: float
+    survival_wind: float
+    evaluation: Evaluation
+
+    @property
+    def met(self) -> np.ndarray:
+        """Per constraint: g <= tolerance (shape of ``g``)."""
+        tol = np.array([c.tolerance for c in CONSTRAINTS])
+        return self.g <= tol
+
+    @property
+    def feasible(self) -> np.ndarray:
+        """Every constraint met (shape of the batch)."""
+        return self.met.all(axis=-1)
+
+    @property
+    def max_violation(self) -> np.ndarray:
+        """Largest g over the table (<= tolerance when feasible)."""
+        return self.g.max(axis=-1)
+
+    def _wind(self, c: Constraint) -> float:
+        return self.survival_wind if c.at == "survival" else self.design_wind
+
+    def messages(self, index=()) -> list[str]:
+        """Plain-language violation messages of design ``index`` (empty when feasible)."""
+        return violation_messages(self.g[index], self.value[index], self.limit[index],
+                                  self.design_wind, self.survival_wind)
+
+    def rows(self, index=()) -> list[dict]:
+        """The table for design ``index``: name, label, checked at, value, limit, margin, unit,
+        met, g."""
+        met = self.met[index]
+        rows = []
+        for k, c in enumerate(CONSTRAINTS):
+            at = {"static": "at rest", "design": f"{self.design_wind:g} m/s",
+                  "survival": f"{self.survival_wind:g} m/s"}[c.at]
+            rows.append({
+                "constraint": c.name, "label": c.label, "checked_at": at,
+                "value": float(self.value[index][k]), "limit": float(self.limit[index][k]),
+                "margin": float(self.margin[index][k]), "unit": c.unit,
+                "met": bool(met[k]), "g": float(self.g[index][k]),
+            })
+        return rows
+
+
+def _columns(parts, batch: tuple) -> np.ndarray:
+    """The per-constraint arrays as the columns of one array of shape batch + (n,) (one
+    broadcast for all of them, not one per column)."""
+    out = np.stack(np.broadcast_arrays(*(np.asarray(p, float) for p in parts)), axis=-1)
+    if out.shape[:-1] != batch:
+        out = np.array(np.broadcast_to(out, batch + out.shape[-1:]))
+    return out
+
+
+def constraint_state(req: Requirement, cfg: Configuration, af: Airframe,
+                     heights_hint=None) -> ConstraintState:
+    """Evaluate the whole table for an airframe batch (one trim + tether solve at two winds).
+
+    Parameters
+    ----------
+    req : Requirement
+        Resolved inside (``req.resolved()``).
+    cfg : Configuration
+    af : Airframe
+        Any batch shape S.
+    heights_hint : array_like, optional
+        Tether node heights [m] of shape (nodes, 2, ...) (the [design, survival] wind axis
+        second) to warm-start the sheared-wind height passes from
+        (:func:`aerostat_core.model.performance.evaluate`); the answer is the same within their
+        tolerance.
+
+    Returns
+    -------
+    ConstraintState
+        Arrays of shape S + (len(NAMES),).
+    """
+    req = req.resolved()
+    shape = np.shape(af.hull.volume)
+    speeds = np.array([req.design_wind, req.survival_wind], float).reshape((2,) + (1,) * len(shape))
+    ev = evaluate(req, cfg, af, speeds, heights_hint)
+    wq = wind_quantities(req, cfg, ev)
+    sq = static_quantities(req, af, cfg)
+    full = (2,) + np.broadcast_shapes(shape, np.shape(ev.tether.blow_by)[1:])
+    cols = []
+    for c in CONSTRAINTS:
+        if c.at == "static":
+            parts = sq[c.name]
+        else:
+            i = 1 if c.at == "survival" else 0
+            src = wq["safety_factor"] if c.name == "survival_safety_factor" else wq[c.name]
+            # the wind rows carry the speed axis first (wind_quantities broadcasts them)
+            parts = [x[i] if np.ndim(x) == len(full) else np.broadcast_to(x, full)[i]
+                     for x in src]
+            if c.name == "survival_safety_factor":
+                lim = req.survival_safety_factor
+                v = np.asarray(parts[0], float)
+                parts = [v, np.full_like(v, lim), *_lower(v, lim)]
+        cols.append(parts)
+    value, limit, g, margin = (_columns([p[j] for p in cols], full[1:]) for j in range(4))
+    return ConstraintState(g=g, margin=margin, value=value, limit=limit,
+                           design_wind=float(req.design_wind),
+                           survival_wind=float(req.survival_wind), evaluation=ev)
+
+
+def wind_flags(req: Requirement, cfg: Configuration, ev: Evaluation,
+               state: ConstraintState | None = None) -> dict:
+    """Per-speed flags for a wind sweep: constraint name -> bool array, True where the row
+    breaks that constraint of the table (limits of the design wind applied at every speed; the
+    survival check is the constraint table's, not a per-speed flag).
+
+    ``state``: the constraint table of the same airframe (one design), whose static rows are
+    then read instead of recomputed (the same numbers)."""
+    req = req.resolved()
+    wq = wind_quantities(req, cfg, ev)
+    sq = static_quantities(req, ev.airframe, cfg) if state is None else None
+    shape = np.shape(wq["blow_by"][0])
+    flags = {}
+    for k, c in enumerate(CONSTRAINTS):
+        if c.at == "survival":
+            continue
+        if c.at == "static" and state is not None:
+            g = np.asarray(state.g)[..., k]
+        else:
+            g = (sq if c.at == "static" else wq)[c.name][2]
+        flags[c.name] = np.broadcast_to(g > c.tolerance, shape).copy()
+    return flags
+
+
+def state_flags(state: ConstraintState) -> dict:
+    """The flags of :func:`wind_flags` at the design wind, read from a constraint table of one
+    design (its design-wind and static rows are those g): name -> bool."""
+    g = np.asarray(state.g).reshape(-1)
+    return {c.name: bool(g[k] > c.tolerance) for k, c in enumerate(CONSTRAINTS)
+            if c.at != "survival"}
