@@ -8,8 +8,7 @@ from pathlib import Path
 
 import streamlit as st
 
-from aerostat_core.base.fields import UNIT_SYSTEM_LABELS, UNIT_SYSTEMS
-from app_ui import formats, theme
+from app_ui import show, theme
 from app_ui.errors import report_unexpected
 from app_ui.state import STORE_ERR_KEY, attach_workspace
 
@@ -42,23 +41,12 @@ pages = [
     if (HERE / path).is_file()
 ]
 with st.sidebar:
-    # one switch for every page and the report: values stay SI inside and in every export
-    st.segmented_control(
-        "Units",
-        UNIT_SYSTEMS,
-        default="SI",
-        format_func=UNIT_SYSTEM_LABELS.get,
-        key="unit_system",
-        help="SI (m, kg, N, m/s, °C) or US customary (ft, lb, lbf, kt, ft³, °F): how results "
-        "are shown on the Design and Compare pages and in the design report. Inputs, the other "
-        "pages' studies and every export (CSV, JSON) stay in SI.",
-    )
+    show.unit_switch()  # one switch for every page and the report (exports stay SI)
     st.caption("Tethered aerostat design · Mahmood (2020) method, rebuilt from public sources")
     st.caption(
         "Your inputs and saved cases are kept in this workspace: bookmark or share this page's "
         "address to come back to them."
     )
-formats.use_system(st.session_state.get("unit_system") or "SI")
 store_error = st.session_state.get(STORE_ERR_KEY)
 if store_error:
     st.warning(store_error, icon=":material/database:")
