@@ -182,18 +182,22 @@ def test_unit_switch_shows_the_design_in_us_customary_units(browser: Browser, ba
 
 def _switch_units(page: Page) -> None:
     metric = page.get_by_test_id("stMetric")
-    expect(metric.filter(has_text="Volume [m³]").first).to_be_visible()
-    page.get_by_test_id("stSidebar").get_by_text("US customary", exact=True).click()
+    expect(metric.filter(has_text="Volume [m³]").first).to_be_visible(timeout=PAGE_TIMEOUT_MS)
+    us_button = page.get_by_test_id("stSidebar").get_by_role("radio", name="US customary")
+    expect(us_button).to_be_visible(timeout=PAGE_TIMEOUT_MS)
+    us_button.click()
     wait_for_rerun(page)
-    expect(metric.filter(has_text="Volume [ft³]").first).to_be_visible()
-    expect(metric.filter(has_text="Total mass [lb]").first).to_be_visible()
-    expect(metric.filter(has_text="Blow-by [ft]").first).to_be_visible()
+    expect(metric.filter(has_text="Volume [ft³]").first).to_be_visible(timeout=PAGE_TIMEOUT_MS)
+    expect(metric.filter(has_text="Total mass [lb]").first).to_be_visible(timeout=PAGE_TIMEOUT_MS)
+    expect(metric.filter(has_text="Blow-by [ft]").first).to_be_visible(timeout=PAGE_TIMEOUT_MS)
     page.get_by_test_id("stMain").get_by_role("tab", name="Performance", exact=True).click()
     wait_for_rerun(page)
-    expect(page.get_by_test_id("stTable").filter(has_text="Wind [kt]").first).to_be_visible()
+    expect(page.get_by_test_id("stTable").filter(has_text="Wind [kt]").first).to_be_visible(
+        timeout=PAGE_TIMEOUT_MS
+    )
     goto_page(page, "Compare")  # the choice holds for the whole app
-    page.get_by_test_id("stSidebar").get_by_text("SI", exact=True).click()
+    page.get_by_test_id("stSidebar").get_by_role("radio", name="SI").click()
     wait_for_rerun(page)
     goto_page(page, "Design")
-    expect(metric.filter(has_text="Volume [m³]").first).to_be_visible()
+    expect(metric.filter(has_text="Volume [m³]").first).to_be_visible(timeout=PAGE_TIMEOUT_MS)
     assert _raw_hits(page) == []
