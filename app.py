@@ -10,7 +10,7 @@ from pathlib import Path
 
 import streamlit as st
 
-from app_ui import workspace_ui
+from app_ui import show, theme, workspace_ui
 from app_ui.errors import report_unexpected
 
 HERE = Path(__file__).resolve().parent
@@ -30,8 +30,9 @@ st.set_page_config(
     page_title="Aerostat design",
     page_icon=":material/cloud:",
     layout="wide",
-    initial_sidebar_state="expanded",
+    initial_sidebar_state=theme.SIDEBAR_WIDTH,
 )
+st.html(theme.PAGE_CSS)
 # Binds this session to the workspace in the URL (?ws=...) and loads its saved cases; a bare
 # address offers the browser's recent workspaces back.
 workspace_ui.attach()
@@ -43,6 +44,7 @@ pages = [
     if path not in MISSING
 ]
 with st.sidebar:
+    show.unit_switch()  # one switch for every page and the report (exports stay SI)
     st.caption("Tethered aerostat design · Mahmood (2020) method, rebuilt from public sources")
 workspace_ui.status()  # where the work is kept; database outages; unsaved cases
 if MISSING:

@@ -492,9 +492,10 @@ def _hline(y: float, yref: str = "y") -> dict:
                 line=dict(color=LIMIT, dash="dash", width=1))
 
 
-def limit_lines(out: Mapping[str, Any], names, limits) -> tuple[list, str]:
+def limit_lines(out: Mapping[str, Any], names, limits, unit: str = "") -> tuple[list, str]:
     """Limit lines worth drawing: [(value, label)] for the limits the signals come within half
-    of (farther ones would flatten the curves), and a note naming the others."""
+    of (farther ones would flatten the curves), and a note naming the others with their value
+    and ``unit`` ("safe working load 12,000 N")."""
     peak = max((max(abs(v) for v in out["signals"][k]) for k in names if k in out["signals"]),
                default=0.0)
     lines, far = [], []
@@ -502,7 +503,10 @@ def limit_lines(out: Mapping[str, Any], names, limits) -> tuple[list, str]:
         if value is None:
             continue
         (lines if abs(value) == 0.0 or peak >= 0.5 * abs(value) else far).append((value, label))
-    note = ", ".join(sorted({f"{lab} {abs(v):.4g}" for v, lab in far}))
+    u = f" {unit}" if unit else ""
+    note = ", ".join(
+        sorted({f"{lab} {abs(v):,.0f}{u}" if abs(v) >= 1000 else f"{lab} {abs(v):.4g}{u}"
+                for v, lab in far}))
     return lines, (f"; not reached: {note}" if note else "")
 
 

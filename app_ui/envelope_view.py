@@ -28,7 +28,7 @@ from aerostat_core.studies.envelope import ENVELOPE_NAMES, Envelope, operating_e
 from aerostat_core.studies.site_wind import MAX_CSV_BYTES, WeibullSite, flyable_time, read_wind_csv
 from aerostat_core.studies.uncertainty import monte_carlo, rule_set_spread
 
-from . import cache, entry
+from . import cache, entry, formats, show
 from .plots import WIND_AXIS
 from .text import plain
 from .theme import MARGIN, PALETTE
@@ -90,6 +90,7 @@ class ReportKey(NamedTuple):
     site: SiteKey | None  # None: the default Weibull site
     n_samples: int  # Monte Carlo samples (0 leaves the uncertainty out)
     seed: int
+    units: str = "SI"  # unit system of the values shown (the sidebar's choice)
 
 
 # --- cached engine calls --------------------------------------------------------------------------
@@ -186,9 +187,10 @@ def cached_report_html(
     csv_bytes: bytes | None = None,
     n: int = 2000,
     seed: int = 0,
+    units: str = "SI",
 ) -> bytes:
     """The HTML design report with the tab's site wind and Monte Carlo (defaults: the default
-    Weibull site, 2000 samples)."""
+    Weibull site, 2000 samples), its values in unit system ``units``."""
     req, cfg = cache.given_inputs(inputs_json)
     key = ReportKey(
         requirement=req,
@@ -196,6 +198,7 @@ def cached_report_html(
         site=_site_key(site_json, csv_bytes),
         n_samples=int(n),
         seed=int(seed),
+        units=str(units),
     )
 
     def compute() -> bytes:
@@ -205,6 +208,7 @@ def cached_report_html(
             n_monte_carlo=key.n_samples,
             seed=key.seed,
             base_requirement=key.requirement,
+            units=key.units,
         ).encode("utf-8")
 
     return cache.memo("report_html", key, compute, 8)
@@ -334,14 +338,15 @@ def report_button(inputs_json: str) -> None:
     # report states the sample count it used)
     _, cfg = cache.given_inputs(inputs_json)
     run["n"] = min(run["n"], max_monte_carlo_samples(cfg.tether_segments, 10))
+    units = formats.system()  # the sidebar's unit system, read now (the build runs later)
 
     def build() -> bytes:
         try:
             return cached_report_html(
-                inputs_json, site.get("json"), site.get("csv"), run["n"], run["seed"]
+                inputs_json, site.get("json"), site.get("csv"), run["n"], run["seed"], units
             )
         except ValueError:  # a bad site file (its message is on the tab): the default site
-            return cached_report_html(inputs_json, None, None, run["n"], run["seed"])
+            return cached_report_html(inputs_json, None, None, run["n"], run["seed"], units)
 
     st.download_button(
         "Design report (HTML)",
@@ -437,7 +442,7 @@ def _flyable(inputs_json: str) -> None:
     except ValueError as exc:  # quotes the file's cell: never rendered as markup
         st.error(str(exc).translate(_MD), icon=":material/error:")
         return
-    c = st.columns(3)
+    c = show.metric_row(3)  # metrics as wide as their labels: columns cut them
     c[0].metric(
         "Time flyable [%]",
         f"{f['percent_time_flyable']:.1f}",
@@ -485,10 +490,12 @@ def _uncertainty(inputs_json: str, rep: DesignReport) -> None:
         st.error(plain(str(exc)), icon=":material/error:")
         return
     s = mc["summary"]
-    c = st.columns(4)
-    c[0].metric("Blow-by 5-95 % [m]", f"{s['blow_by_p05_m']:.1f}-{s['blow_by_p95_m']:.1f}")
-    c[1].metric("Tension 5-95 % [N]", f"{s['tension_p05_N']:.0f}-{s['tension_p95_N']:.0f}")
-    c[2].metric("Free lift 5-95 % [kg]", f"{s['free_lift_p05_kg']:.2f}-{s['free_lift_p95_kg']:.2f}")
+    c = show.metric_row(4)  # metrics as wide as their labels: four columns cut them
+    c[0].metric("Blow-by 5-95 % [m]", f"{s['blow_by_p05_m']:.1f} – {s['blow_by_p95_m']:.1f}")
+    c[1].metric("Tension 5-95 % [N]", f"{s['tension_p05_N']:.0f} – {s['tension_p95_N']:.0f}")
+    c[2].metric(
+        "Free lift 5-95 % [kg]", f"{s['free_lift_p05_kg']:.2f} – {s['free_lift_p95_kg']:.2f}"
+    )
     c[3].metric("P(all limits met)", f"{100 * s['probability_feasible']:.0f} %")
     st.plotly_chart(bands_figure(mc, rep), key="mc_bands")
     # static tables, full width, cells that wrap: every column in sight at 1024 px
@@ -505,25 +512,53 @@ def _uncertainty(inputs_json: str, rep: DesignReport) -> None:
 
 def _text_frame(df: pd.DataFrame) -> pd.DataFrame:
     """Numbers at 4 significant digits as text, so a static table's cells can wrap."""
-    return df.map(lambda v: f"{v:.4g}" if isinstance(v, float) else v)
+
+    def cell(v: Any) -> Any:
+        if isinstance(v, (bool, np.bool_)):
+            return formats.yes_no(v)  # never True/False
+        if isinstance(v, (float, np.floating)):
+            return f"{v:.4g}" if np.isfinite(v) else "not computed: no finite sample"
+        return v
+
+    return df.map(cell)
+
+
+def limits_frame(env: Envelope, payload_index: int = 0) -> pd.DataFrame:
+    """The envelope's altitude -> highest flyable wind table as text: a wind where there is one,
+    else why there is none in words (never "nan": :meth:`Envelope.limit_wind` is NaN where the
+    lowest wind of the grid already breaks a limit).
+
+    The wind column is "Flyable up to [m/s]"; the grid's top wind reads "≥ top" when every
+    wind of the grid is flyable (the limit lies beyond the map).
+    """
+    lw = env.limit_wind()[payload_index]
+    names = env.binding_names()[payload_index]
+    fly = env.flyable[payload_index]
+    top = float(env.wind[-1])
+    cells = []
+    for ia, w in enumerate(lw):
+        if np.isfinite(w):
+            at_top = bool(fly[ia].all())
+            cells.append(f"≥ {top:.1f} (top of the map)" if at_top else f"{w:.1f}")
+        else:
+            broken = BY_NAME[str(names[ia, 0])].label.lower()
+            cells.append(f"not flyable: {broken} broken at {float(env.wind[0]):g} m/s already")
+    return pd.DataFrame(
+        {"Altitude [m]": [f"{h:.0f}" for h in env.altitude], "Flyable up to [m/s]": cells}
+    )
 
 
 def render(inputs_json: str, rep: DesignReport) -> None:
     """The Envelope tab."""
     env = cached_envelope(inputs_json)
     st.plotly_chart(envelope_figure(env), key="envelope_map")
-    lw = env.limit_wind()[0]
     st.caption(
         f"{env.points} points for the built {env.volume:.1f} m³ aerostat (tether length "
         "= altitude, length limits scaled with it). Colour: the largest normalised "
         "constraint value g (> 0: a limit is broken); hover for the binding constraint "
         "and its margin."
     )
-    limits = pd.DataFrame({"Altitude [m]": env.altitude, "Flyable up to [m/s]": lw})
-    st.table(
-        limits.style.format({"Altitude [m]": "{:.0f}", "Flyable up to [m/s]": "{:.1f}"}),
-        hide_index=True,
-    )
+    st.table(limits_frame(env), hide_index=True)
     st.subheader("Flyable time", anchor=False)
     _flyable(inputs_json)
     st.subheader("Uncertainty", anchor=False)

@@ -16,7 +16,7 @@ from aerostat_core.base.validation import InputError
 from aerostat_core.model.input_paths import spec_for_path
 from aerostat_core.model.mission import MissionSpec
 
-from . import cache, entry, state
+from . import cache, entry, formats, show, state
 from .text import plain
 
 #: Labels of the choices (the values are the engine's).
@@ -82,8 +82,14 @@ def _apply() -> None:
 def _select(col: Any, path: str, key: str, value: str, shown: dict[str, str]) -> None:
     e = spec_for_path(path)
     options = list(e.spec.choices)
-    col.selectbox(e.label, options, index=options.index(value), format_func=shown.get, key=key,
-                  help=e.spec.help)
+    col.selectbox(
+        e.label,
+        options,
+        index=options.index(value),
+        format_func=shown.get,
+        key=key,
+        help=e.spec.help,
+    )
 
 
 def _inputs(req, cfg) -> None:
@@ -97,8 +103,13 @@ def _inputs(req, cfg) -> None:
         entry.spec_box(
             c[0], Requirement, "deployment_days", req.deployment_days, "mission_deployment"
         )
-        _select(c[1], "configuration.mission.ballonet", "mission_ballonet", cfg.mission.ballonet,
-                BALLONET_LABELS)
+        _select(
+            c[1],
+            "configuration.mission.ballonet",
+            "mission_ballonet",
+            cfg.mission.ballonet,
+            BALLONET_LABELS,
+        )
         entry.spec_box(c[2], MissionSpec, "superheat", cfg.mission.superheat, "mission_superheat")
         st.form_submit_button("Apply mission inputs", on_click=_apply, icon=":material/send:")
     err = st.session_state.get(ERROR_KEY)
@@ -112,10 +123,12 @@ def render(d) -> None:
     s = d.summary().mission  # the mission headline numbers (MissionSummary)
     req, cfg = d.requirement, d.configuration
     _inputs(req, cfg)
-    c = st.columns(6)
+    # a wrapping row (metrics as wide as their label): six fixed columns cut the labels to
+    # "He top-up, 3…" even at 1400 px; volumes and forces in the sidebar's unit system
+    c = show.metric_row(6)
     c[0].metric(
-        "Ballonet [m³]",
-        _fmt(s.ballonet_volume_m3),
+        formats.label("Ballonet", "volume"),
+        formats.shown(s.ballonet_volume_m3, "volume"),
         help="Ballonet volume from launch to operating altitude plus the superheat.",
     )
     c[1].metric(
@@ -124,8 +137,8 @@ def render(d) -> None:
         help="Days of helium permeation until the free lift falls to the required share.",
     )
     c[2].metric(
-        f"He top-up, {req.deployment_days:g} d [m³]",
-        _fmt(s.helium_top_up_m3),
+        formats.label(f"He top-up, {req.deployment_days:g} d", "volume"),
+        formats.shown(s.helium_top_up_m3, "volume"),
         help=f"Helium to replace what permeates out; cost {m.top_up_cost:,.0f} USD.",
     )
     c[3].metric(
@@ -134,8 +147,8 @@ def render(d) -> None:
         help="Fabric strength / (safety factor × membrane load) − 1 at the design wind.",
     )
     c[4].metric(
-        "Winch pull [N]",
-        _fmt(s.winch_pull_N, 0),
+        formats.label("Winch pull", "force"),
+        formats.shown(s.winch_pull_N, "force"),
         help="Largest tether tension at the winch over the sweep and the survival wind.",
     )
     c[5].metric(
@@ -188,11 +201,14 @@ def render(d) -> None:
             "Group": [r["group"] for r in rows],
             "Quantity": [r["quantity"] for r in rows],
             "Value": [r["value"] for r in rows],
-            "Unit": [r["unit"] for r in rows],
+            "Unit": [formats.cell_unit(r["unit"]) for r in rows],  # "-" was a Markdown bullet
         }
     )
     # static, cells that wrap: every row and column in sight at 1024 px (the grid scrolled)
-    st.table(frame.style.format({"Value": "{:.4g}"}, na_rep="–"), hide_index=True)
+    st.table(
+        frame.style.format({"Value": "{:.4g}"}, na_rep=formats.missing("no finite value")),
+        hide_index=True,
+    )
     st.download_button(
         "Mission table (CSV)",
         data=cache.csv_bytes(rows),

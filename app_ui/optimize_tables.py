@@ -159,7 +159,7 @@ def pareto_frame(front: ParetoFront) -> pd.DataFrame:
                 "f [-]": r["fineness_ratio"],
                 "ΔS_f [%]": r["area_change_pct"],
                 "Δl_f [% of l]": shown("position", r["position"]),
-                "On front": r["on_front"],
+                "On front": formats.yes_no(r["on_front"]),
                 "Why infeasible": r["reason"],
             }
             for r in front.rows()
@@ -181,7 +181,7 @@ def sweep_frame(res: SensitivityResult) -> pd.DataFrame:
                 "Blow-by [m]": r["blow_by_m"],
                 "α_eq [deg]": r["alpha_eq_deg"],
                 "Dynamic lift [N]": r["dynamic_lift_N"],
-                "Feasible": r["feasible"],
+                "Feasible": formats.yes_no(r["feasible"]),
                 "Violations": r["violations"],
             }
             for r in res.rows()

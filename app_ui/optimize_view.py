@@ -326,3 +326,33 @@ __all__ = [
     "var_label",
     "variable_range_inputs",
 ]
+
+
+def resize_caption(res) -> str:
+    """The caption of the re-sized sweeps, from the sweeps themselves: whether the blow-by
+    reaches its limit (the limit sets the volume) at every, some or none of the feasible points.
+    A fixed "the blow-by equals the limit" was wrong where another requirement sizes the hull
+    (about 128 m against a 150 m limit on the practice default)."""
+    lim = float(res.blow_by_limit)
+    ok = [r for r in res.rows() if r["feasible"]]
+    at = [abs(float(r["blow_by_m"]) - lim) <= 0.01 * lim for r in ok]
+    tail = " Red crosses break another constraint (hover for which)."
+    if not ok:
+        return f"No sweep point meets every requirement (blow-by limit {lim:g} m).{tail}"
+    lo = min(float(r["blow_by_m"]) for r in ok)
+    hi = max(float(r["blow_by_m"]) for r in ok)
+    if all(at):
+        return (
+            f"The blow-by equals the limit, {lim:g} m, at every feasible point: the limit is what "
+            f"sets the volume.{tail}"
+        )
+    if not any(at):
+        return (
+            f"The blow-by stays below the limit {lim:g} m at every feasible point ({lo:.0f}-"
+            f"{hi:.0f} m): another requirement sets the volume, not the blow-by limit.{tail}"
+        )
+    return (
+        f"The blow-by reaches the limit {lim:g} m at {sum(at)} of {len(ok)} feasible points (there "
+        f"the limit sets the volume); elsewhere another requirement sizes the hull and the "
+        f"blow-by is lower (down to {lo:.0f} m).{tail}"
+    )

@@ -125,6 +125,11 @@ def sensitivity_figure(res: SensitivityResult) -> go.Figure:
     return fig
 
 
+#: Legend of the two-variable map: one row above the plot area, left-aligned (clear of the
+#: colour bar and its title on the right).
+MAP_LEGEND = dict(orientation="h", x=0.0, xanchor="left", y=1.02, yanchor="bottom")
+
+
 def map_figure(m: SensitivityMap) -> go.Figure:
     """Total mass over two variables, with the blow-by-limit contour (held volume) or the
     infeasible points (re-sized), and the baseline."""
@@ -187,12 +192,16 @@ def map_figure(m: SensitivityMap) -> go.Figure:
         if m.resize
         else f"hull held at {formats.text(m.volume_held, 'volume')} m³"
     )
-    return _layout(
+    fig = _layout(
         fig,
         f"Total mass over {VARIABLE_INFO[m.x_variable][0]} × "
         f"{VARIABLE_INFO[m.y_variable][0]} ({mode})",
         height=560,
     )
+    # the legend above the plot, the colour bar alone on the right: both on the right, the
+    # legend sat on the colour bar's title
+    fig.update_layout(legend=MAP_LEGEND, margin_t=fig.layout.margin.t + 25)
+    return fig
 
 
 def convergence_figure(results: Sequence[OptimizationResult]) -> go.Figure:

@@ -385,6 +385,15 @@ def geometry_note(shape: str) -> str:
 
 
 # --- Streamlit pieces used by other pages ------------------------------------------------------
+#: The export buttons: key -> label (the format first, so no two read alike), file, MIME type.
+EXPORT_BUTTONS = (
+    ("stl", "STL: hull and fins", "aerostat.stl", "model/stl"),
+    ("dxf", "DXF: gore patterns", "gores.dxf", "application/dxf"),
+    ("svg", "SVG: gore patterns", "gores.svg", "image/svg+xml"),
+    ("csv", "CSV: gore half-widths", "gores.csv", "text/csv"),
+)
+
+
 def export_panel(inputs_json: str) -> None:
     """Design page: STL of hull and fins, gore and fin patterns (DXF, SVG, CSV) downloads."""
     c = st.columns([1, 1, 2])
@@ -415,17 +424,11 @@ def export_panel(inputs_json: str) -> None:
         f"Patterns: {files['area']}. STL in metres, body axes (x aft from the nose, "
         "z up); DXF in metres; SVG in millimetres."
     )
-    d = st.columns(4)
-    for col, (key, label, name, mime) in zip(
-        d,
-        (
-            ("stl", "Hull and fins (STL)", "aerostat.stl", "model/stl"),
-            ("dxf", "Gore patterns (DXF)", "gores.dxf", "application/dxf"),
-            ("svg", "Gore patterns (SVG)", "gores.svg", "image/svg+xml"),
-            ("csv", "Gore half-widths (CSV)", "gores.csv", "text/csv"),
-        ),
-    ):
-        col.download_button(
+    # a wrapping row of whole buttons, the format first: in four columns the labels were cut to
+    # "Gore patterns (..." and the DXF and SVG buttons read the same
+    row = st.container(horizontal=True, wrap=True)
+    for key, label, name, mime in EXPORT_BUTTONS:
+        row.download_button(
             label,
             # a callable: the files (the STL is 2 MB) are sent only when asked for, not with
             # every page view (a fresh browser fetched them all before the first result)

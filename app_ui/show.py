@@ -7,7 +7,13 @@ from typing import Any
 
 import streamlit as st
 
+from aerostat_core.base.fields import UNIT_SYSTEM_LABELS, UNIT_SYSTEMS
+
+from . import formats
 from .text import plain
+
+#: Session key of the unit system chosen in the sidebar ("SI" or "US").
+UNIT_KEY = "unit_system"
 
 
 class _MetricSlot:
@@ -25,7 +31,7 @@ def metric_row(n: int) -> list[_MetricSlot]:
     """``n`` places for headline numbers, used like ``st.columns(n)``: a wrapping horizontal
     row whose metrics take the width of their label and value, so a narrow window moves a
     metric to the next line instead of cutting it to "1…" (fixed columns did at 1024 px)."""
-    row = st.container(horizontal=True, wrap=True, gap="large")
+    row = st.container(horizontal=True, wrap=True, gap="medium")
     return [_MetricSlot(row)] * n
 
 
@@ -34,3 +40,22 @@ def feedback(level: str, text: str) -> None:
     plain text (see :func:`~app_ui.text.plain`)."""
     show = {"success": st.success, "info": st.info, "warning": st.warning}.get(level, st.error)
     show(plain(text))
+
+
+def unit_switch() -> None:
+    """The unit-system switch (SI / US customary), once for the whole app (``app.py`` draws it in
+    the sidebar before running the page), and the choice applied to this script run
+    (:func:`app_ui.formats.use_system`): the Design and Compare results, the Mission tab and the
+    design report follow it; inputs, studies and exports stay SI."""
+    st.segmented_control(
+        "Units",
+        UNIT_SYSTEMS,
+        default="SI",
+        format_func=UNIT_SYSTEM_LABELS.get,
+        key=UNIT_KEY,
+        help="SI (m, kg, N, m/s, °C) or US customary (ft, lb, lbf, kt, ft³, °F): how results "
+        "are shown on the Design and Compare pages and in the design report. Inputs, the other "
+        "pages' studies and every export (CSV, JSON) stay in SI; a CSV of the Design page adds "
+        "US columns.",
+    )
+    formats.use_system(st.session_state.get(UNIT_KEY) or "SI")

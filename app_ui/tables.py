@@ -105,7 +105,7 @@ def geometry_frame(rows: Sequence[Mapping[str, Any]]) -> pd.DataFrame:
         {
             "Quantity": [r["quantity"] for r in rows],
             "Value": [float(r["value"]) for r in rows],
-            "Unit": [formats.unit(r["unit"]) for r in rows],
+            "Unit": [formats.cell_unit(r["unit"]) for r in rows],
         }
     )
 
@@ -121,7 +121,14 @@ def geometry_styler(df: pd.DataFrame) -> Styler:
         rows.setdefault(formats.kind_of_unit(_SHOWN_UNIT.get(str(u), str(u)), str(q)), []).append(i)
     styler = df.style.set_table_styles(WRAP)
     for kind, idx in rows.items():
-        styler = styler.format(formats.formatter(kind), subset=pd.IndexSlice[idx, ["Value"]])
+        styler = styler.format(formats.shown_formatter(kind), subset=pd.IndexSlice[idx, ["Value"]])
+        # the unit of the chosen system (ft for m, ...) next to the converted value
+        styler = styler.format(
+            lambda u, kind=kind: (
+                formats.cell_unit(formats.unit_of(kind)) if formats.KINDS[kind].si else u
+            ),
+            subset=pd.IndexSlice[idx, ["Unit"]],
+        )
     return styler
 
 
@@ -155,7 +162,9 @@ def mass_frame(rows: Sequence[Mapping[str, Any]]) -> pd.DataFrame:
 
 def mass_styler(df: pd.DataFrame) -> Styler:
     """:func:`mass_frame` as a static table: masses and shares at their decimals, no index."""
-    fmt = {"Mass [kg]": formats.formatter("mass"), "Share [%]": formats.formatter("share")}
+    df = df.rename(columns=formats.relabel)  # "Mass [lb]" in US customary units
+    fmt = {formats.relabel("Mass [kg]"): formats.shown_formatter("mass")}
+    fmt["Share [%]"] = formats.formatter("share")
     return df.style.format(fmt).hide(axis="index")
 
 
@@ -180,7 +189,13 @@ def performance_styler(df: pd.DataFrame, columns: Sequence[str] | None = None) -
     def rowstyle(row: pd.Series) -> list[str]:
         return [LIMIT_ROW_STYLE if limited[row.name] else ""] * len(row)
 
-    fmt = {c: formats.formatter(PERF_KINDS[c]) for c in shown.columns if c in PERF_KINDS}
+    # values and headers in the chosen unit system ("Blow-by [ft]")
+    fmt = {
+        formats.relabel(c): formats.shown_formatter(PERF_KINDS[c])
+        for c in shown.columns
+        if c in PERF_KINDS
+    }
+    shown = shown.rename(columns=formats.relabel)
     return shown.style.apply(rowstyle, axis=1).format(fmt).hide(axis="index")
 
 
@@ -242,18 +257,22 @@ def comparison_frame(
         kind = _RESULT_KINDS.get(r["quantity"]) if r["section"] == "result" else None
         v = r.get(n)
         if kind and isinstance(v, (int, float, np.floating)) and not isinstance(v, bool):
-            return formats.text(v, kind)
+            return formats.shown(v, kind)  # in the chosen unit system, as its label says
         return format_value(v)
 
     for n in names:
         data[n] = [cell(r, n) for r in keep]
-    data["Differs"] = [bool(r["differs"]) for r in keep]
+    data["Quantity"] = [
+        formats.relabel(q) if r["section"] == "result" and q in _RESULT_KINDS else q
+        for r, q in zip(keep, data["Quantity"])
+    ]
+    data["Differs"] = [formats.yes_no(r["differs"]) for r in keep]  # words, never True/False
     return pd.DataFrame(data)
 
 
 def comparison_styler(df: pd.DataFrame) -> Styler:
     """Yellow background on the rows where the cases differ."""
-    differs = df["Differs"].to_numpy(bool)
+    differs = (df["Differs"] == formats.yes_no(True)).to_numpy(bool)
 
     def rowstyle(row: pd.Series) -> list[str]:
         return [DIFF_ROW_STYLE if differs[row.name] else ""] * len(row)
@@ -262,22 +281,127 @@ def comparison_styler(df: pd.DataFrame) -> Styler:
 
 
 def labelled_table(
-    rows: Sequence[Mapping[str, Any]], columns: Mapping[str, tuple[str, str | None]]
+    rows: Sequence[Mapping[str, Any]],
+    columns: Mapping[str, tuple[str, str | None] | tuple[str, str | None, str]],
 ) -> pd.DataFrame:
     """Rows as the text of a static table (cells wrap, so every column is in sight at 1024 px):
-    the ``columns`` {key: (header, format)} in order, numbers by ``format`` ("{:.3f}"), booleans
-    as yes/no, a missing or non-finite number as "–"; keys absent from the rows are left out."""
+    the ``columns`` {key: (header, format[, missing])} in order, numbers by ``format``
+    ("{:.3f}", never "-0.000"), booleans as yes/no, a missing or non-finite number as
+    ``missing`` (default "not computed: no value"); a "Unit" column's "-" as "–" (Markdown made
+    it a bullet); keys absent from the rows are left out.
 
-    def cell(v: Any, fmt: str | None) -> Any:
+    >>> labelled_table([{"a": -0.0001, "u": "-", "t": None}],
+    ...                {"a": ("A", "{:.3f}"), "u": ("Unit", None), "t": ("T", None, "never")}
+    ...                ).iloc[0].tolist()
+    ['0.000', '–', 'never']
+    """
+
+    def cell(v: Any, spec: tuple) -> Any:
+        header, fmt = spec[0], spec[1]
         if isinstance(v, (bool, np.bool_)):
             return "yes" if v else "no"
         if v is None or (isinstance(v, (float, np.floating)) and not np.isfinite(v)):
-            return "–"
+            return spec[2] if len(spec) > 2 else formats.missing("no value")
+        if header == "Unit" and isinstance(v, str):
+            return formats.cell_unit(v)
         if fmt and isinstance(v, (int, float, np.integer, np.floating)):
-            return fmt.format(v)
+            return _no_negative_zero(fmt.format(v))
         return v
 
     keys = [k for k in columns if any(k in r for r in rows)]
-    return pd.DataFrame(
-        {columns[k][0]: [cell(r.get(k), columns[k][1]) for r in rows] for k in keys}
-    )
+    return pd.DataFrame({columns[k][0]: [cell(r.get(k), columns[k]) for r in rows] for k in keys})
+
+
+def _no_negative_zero(text: str) -> str:
+    """ "-0.000" -> "0.000": a value that rounds to zero has no sign."""
+    if text.startswith("-") and not any(ch in "123456789" for ch in text):
+        return text[1:]
+    return text
+
+
+#: CSV column-name suffixes (the SI unit in the key, "blow_by_m") -> unit token; two-part
+#: suffixes first ("m_s" before "s").
+_SUFFIX_UNIT = {
+    "m_s": "m/s",
+    "per_rad": "1/rad",
+    "m3": "m3",
+    "m2": "m2",
+    "m": "m",
+    "kg": "kg",
+    "N": "N",
+    "deg": "deg",
+    "pct": "%",
+    "USD": "USD",
+    "W": "W",
+    "s": "s",
+}
+#: US unit -> its CSV suffix ("ft³" -> "ft3").
+_US_SUFFIX = {"ft": "ft", "ft²": "ft2", "ft³": "ft3", "lb": "lb", "lbf": "lbf", "kt": "kt"}
+
+
+def column_unit(name: str) -> str:
+    """The SI unit of a CSV column from its name's suffix ("blow_by_m" -> "m", "wind_speed_m_s"
+    -> "m/s", "safety_factor" -> "").
+
+    >>> column_unit("blow_by_m"), column_unit("wind_speed_m_s"), column_unit("safety_factor")
+    ('m', 'm/s', '')
+    """
+    parts = str(name).split("_")
+    for n in (2, 1):
+        if len(parts) > n and "_".join(parts[-n:]) in _SUFFIX_UNIT:
+            return _SUFFIX_UNIT["_".join(parts[-n:])]
+    return ""
+
+
+def export_csv(rows: Sequence[Mapping[str, Any]], system: str = "SI") -> bytes:
+    """UTF-8 CSV of result rows for download: the SI columns as always (their names end in the
+    unit), a second row giving each column's unit, and in US customary units one more column
+    after each converted one ("blow_by_ft" after "blow_by_m"). Text cells are protected against
+    formula injection as in :func:`aerostat_core.model.io.rows_to_csv`.
+
+    >>> print(export_csv([{"blow_by_m": 30.48, "flags": ""}], "US").decode(), end="")
+    blow_by_m,blow_by_ft,flags
+    m,ft,
+    30.48,100.0,
+    """
+    import csv
+    import io
+
+    from aerostat_core.base.fields import unit_in
+    from aerostat_core.model.io import csv_safe
+
+    if not rows:
+        return b""
+    names = list(rows[0].keys())
+    cols: list[tuple[str, str, Any]] = []  # (name, unit, converter)
+    for n in names:
+        u = column_unit(n)
+        cols.append((n, u, None))
+        du = unit_in(_RAW.get(u, u), system) if u else None
+        if system != "SI" and du is not None and du.unit in _US_SUFFIX:
+            base = n[: -len(u.replace("/", "_"))].rstrip("_") if u != "m/s" else n[:-4]
+            cols.append((f"{base}_{_US_SUFFIX[du.unit]}", du.unit, du.show))
+    buf = io.StringIO()
+    w = csv.writer(buf, lineterminator="\n")
+    w.writerow([csv_safe(c[0]) for c in cols])
+    w.writerow([c[1] for c in cols])
+    for r in rows:
+        out = []
+        for n, _u, conv in cols:
+            if conv is None:
+                out.append(csv_safe(r.get(n, "")))
+            else:
+                v = r.get(_source(cols, n))
+                ok = isinstance(v, (int, float)) and not isinstance(v, bool)
+                out.append(round(conv(float(v)), 12) if ok else "")
+        w.writerow(out)
+    return buf.getvalue().encode("utf-8")
+
+
+_RAW = {"m³": "m3", "m²": "m2"}
+
+
+def _source(cols: list[tuple[str, str, Any]], name: str) -> str:
+    """The SI column a converted column follows."""
+    i = [c[0] for c in cols].index(name)
+    return cols[i - 1][0]

@@ -38,14 +38,74 @@ LEGEND_BELOW = dict(orientation="h", y=-0.22)
 LEGEND_RIGHT = dict(orientation="v", x=1.02, xanchor="left", y=1.0, yanchor="top")
 
 
+#: Characters of a title line: a half-width chart at 1024 px is about 350 px wide, where a
+#: 15 px title of more than ~45 characters ran off the figure and was cut.
+TITLE_CHARS = 45
+
+
+def wrap_title(title: str, width: int = TITLE_CHARS) -> str:
+    """A figure title broken into lines of at most ``width`` characters (at spaces, with
+    plotly's ``<br>``), so a long title is never cut at the figure's edge.
+
+    >>> wrap_title("Total mass over fineness ratio × fin position (hull re-sized)", 30)
+    'Total mass over fineness ratio<br>× fin position (hull re-sized)'
+    """
+    lines: list[str] = []
+    for word in str(title).split(" "):
+        if lines and len(lines[-1]) + 1 + len(word) <= width:
+            lines[-1] += " " + word
+        else:
+            lines.append(word)
+    return "<br>".join(lines)
+
+
 def base_layout(title: str, **layout: Any) -> dict[str, Any]:
-    """The common layout of a figure: title, font, margins and a legend below the plot;
-    ``layout`` overrides or adds keys."""
+    """The common layout of a figure: title (wrapped, with room above the plot for every line),
+    font, margins and a legend below the plot; ``layout`` overrides or adds keys."""
+    text = wrap_title(title)
+    lines = text.count("<br>") + 1
     lay: dict[str, Any] = dict(
-        title=dict(text=title, font=dict(size=TITLE_SIZE)),
+        title=dict(text=text, font=dict(size=TITLE_SIZE)),
         font=FONT,
         margin=MARGIN,
         legend=LEGEND_BELOW,
     )
     lay.update(layout)
+    margin = dict(lay.get("margin") or MARGIN)
+    margin["t"] = max(int(margin.get("t", MARGIN["t"])), 30 + 20 * lines)
+    lay["margin"] = margin
     return lay
+
+
+#: Sidebar width at first paint [px]: Streamlit's default 300 px left a 1024 px window 724 px
+#: for the page, where the Design page's tabs scrolled sideways and labels broke mid-word.
+SIDEBAR_WIDTH = 220
+
+#: The app's few CSS rules (layout only; colours come from .streamlit/config.toml).
+#: * the sidebar 220 px wide, the page's side padding 1.5 rem (5 rem left a 1024 px window a
+#:   125 px wide input column), a smaller page title and headline numbers: the verdict and the
+#:   ten key numbers of the Design page above the fold at 1024 x 768;
+#: * tab bars wrap onto a second line instead of scrolling sideways (every tab in sight; the
+#:   sliding underline, placed for one line, is replaced by the selected tab's own);
+#: * labels and table cells break between words, never inside one ("Ope-rational");
+#: * a button's or a check box's label wraps instead of ending in an ellipsis ("Load thesis
+#:   b…", "Sav…", "Ramp and h…").
+PAGE_CSS = f"""
+<style>
+section[data-testid="stSidebar"] {{ width: {SIDEBAR_WIDTH}px !important;
+  min-width: {SIDEBAR_WIDTH}px !important; }}
+[data-testid="stTabs"] [role="tablist"] {{ flex-wrap: wrap; overflow-x: visible; row-gap: 0.25rem; }}
+[data-testid="stTabs"] [role="tablist"] [data-baseweb="tab-highlight"],
+[data-testid="stTabs"] [role="tablist"] [data-baseweb="tab-border"] {{ display: none; }}
+[data-testid="stTabs"] [role="tab"][aria-selected="true"] {{ box-shadow: inset 0 -3px 0 {ACCENT}; }}
+[data-testid="stWidgetLabel"] p, [data-testid="stMetricLabel"] p, [data-testid="stTable"] th,
+[data-testid="stTable"] td {{ word-break: normal; overflow-wrap: normal; hyphens: manual; }}
+button [data-testid="stMarkdownContainer"],
+[data-testid="stWidgetLabel"] [data-testid="stMarkdownContainer"] {{ overflow: visible;
+  text-overflow: clip; white-space: normal; }}
+button [data-testid="stMarkdownContainer"] p {{ white-space: normal; text-align: left; }}
+[data-testid="stMainBlockContainer"] {{ padding: 1.5rem 1.5rem 4rem 1.5rem; }}
+[data-testid="stMain"] h1 {{ font-size: 1.75rem; padding: 0 0 0.5rem 0; }}
+[data-testid="stMetricValue"] {{ font-size: 1.6rem; }}
+</style>
+"""

@@ -24,6 +24,7 @@ from app_ui import (
     show,
     side_view,
     state,
+    tables,
     text,
     unapplied,
     verdict_view,
@@ -41,9 +42,9 @@ from app_ui.tables import (
 )
 
 st.title("Aerostat design")
-st.caption(
-    "Enter the requirement and the design choices, then press **Update design**. "
-    "Everything is recomputed from the inputs; units are SI unless a label says otherwise."
+st.caption(  # one line at 1024 px: the verdict stays above the fold
+    "Enter the requirement and the design choices, then press **Update design**; results in "
+    "the units chosen in the sidebar."
 )
 
 
@@ -60,8 +61,9 @@ def _on_upload() -> None:
 
 
 def _fmt(v: float, quantity: str) -> str:
-    """A headline number at the decimals of its quantity (the same in every table)."""
-    return formats.text(v, quantity)
+    """A headline number at the decimals of its quantity (the same in every table), in the
+    unit system chosen in the sidebar (its label from :func:`app_ui.formats.label`)."""
+    return formats.shown(v, quantity)
 
 
 TABS = ("Geometry", "3-D view", "Mass", "Performance", "Tether profiles", "Mission", "Envelope")
@@ -118,7 +120,7 @@ def _mass_tab(rep: DesignReport) -> None:
         st.table(mass_styler(mass_frame(rep.mass_rows)))  # static: no grid bundle to load
         st.download_button(
             "Mass table (CSV)",
-            data=cache.csv_bytes(rep.mass_rows),
+            data=tables.export_csv(rep.mass_rows, formats.system()),  # SI + unit row
             file_name="mass.csv",
             mime="text/csv",
             on_click="ignore",
@@ -141,7 +143,7 @@ def _performance_tab(rep: DesignReport) -> None:
     st.caption("Rows with a red background break an operating limit (last column says which).")
     st.download_button(
         "Performance table (CSV)",
-        data=cache.csv_bytes(rep.performance_rows),
+        data=tables.export_csv(rep.performance_rows, formats.system()),  # SI + unit row
         file_name="performance.csv",
         mime="text/csv",
         on_click="ignore",
@@ -227,9 +229,10 @@ def _results_body() -> None:
     d_now = cache.cached_design(state.current_inputs_key())
     verdict_view.render(d_now, state.current_inputs_key(), stale)  # the verdict first
     rules = form_model.RULE_SETS[rep.inputs["requirement"]["rules"]]
-    st.caption(
-        f"Rule set: **{rules.name}** ({rules.title}). "
-        + (f"Sized by: {s.binding_constraint.replace('_', ' ')}." if rep.sized else "")
+    st.caption(  # short (one line at 1024 px); the rule set's title in its help
+        f"Rule set: **{rules.name}**. "
+        + (f"Sized by: {s.binding_constraint.replace('_', ' ')}." if rep.sized else ""),
+        help=rules.title,
     )
     st.caption(text.plain(class_caption(rep.inputs["requirement"]["payload_mass"],
                                         rep.inputs["requirement"]["altitude"])))
@@ -247,7 +250,7 @@ def _results_body() -> None:
         )
     c = show.metric_row(5)
     c[0].metric(
-        "Volume [m³]",
+        formats.label("Volume", "volume"),
         _fmt(s.volume_m3, "volume"),
         help="Hull volume. Sized: the smallest hull meeting the blow-by limit with positive "
         "free lift."
@@ -257,31 +260,39 @@ def _results_body() -> None:
         delta_color="off",
         delta_arrow="off",
     )
-    c[1].metric("Length [m]", _fmt(s.length_m, "length"), help="Hull length l.")
-    c[2].metric("Diameter [m]", _fmt(s.diameter_m, "diameter"), help="Maximum hull diameter d.")
+    c[1].metric(
+        formats.label("Length", "length"), _fmt(s.length_m, "length"), help="Hull length l."
+    )
+    c[2].metric(
+        formats.label("Diameter", "diameter"),
+        _fmt(s.diameter_m, "diameter"),
+        help="Maximum hull diameter d.",
+    )
     c[3].metric(
-        "Total mass [kg]",
+        formats.label("Total mass", "total_mass"),
         _fmt(s.total_mass_kg, "total_mass"),
         help="Hull, fins, lifting gas, miscellaneous, payload and tether.",
     )
     c[4].metric(
-        "Free lift [kg]",
+        formats.label("Free lift", "free_lift"),
         _fmt(s.free_lift_kg, "free_lift"),
         help="Gross buoyancy minus total weight, in kilograms "
         f"({s.percent_static_lift:.0f} % of the gross buoyancy).",
     )
     # no wind quantity of a hull that sinks means anything: its design-wind row is not shown
     if not d_now.sinks:
-        st.caption(f"At the design wind, {lim.design_wind:g} m/s:")
+        st.caption(f"At the design wind, {formats.shown(lim.design_wind, 'wind', with_unit=True)}:")
         c = show.metric_row(5)
         bb = s.blow_by_at_design_wind_m
         c[0].metric(
-            "Blow-by [m]",
+            formats.label("Blow-by", "blow_by"),
             _fmt(bb, "blow_by"),
-            delta=f"{text.signed(bb - lim.blow_by_limit, formats.decimals('blow_by'))} m",
+            delta=text.signed(formats.convert(bb - lim.blow_by_limit, "blow_by"), 1)
+            + f" {formats.unit_of('blow_by')}",
             delta_color="inverse",
             help=f"Downwind offset of the confluence point from the winch; limit "
-            f"{lim.blow_by_limit:g} m (the delta is blow-by minus limit).",
+            f"{formats.shown(lim.blow_by_limit, 'blow_by', with_unit=True)} (the delta is "
+            "blow-by minus limit).",
         )
         c[1].metric(
             "α_eq [deg]",
@@ -289,7 +300,7 @@ def _results_body() -> None:
             help="Equilibrium angle of attack (moment balance about the confluence point).",
         )
         c[2].metric(
-            "Tension [N]",
+            formats.label("Tension", "tension"),
             _fmt(s.tension_top_at_design_wind_N, "tension"),
             help="Tether tension at the confluence point.",
         )
@@ -378,7 +389,9 @@ def _results_body() -> None:
             envelope_view.render(state.current_inputs_key(), rep)
 
 
-col_in, col_out = st.columns([1, 2.7], gap="large")
+# 1 : 2.2 with the app's narrow padding: at 1024 px the input column is ~230 px (labels whole),
+# the result column ~500 px (four headline numbers a row)
+col_in, col_out = st.columns([1, 2.2], gap="medium")
 # The results are drawn first (the columns keep their places): their messages reach the browser
 # before the form's 60 widgets, so the first result paints while the form is still arriving.
 with col_out:

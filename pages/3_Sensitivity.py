@@ -102,10 +102,7 @@ except ValueError as exc:
     st.error(widgets.plain(short(f"Cannot compute the sweeps: {exc}")), icon=":material/error:")
 else:
     if sweep_mode == "resize":
-        st.caption(
-            "The blow-by equals the limit wherever the sizing succeeds: the limit is what "
-            "sets the volume. Red crosses break another constraint (hover for which)."
-        )
+        st.caption(view.resize_caption(res))  # says what the plot shows
     st.plotly_chart(view.sensitivity_figure(res), key="sens_ofat")
     st.markdown("**Mass and volume change over each range** (relative to the baseline)")
     st.table(view.summary_table(res))  # transposed: 4 columns fit at 1024 px, 10 did not

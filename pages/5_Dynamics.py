@@ -273,7 +273,7 @@ if out.get("turbulence"):
     st.caption(view.turbulence_caption(out["turbulence"]))
 
 sig = out["signals"]
-k = st.columns(5)
+k = widgets.metric_row(5)  # metrics as wide as their labels: five columns cut them at 1024 px
 k[0].metric("Peak blow-by x_C [m]", f"{max(sig['x_C']):.1f}")
 k[1].metric("Lowest altitude z_C [m]", f"{min(sig['z_C']):.1f}")
 if out["is_hull"]:
@@ -296,14 +296,14 @@ if out["is_hull"]:
     stall = lim.get("fin_stall_deg")
     names = ["theta", "alpha", "alpha_fin"]
     lines, note = view.limit_lines(out, names, [(stall, "fin stall"), (-stall, "fin stall")]
-                                   if stall else [])
+                                   if stall else [], unit="deg")
     r2[1].plotly_chart(view.time_figure(out, names, "Pitch and angle of attack", "Angle [deg]",
                                         hlines=lines, note=note), key="dyn_pitch")
 r3 = st.columns(2)
 names = ["tension_C", "tension_winch"]
 lines, note = view.limit_lines(
     out, names, [(lim.get("safe_working_load"), "safe working load")]
-    + ([(0.0, "slack")] if out.get("slack_events") else []))
+    + ([(0.0, "slack")] if out.get("slack_events") else []), unit="N")
 r3[0].plotly_chart(view.time_figure(out, names, "Tether tension", "Tension [N]", hlines=lines,
                                     note=note), key="dyn_tension")
 r3[1].plotly_chart(view.time_figure(out, ["wind_x", "wind_z"], "Wind input at the hull",
@@ -355,7 +355,7 @@ if out.get("limits"):
     st.table(tables.labelled_table(view.limits_frame_rows(out), {
         "limit": ("Limit", None), "unit": ("Unit", None),
         "limit_value": ("Limit value", "{:.1f}"), "worst": ("Worst in the run", "{:.1f}"),
-        "exceeded": ("Exceeded", None), "first_s": ("First at [s]", "{:.1f}")}), hide_index=True)
+        "exceeded": ("Exceeded", None), "first_s": ("First at [s]", "{:.1f}", "not exceeded")}), hide_index=True)
 if out.get("modes"):
     st.subheader("Linearised modes about the initial equilibrium")
     st.caption("Eigenvalues of the finite-difference Jacobian of the full model; modes with at "

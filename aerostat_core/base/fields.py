@@ -404,3 +404,101 @@ def fill_range_docs(modules: Iterable[ModuleType]) -> int:
             obj.__doc__ = doc
             count += n
     return count
+
+
+# --- display units of the unit systems ----------------------------------------------------------
+
+#: The unit systems values can be shown in (values are stored, computed and exported in SI).
+UNIT_SYSTEMS = ("SI", "US")
+#: How each system reads in a chooser.
+UNIT_SYSTEM_LABELS = {"SI": "SI", "US": "US customary"}
+
+_FT = 0.3048  # m, exact (international foot, 1959)
+_LB = 0.45359237  # kg, exact (international pound, 1959)
+_LBF = _LB * 9.80665  # N, exact (standard gravity)
+_KT = 1852.0 / 3600.0  # m/s, exact (international nautical mile per hour)
+_IN = 0.0254  # m, exact
+
+
+@dataclass(frozen=True)
+class DisplayUnit:
+    """A unit a value is shown in: ``shown = SI value * scale + offset``.
+
+    >>> US_CUSTOMARY["degC"].show(20.0), US_CUSTOMARY["m/s"].show(10.0)
+    (68.0, 19.438444924406046)
+    """
+
+    unit: str
+    scale: float = 1.0
+    offset: float = 0.0
+
+    def show(self, si: float) -> float:
+        """The SI value in this unit."""
+        return si * self.scale + self.offset
+
+    def to_si(self, shown: float) -> float:
+        """A value in this unit back in SI."""
+        return (shown - self.offset) / self.scale
+
+
+#: US customary display of an SI unit token (as in ``FieldSpec.unit``) or of an SI display unit
+#: ("mm", "kN"); exact factors (1 ft = 0.3048 m, 1 lb = 0.45359237 kg, 1 lbf = 1 lb x 9.80665
+#: m/s², 1 kt = 1852 m/h, °F = 1.8 °C + 32). A unit not listed is shown as in SI (deg, W, Pa,
+#: USD, %, and the fabric and tether data, whose vendor sheets are metric).
+US_CUSTOMARY: dict[str, DisplayUnit] = {
+    "m": DisplayUnit("ft", 1.0 / _FT),
+    "m2": DisplayUnit("ft²", 1.0 / _FT**2),
+    "m3": DisplayUnit("ft³", 1.0 / _FT**3),
+    "kg": DisplayUnit("lb", 1.0 / _LB),
+    "N": DisplayUnit("lbf", 1.0 / _LBF),
+    "m/s": DisplayUnit("kt", 1.0 / _KT),
+    "degC": DisplayUnit("°F", 1.8, 32.0),
+    "kg/m3": DisplayUnit("lb/ft³", _FT**3 / _LB),
+    "USD/m3": DisplayUnit("USD/ft³", _FT**3),
+    "mm": DisplayUnit("in", 1.0 / _IN),  # per m: a spec shown in mm has its SI value in m
+    "kN": DisplayUnit("lbf", 1.0 / _LBF),  # per N
+    "m above sea level": DisplayUnit("ft above sea level", 1.0 / _FT),
+}
+#: SI display of the units above ("m3" -> "m³"), for values not from a spec.
+_SI_TEXT = {k: DisplayUnit(_PRETTY_UNIT.get(k, k)) for k in US_CUSTOMARY}
+
+
+def unit_in(unit: str, system: str = "SI") -> DisplayUnit:
+    """How a value in SI unit ``unit`` (a token as in :data:`US_CUSTOMARY`: "m", "m3", "N",
+    "m/s", "degC") is shown in ``system``; a unit the system does not change is shown as is.
+
+    >>> unit_in("m3", "US").unit, round(unit_in("m3", "US").show(170.0), 1)
+    ('ft³', 6003.5)
+    >>> unit_in("m3").unit, unit_in("deg", "US").unit
+    ('m³', 'deg')
+    """
+    if system not in UNIT_SYSTEMS:
+        raise ValueError(f"unit system {system!r}: use one of {', '.join(UNIT_SYSTEMS)}")
+    if system == "US" and unit in US_CUSTOMARY:
+        return US_CUSTOMARY[unit]
+    return _SI_TEXT.get(unit, DisplayUnit(_PRETTY_UNIT.get(unit, unit)))
+
+
+def spec_display(spec: FieldSpec, system: str = "SI") -> DisplayUnit:
+    """The display unit of a field in ``system``: its own display unit and scale in SI; in US
+    customary the US unit of its SI unit (or of its SI display unit, "mm" -> "in"), when there
+    is one.
+
+    >>> from aerostat_core.model.inputs import Requirement
+    >>> d = spec_display(field_spec(Requirement, "payload_mass"), "US")
+    >>> d.unit, round(d.show(10.0), 2)
+    ('lb', 22.05)
+    """
+    si = DisplayUnit(spec.shown_unit, float(spec.scale))
+    if system == "SI" or spec.kind not in ("number", "integer"):
+        return si
+    plain_si = spec.scale == 1.0 and spec.shown_unit == _PRETTY_UNIT.get(spec.unit, spec.unit)
+    if plain_si and spec.unit in US_CUSTOMARY:
+        return US_CUSTOMARY[spec.unit]
+    if spec.shown_unit in _PER_SI_BASE:  # "mm", "kN": their US unit applies to the SI value
+        return US_CUSTOMARY[spec.shown_unit]
+    return si
+
+
+#: SI display units whose :data:`US_CUSTOMARY` entry converts the SI value (m, N) directly.
+_PER_SI_BASE = ("mm", "kN", "m above sea level")

@@ -20,28 +20,43 @@ from .lockstep import run_lockstep, slsqp_task, stencil_evaluator
 from .problem import OptimizationProblem
 from .tracking import OptimizationCancelled
 
+#: Relative difference below which two objective values count as equal in
+#: :func:`nondominated_mask`: the points of an epsilon-constraint front whose blow-by constraint
+#: is not active are the same optimum, found to the solver's tolerance, and differ in the 4th-6th
+#: digit; dominance on that noise flipped "on front" between rows that read the same.
+DOMINANCE_RTOL = 1e-3
 
-def nondominated_mask(a, b) -> np.ndarray:
+
+def nondominated_mask(a, b, rtol: float = DOMINANCE_RTOL) -> np.ndarray:
     """True for points not dominated in (a, b), both minimised.
 
-    Point i is dominated when some j has a_j <= a_i and b_j <= b_i with at least one strict.
-    NaN points are never in the set.
+    Point i is dominated when some j has a_j <= a_i and b_j <= b_i with at least one strictly
+    better by more than the tolerance ``rtol * max(|a_i|, |a_j|)`` (likewise for b): values
+    within the tolerance are equal, so points that differ only by solver noise share their
+    verdict. NaN points are never in the set.
 
     Parameters
     ----------
     a, b : array_like
         Objective values (same length).
+    rtol : float
+        Relative tolerance of "strictly better" (0 for exact dominance).
 
     Examples
     --------
     >>> nondominated_mask([1, 2, 3, 2], [3, 2, 1, 3]).tolist()
     [True, True, True, False]
+    >>> nondominated_mask([35.0221, 35.0220], [128.0, 128.0001]).tolist()
+    [True, True]
     """
     a, b = np.asarray(a, float), np.asarray(b, float)
     ok = np.isfinite(a) & np.isfinite(b)
-    le = (a[None, :] <= a[:, None]) & (b[None, :] <= b[:, None])
-    lt = (a[None, :] < a[:, None]) | (b[None, :] < b[:, None])
-    dom = np.any(le & lt & ok[None, :], axis=1)
+    ta = rtol * np.maximum(np.abs(a[None, :]), np.abs(a[:, None]))
+    tb = rtol * np.maximum(np.abs(b[None, :]), np.abs(b[:, None]))
+    le = (a[None, :] <= a[:, None] + ta) & (b[None, :] <= b[:, None] + tb)
+    lt = (a[None, :] < a[:, None] - ta) | (b[None, :] < b[:, None] - tb)
+    with np.errstate(invalid="ignore"):
+        dom = np.any(le & lt & ok[None, :], axis=1)
     return ok & ~dom
 
 

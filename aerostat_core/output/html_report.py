@@ -1,11 +1,17 @@
 """Design report: one self-contained HTML file (inline SVG plots, inline CSS, no scripts, no
 network) that works offline and prints to PDF from any browser.
 
-Sections (``id`` of each ``<section>``): requirement, rules, geometry (with the side view), mass,
+Sections (``id`` of each ``<section>``): verdict (feasible or not, what binds, the key
+numbers), requirement (labels and units from the field registry), rules, geometry (with the side view), mass,
 performance (table and plots, with the Monte Carlo bands when given), tether (profiles),
 constraints (margins), envelope (heat map of the binding constraint with the limit boundaries),
 flyable (site wind), uncertainty (bands, probabilities, rule-set spread), validation (reference
 numbers and fielded aerostats) and version. Every text is HTML-escaped.
+
+Layout: it fits a 1024 px window and an A4 page (tables wrap their headers and text cells and
+are never wider than the text column; a table or figure is never split across printed pages).
+Values are shown in the unit system asked for (``units="SI"`` or ``"US"``, from
+:data:`aerostat_core.base.fields.US_CUSTOMARY`); the program's exports stay SI.
 """
 
 from __future__ import annotations
@@ -13,12 +19,13 @@ from __future__ import annotations
 import datetime as _dt
 import html
 import io
-from dataclasses import fields
 
 import numpy as np
 
+from aerostat_core.base.fields import UNIT_SYSTEMS, spec_display, unit_in
 from aerostat_core.model.constraints import BY_NAME
 from aerostat_core.model.design import Design
+from aerostat_core.model.input_paths import all_specs
 from aerostat_core.output.report import confluence_lines, fin_outlines, hull_outline
 from aerostat_core.studies.envelope import ENVELOPE_NAMES, Envelope
 from aerostat_core.studies.site_wind import FlyableTime
@@ -26,6 +33,7 @@ from aerostat_core.studies.uncertainty import MonteCarloResult
 
 #: Section ids in order (the browser test checks these).
 SECTIONS = (
+    "verdict",
     "requirement",
     "rules",
     "geometry",
@@ -41,16 +49,19 @@ SECTIONS = (
 )
 
 _CSS = """
-body{font-family:system-ui,-apple-system,'Segoe UI',Roboto,sans-serif;margin:2em auto;
-max-width:60em;color:#111;line-height:1.35}
+body{font-family:system-ui,-apple-system,'Segoe UI',Roboto,sans-serif;margin:1.5em auto;
+max-width:56em;padding:0 1em;color:#111;line-height:1.35}
 h1{font-size:1.6em;margin-bottom:.2em}h2{font-size:1.25em;border-bottom:1px solid #999;
-margin-top:1.6em}table{border-collapse:collapse;margin:.5em 0;font-size:.85em}
-td,th{border:1px solid #bbb;padding:.15em .5em;text-align:right}th{background:#eee}
-td.t,th.t{text-align:left}.bad{color:#a00;font-weight:600}.ok{color:#060}
-figure{margin:.6em 0;page-break-inside:avoid}figcaption{font-size:.85em;color:#444}
-svg{max-width:100%;height:auto}section{page-break-inside:auto}
-@media print{body{margin:0;max-width:none}h2{page-break-after:avoid}
-table,figure{page-break-inside:avoid}}
+margin-top:1.6em}table{border-collapse:collapse;margin:.5em 0;font-size:.8em;max-width:100%}
+td,th{border:1px solid #bbb;padding:.15em .4em;text-align:right;overflow-wrap:anywhere}
+th{background:#eee;font-weight:600}td.t,th.t{text-align:left}.bad{color:#a00;font-weight:600}
+.ok{color:#060;font-weight:600}.verdict{font-size:1.1em}
+figure{margin:.6em 0;break-inside:avoid;page-break-inside:avoid}
+figcaption{font-size:.85em;color:#444}svg{max-width:100%;height:auto}
+table,figure{break-inside:avoid;page-break-inside:avoid}thead{display:table-header-group}
+@page{size:A4;margin:14mm 12mm}
+@media print{body{margin:0;max-width:none;padding:0;font-size:10pt}
+h2{break-after:avoid;page-break-after:avoid}}
 """
 
 
@@ -77,8 +88,10 @@ def _e(x) -> str:
 
 
 def _num(v) -> str:
-    if isinstance(v, bool) or v is None:
-        return _e(v)
+    if isinstance(v, bool | np.bool_):
+        return "yes" if v else "no"
+    if v is None:
+        return "not computed: not given"
     if isinstance(v, int | np.integer):
         return str(int(v))
     if isinstance(v, float | np.floating):
@@ -86,7 +99,7 @@ def _num(v) -> str:
         if v == 0:
             return "0"
         if not np.isfinite(v):
-            return _e(v)
+            return "not computed: no finite value" if v != v else ("unbounded" if v > 0 else "−∞")
         if v != 0 and (abs(v) >= 1e5 or abs(v) < 1e-3):
             return f"{v:.3e}"
         return f"{v:.4g}" if abs(v) < 1000 else f"{v:.0f}"
@@ -96,7 +109,7 @@ def _num(v) -> str:
 def _table(rows: list[dict], columns: list[tuple[str, str]] | None = None, cls=None) -> str:
     """HTML table of dict rows; ``columns`` = [(key, header)]; text columns left-aligned."""
     if not rows:
-        return "<p>(none)</p>"
+        return "<p>None in this design.</p>"
     columns = columns or [(k, k) for k in rows[0]]
     head = "".join(
         f'<th class="t">{_e(h)}</th>' if isinstance(rows[0].get(k), str) else f"<th>{_e(h)}</th>"
@@ -252,6 +265,102 @@ def envelope_figure(env: Envelope, payload_index: int = 0):
     return fig
 
 
+def _shown(value, token: str, units: str) -> float:
+    """An SI value in the report's unit system (``token`` the SI unit: "m", "m3", "N")."""
+    return unit_in(token, units).show(float(value))
+
+
+def _in(token: str, units: str) -> str:
+    """The unit an SI ``token`` is shown in."""
+    return unit_in(token, units).unit
+
+
+def _unit_rows(rows: list[dict], keys: dict[str, str], units: str) -> list[dict]:
+    """Rows with the values of ``keys`` (key -> SI unit token) in the report's unit system."""
+    if units == "SI":
+        return rows
+    out = []
+    for r in rows:
+        r = dict(r)
+        for k, token in keys.items():
+            if isinstance(r.get(k), float | int) and not isinstance(r.get(k), bool):
+                r[k] = _shown(r[k], token, units)
+        out.append(r)
+    return out
+
+
+def requirement_rows(req, units: str = "SI") -> list[dict]:
+    """The requirement as the form reads it: label, value in the display unit of the registry
+    (in ``units``), unit; an empty optional field says what it takes instead.
+
+    >>> from aerostat_core import thesis_baseline
+    >>> rows = requirement_rows(thesis_baseline()[0], "US")
+    >>> rows[0]["quantity"], round(rows[0]["value"], 2), rows[0]["unit"]
+    ('Payload mass', 22.05, 'lb')
+    """
+    out = []
+    for p in all_specs():
+        if not p.path.startswith("requirement."):
+            continue
+        v = getattr(req, p.name)
+        if p.spec.kind in ("number", "integer"):
+            du = spec_display(p.spec, units)
+            if v is None:
+                value = f"from the {p.spec.empty}"
+            else:
+                value = du.show(float(v))
+            unit = "" if du.unit == "-" else du.unit
+        else:
+            value, unit = str(v), ""
+        out.append({"quantity": p.label, "value": value, "unit": unit})
+    return out
+
+
+def _verdict(d: Design, units: str) -> str:
+    """The verdict first: feasible or not, what binds, and the key numbers at the design wind.
+
+    A ``verdict`` attribute of the design (a text or an object with ``text``) is shown when the
+    design has one; the feasibility and binding summary of the design report otherwise.
+    """
+    s = d.summary()
+    req = d.requirement
+    verdict = getattr(d, "verdict", None)
+    if verdict is not None:
+        head = _e(getattr(verdict, "text", verdict))
+    elif d.feasible:
+        head = "Feasible: every requirement is met at the design wind."
+    else:
+        head = "NOT feasible: " + _e("; ".join(d.violations))
+    binds = s.binding_constraint.replace("_", " ") if s.binding_constraint else ""
+    sized = f" The hull is sized by the {_e(binds)}." if binds else ""
+    cls = "ok" if d.feasible else "bad"
+    L, M, F, W = (_in(t, units) for t in ("m", "kg", "N", "m/s"))
+    key = [
+        {
+            "quantity": f"Hull volume [{_in('m3', units)}]",
+            "value": _shown(s.volume_m3, "m3", units),
+        },
+        {"quantity": f"Length [{L}]", "value": _shown(s.length_m, "m", units)},
+        {"quantity": f"Diameter [{L}]", "value": _shown(s.diameter_m, "m", units)},
+        {"quantity": f"Total mass [{M}]", "value": _shown(s.total_mass_kg, "kg", units)},
+        {"quantity": f"Free lift [{M}]", "value": _shown(s.free_lift_kg, "kg", units)},
+        {
+            "quantity": f"Blow-by at {_shown(req.design_wind, 'm/s', units):.1f} {W} [{L}]",
+            "value": _shown(s.blow_by_at_design_wind_m, "m", units),
+        },
+        {"quantity": f"Blow-by limit [{L}]", "value": _shown(req.blow_by_limit, "m", units)},
+        {
+            "quantity": f"Tension at the confluence point [{F}]",
+            "value": _shown(s.tension_top_at_design_wind_N, "N", units),
+        },
+        {"quantity": "Tether safety factor", "value": s.safety_factor_at_design_wind},
+        {"quantity": "Gas fill cost [USD]", "value": s.gas_cost_USD},
+    ]
+    return f'<p class="verdict"><span class="{cls}">{head}</span>{sized}</p>' + _table(
+        key, [("quantity", "Key number"), ("value", "Value")]
+    )
+
+
 def _section(sid: str, title: str, body: str) -> str:
     return f'<section id="{sid}"><h2>{_e(title)}</h2>{body}</section>'
 
@@ -287,6 +396,7 @@ def render_report(
     reference_rows: list[dict] | None = None,
     fielded=None,
     title: str | None = None,
+    units: str = "SI",
 ) -> str:
     """The report as one HTML string.
 
@@ -304,30 +414,37 @@ def render_report(
     fielded : FieldedValidation, optional
         :func:`aerostat_core.studies.fielded.validate_fielded` (computed when ``None``).
     title : str, optional
+    units : {"SI", "US"}
+        Unit system of the values shown (the field registry's display units).
     """
+    if units not in UNIT_SYSTEMS:
+        raise ValueError(f"units = {units!r}: use one of {', '.join(UNIT_SYSTEMS)}")
     from aerostat_core.studies.fielded import validate_fielded
     from aerostat_core.studies.reference import reference_checks
 
     req, cfg = d.requirement, d.configuration
     s = d.summary()
-    title = title or (f"Aerostat design report: {req.payload_mass:g} kg at {req.altitude:g} m")
+    title = title or (
+        f"Aerostat design report: {_shown(req.payload_mass, 'kg', units):.4g} "
+        f"{_in('kg', units)} at {_shown(req.altitude, 'm', units):.4g} {_in('m', units)}"
+    )
     parts = [
         f"<h1>{_e(title)}</h1>",
         f"<p>Generated {_e(_dt.datetime.now(_dt.UTC).strftime('%Y-%m-%d %H:%M UTC'))} by "
-        f"aerostat-design {_e(program_version())}. "
-        f'<span class="{"ok" if d.feasible else "bad"}">'
-        f"{'Feasible: every requirement met.' if d.feasible else 'NOT feasible.'}</span>"
-        "</p>",
+        f"aerostat-design {_e(program_version())}; values in "
+        f"{'SI units' if units == 'SI' else 'US customary units'}.</p>",
     ]
-    if d.violations:
-        parts.append(
-            "<ul>" + "".join(f'<li class="bad">{_e(v)}</li>' for v in d.violations) + "</ul>"
+    parts.append(_section("verdict", "Verdict", _verdict(d, units)))
+    parts.append(
+        _section(
+            "requirement",
+            "Requirement",
+            _table(
+                requirement_rows(req, units),
+                [("quantity", "Requirement"), ("value", "Value"), ("unit", "Unit")],
+            ),
         )
-    req_rows = [{"field": f.name, "value": getattr(req, f.name)} for f in fields(req)]
-    for r in req_rows:
-        if r["value"] is None or isinstance(r["value"], str):
-            r["value"] = str(r["value"])
-    parts.append(_section("requirement", "Requirement", _table(req_rows)))
+    )
     rs = req.rule_set
     parts.append(
         _section(
@@ -346,8 +463,15 @@ def render_report(
             (
                 _figure(side_view_figure(d), "Side view to scale (nose left).", "side_view")
                 + _table(
-                    d.geometry_rows(),
-                    [("quantity", "quantity"), ("value", "value"), ("unit", "unit")],
+                    [
+                        {
+                            "quantity": r["quantity"],
+                            "value": _shown(r["value"], r["unit"], units),
+                            "unit": "" if r["unit"] == "-" else _in(r["unit"], units),
+                        }
+                        for r in d.geometry_rows()
+                    ],
+                    [("quantity", "Quantity"), ("value", "Value"), ("unit", "Unit")],
                 )
             ),
         )
@@ -357,32 +481,53 @@ def render_report(
             "mass",
             "Mass breakdown",
             _table(
-                d.mass_rows(),
-                [("item", "item"), ("mass_kg", "mass [kg]"), ("share_pct", "share [%]")],
+                _unit_rows(d.mass_rows(), {"mass_kg": "kg"}, units),
+                [
+                    ("item", "Item"),
+                    ("mass_kg", f"Mass [{_in('kg', units)}]"),
+                    ("share_pct", "Share [%]"),
+                ],
             )
             + _table(
                 [
-                    {"quantity": "gross buoyancy [N]", "value": s.gross_buoyancy_N},
-                    {"quantity": "free lift [kg]", "value": s.free_lift_kg},
-                    {"quantity": "percent static lift [%]", "value": s.percent_static_lift},
-                    {"quantity": "gas fill cost [USD]", "value": s.gas_cost_USD},
-                ]
+                    {
+                        "quantity": f"Gross buoyancy [{_in('N', units)}]",
+                        "value": _shown(s.gross_buoyancy_N, "N", units),
+                    },
+                    {
+                        "quantity": f"Free lift [{_in('kg', units)}]",
+                        "value": _shown(s.free_lift_kg, "kg", units),
+                    },
+                    {"quantity": "Static lift share [%]", "value": s.percent_static_lift},
+                    {"quantity": "Gas fill cost [USD]", "value": s.gas_cost_USD},
+                ],
+                [("quantity", "Quantity"), ("value", "Value")],
             ),
         )
     )
+    L, F, W = _in("m", units), _in("N", units), _in("m/s", units)
     cols = [
-        ("wind_speed_m_s", "wind [m/s]"),
-        ("alpha_eq_deg", "alpha [deg]"),
-        ("dynamic_lift_N", "dyn. lift [N]"),
-        ("drag_N", "drag [N]"),
-        ("blow_by_m", "blow-by [m]"),
-        ("flying_height_m", "height [m]"),
-        ("tension_top_N", "T top [N]"),
-        ("tension_winch_N", "T winch [N]"),
-        ("tether_angle_winch_deg", "angle winch [deg]"),
-        ("safety_factor", "safety factor"),
-        ("flags", "limits broken"),
+        ("wind_speed_m_s", f"Wind [{W}]"),
+        ("alpha_eq_deg", "α_eq [deg]"),
+        ("dynamic_lift_N", f"Dynamic lift [{F}]"),
+        ("drag_N", f"Drag [{F}]"),
+        ("blow_by_m", f"Blow-by [{L}]"),
+        ("flying_height_m", f"Flying height [{L}]"),
+        ("tension_top_N", f"Tension at top [{F}]"),
+        ("tension_winch_N", f"Tension at winch [{F}]"),
+        ("tether_angle_winch_deg", "Tether angle at winch [deg]"),
+        ("safety_factor", "Safety factor"),
+        ("flags", "Limits exceeded"),
     ]
+    perf_units = {
+        "wind_speed_m_s": "m/s",
+        "dynamic_lift_N": "N",
+        "drag_N": "N",
+        "blow_by_m": "m",
+        "flying_height_m": "m",
+        "tension_top_N": "N",
+        "tension_winch_N": "N",
+    }
     parts.append(
         _section(
             "performance",
@@ -394,7 +539,7 @@ def render_report(
                     "(shaded: 5-95 % Monte Carlo band, when run).",
                     "performance",
                 )
-                + _table(d.performance.rows(), cols)
+                + _table(_unit_rows(d.performance.rows(), perf_units, units), cols)
             ),
         )
     )
@@ -513,7 +658,16 @@ def render_report(
     else:
         body = "<p>Monte Carlo not run.</p>"
     if rules_rows:
-        body += "<h3>Rule sets (same mission)</h3>" + _table(rules_rows)
+        # one column per rule set: 14 quantities side by side made the report 1735 px wide
+        names = [str(r["rules"]) for r in rules_rows]
+        spread = [
+            {"quantity": k.replace("_", " "), **{n: r[k] for n, r in zip(names, rules_rows)}}
+            for k in rules_rows[0]
+            if k != "rules"
+        ]
+        body += "<h3>Rule sets (same mission, SI units)</h3>" + _table(
+            spread, [("quantity", "Quantity"), *((n, n) for n in names)]
+        )
     parts.append(_section("uncertainty", "Uncertainty", body))
     ref = reference_checks() if reference_rows is None else reference_rows
     fv = validate_fielded() if fielded is None else fielded
@@ -577,6 +731,7 @@ def build_report(
     seed: int = 0,
     base_requirement=None,
     client=None,
+    units: str = "SI",
 ) -> str:
     """Compute the envelope, flyable time, Monte Carlo and rule-set spread of ``d`` and render
     the report (``n_monte_carlo = 0`` leaves the uncertainty out)."""
@@ -592,4 +747,4 @@ def build_report(
         rows = rule_set_spread(
             base_requirement or d.requirement, n=min(n_monte_carlo, 2000), seed=seed, client=client
         )
-    return render_report(d, env, ft, mc, rows)
+    return render_report(d, env, ft, mc, rows, units=units)

@@ -32,7 +32,7 @@ def test_envelope_tab_shows_heat_map_flyable_time_and_bands(at):
     at.button(key="FormSubmitter:mc_form-Run Monte Carlo").click()
     at.run()
     assert not at.exception, [e.value for e in at.exception]
-    lo, hi = (float(x) for x in metric(at, "Blow-by 5-95 % [m]").split("-"))
+    lo, hi = (float(x) for x in metric(at, "Blow-by 5-95 % [m]").split("–"))
     assert lo < d.design_point["blow_by_m"] < hi
     assert "mc_bands" in [getattr(e, "key", None) for e in at.get("plotly_chart")]
     labels = [b.proto.label for b in at.get("download_button")]

@@ -453,7 +453,7 @@ def _run_page_studies(monkeypatch, payload: float) -> dict[str, dict]:
         ),
     )
 
-    def build_report(d, site, n_monte_carlo, seed, base_requirement):
+    def build_report(d, site, n_monte_carlo, seed, base_requirement, units="SI"):
         return record(
             "report_html",
             "html",
@@ -462,6 +462,7 @@ def _run_page_studies(monkeypatch, payload: float) -> dict[str, dict]:
             n_monte_carlo=n_monte_carlo,
             seed=seed,
             base_requirement=base_requirement,
+            units=units,
         )
 
     monkeypatch.setattr(e, "build_report", build_report)
@@ -537,7 +538,7 @@ PAGE_STUDY_KEYS = {
     "rules_spread": (envelope_view.SpreadKey, ("requirement", "seed"), False),
     "report_html": (
         envelope_view.ReportKey,
-        ("requirement", "configuration", "site", "n_samples", "seed"),
+        ("requirement", "configuration", "site", "n_samples", "seed", "units"),
         False,
     ),
     "shape_library": (shapes_view.LibraryKey, ("volume",), None),
@@ -612,6 +613,7 @@ def test_each_page_study_key_is_a_named_tuple_whose_values_reach_the_engine_by_n
         "n_monte_carlo": 3000,
         "seed": 29,
         "base_requirement": req,
+        "units": "SI",
     }
     report = _page_key("report_html", 11.73)
     assert type(report.site) is envelope_view.SiteKey and report.site.csv == _CSV

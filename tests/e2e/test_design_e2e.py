@@ -77,6 +77,8 @@ def test_download_tables_and_design_file(thesis_page: Page):
     with page.expect_download() as info:
         page.get_by_role("button", name="Performance table (CSV)").click()
     rows = list(csv.DictReader(io.StringIO(info.value.path().read_text())))
+    units, rows = rows[0], rows[1:]  # SI columns, then a row of their units
+    assert units["wind_speed_m_s"] == "m/s" and units["blow_by_m"] == "m"
     assert len(rows) == 21  # 0, 1, ..., 20 m/s
     assert {"wind_speed_m_s", "blow_by_m", "tension_top_N", "safety_factor", "flags"} <= set(
         rows[0]
@@ -89,7 +91,7 @@ def test_download_tables_and_design_file(thesis_page: Page):
     wait_for_rerun(page)
     with page.expect_download() as info:
         page.get_by_role("button", name="Mass table (CSV)").click()
-    mass = list(csv.DictReader(io.StringIO(info.value.path().read_text())))
+    mass = list(csv.DictReader(io.StringIO(info.value.path().read_text())))[1:]  # unit row
     total = next(float(r["mass_kg"]) for r in mass if r["item"] == "total")
     assert sum(float(r["mass_kg"]) for r in mass if r["item"] != "total") == pytest.approx(total)
 
