@@ -47,15 +47,22 @@ def unit_switch() -> None:
     the sidebar before running the page), and the choice applied to this script run
     (:func:`app_ui.formats.use_system`): the Design and Compare results, the Mission tab and the
     design report follow it; inputs, studies and exports stay SI."""
-    st.segmented_control(
+    st.radio(
         "Units",
         UNIT_SYSTEMS,
-        default="SI",
         format_func=UNIT_SYSTEM_LABELS.get,
         key=UNIT_KEY,
+        horizontal=True,
         help="SI (m, kg, N, m/s, °C) or US customary (ft, lb, lbf, kt, ft³, °F): how results "
         "are shown on the Design and Compare pages and in the design report. Inputs, the other "
         "pages' studies and every export (CSV, JSON) stay in SI; a CSV of the Design page adds "
         "US columns.",
     )
+    apply_unit_choice()
+
+
+def apply_unit_choice() -> None:
+    """Apply the session's unit choice to this run: app.py does it for a full run, and every
+    fragment does it again, because a fragment's rerun does not run app.py (the choice lives in
+    a context variable of the script run)."""
     formats.use_system(st.session_state.get(UNIT_KEY) or "SI")

@@ -167,6 +167,7 @@ def _performance_tab(rep: DesignReport) -> None:
 def _tether_tab(rep: DesignReport) -> None:
     @st.fragment
     def _tether_panel() -> None:
+        show.apply_unit_choice()  # a fragment rerun does not run app.py
         speeds = plots.tether_speeds(rep.tether)  # the sweep and the design wind
         default = plots.default_profile_speeds(rep.tether)
         chosen = st.multiselect(
@@ -212,6 +213,7 @@ def _results() -> None:
 
 
 def _results_body() -> None:
+    show.apply_unit_choice()  # a fragment rerun does not run app.py
     try:
         frozen = cache.current_inputs()  # built once by the form; no JSON on the way
         rep = cache.report_of(*frozen)
