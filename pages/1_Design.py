@@ -236,14 +236,6 @@ def _results_body() -> None:
         + (f"Sized by: {s.binding_constraint.replace('_', ' ')}." if rep.sized else ""),
         help=rules.title,
     )
-    st.caption(text.plain(class_caption(rep.inputs["requirement"]["payload_mass"],
-                                        rep.inputs["requirement"]["altitude"])))
-    with st.expander(
-        "Constraint table: every limit, its margin and where it is checked", icon=":material/rule:"
-    ):
-        # static, cells that wrap: a data grid here loaded 1 MB of JavaScript before the first
-        # result, and scrolled sideways at 1024 px
-        st.table(constraint_styler(pd.DataFrame(text.constraint_table_rows(rep.constraints))))
     if stale:
         st.warning(
             "These results are for the last valid inputs: your latest change was not applied "
@@ -318,6 +310,15 @@ def _results_body() -> None:
             "Gas cost [USD]", _fmt(s.gas_cost_USD, "gas_cost"), help="Hull volume × gas price."
         )
 
+    # below the headline numbers: the verdict and the key numbers stay above the fold at 1024 px
+    st.caption(text.plain(class_caption(rep.inputs["requirement"]["payload_mass"],
+                                        rep.inputs["requirement"]["altitude"])))
+    with st.expander(
+        "Constraint table: every limit, its margin and where it is checked", icon=":material/rule:"
+    ):
+        # static, cells that wrap: a data grid here loaded 1 MB of JavaScript before the first
+        # result, and scrolled sideways at 1024 px
+        st.table(constraint_styler(pd.DataFrame(text.constraint_table_rows(rep.constraints))))
     if not rep.feasible:  # the verdict above says it; the table's reasons in full here
         st.error(
             "**Requirements not met:**\n" + "\n".join(f"- {v}" for v in rep.violations),
