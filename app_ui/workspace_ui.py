@@ -111,6 +111,16 @@ def _offer(recent: list[str]) -> None:
         )
 
 
+#: The unsaved cases the app frame showed in its last full run.
+SHOWN_UNSAVED_KEY = "_frame_unsaved"
+
+
+def frame_is_stale() -> bool:
+    """Whether the unsaved cases changed since the app frame (banner, download of the unsaved
+    cases) was drawn: a fragment's rerun (the Design page's results) does not redraw it."""
+    return tuple(state.unsaved_cases()) != st.session_state.get(SHOWN_UNSAVED_KEY, ())
+
+
 def status() -> None:
     """What happens to the work (sidebar), the database's state and the cases not yet saved,
     with a download (above the page)."""
@@ -124,6 +134,7 @@ def status() -> None:
         st.success(plain(note), icon=":material/database:")
     error = s.get(state.STORE_ERR_KEY)
     unsaved = state.unsaved_cases()
+    s[SHOWN_UNSAVED_KEY] = tuple(unsaved)  # what this frame shows (see frame_is_stale)
     if error:
         st.warning(plain(error), icon=":material/database:")
     if unsaved or s.get(state.UNSAVED_CURRENT_KEY):

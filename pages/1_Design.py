@@ -28,6 +28,7 @@ from app_ui import (
     text,
     unapplied,
     verdict_view,
+    workspace_ui,
 )
 from app_ui.errors import report_unexpected
 from app_ui.tables import (
@@ -356,6 +357,11 @@ def _results_body() -> None:
     case_box = st.container()  # always present: the tabs below keep their place
     envelope_view.report_button(state.current_inputs_key())
     fb = st.session_state.pop(saving.FEEDBACK_KEY, None)
+    if fb and workspace_ui.frame_is_stale():
+        # a save during an outage changes the app frame, which this fragment's rerun does not
+        # redraw: rerun the whole app once, keeping the message
+        st.session_state[saving.FEEDBACK_KEY] = fb
+        st.rerun()
     with case_box:
         if fb:
             show.feedback(fb[0], fb[1])
