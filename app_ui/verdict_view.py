@@ -18,27 +18,22 @@ PAGE_SAMPLES = 500
 PAGE_SEED = 0
 
 
-@st.cache_data(max_entries=64, show_spinner=False)
-def _verdict(inputs_json: str):
-    from .cache import cached_design
+def verdict_of(d: Design):
+    """The verdict with its seeded probability, computed once per distinct inputs (keyed by the
+    design's frozen inputs, no JSON on the way); the nominal one if the sample cannot run."""
+    from .cache import frozen_inputs, memo
 
-    d = cached_design(inputs_json)
-    return assess(d, PAGE_SAMPLES, PAGE_SEED)
-
-
-def verdict_of(inputs_json: str, d: Design):
-    """The verdict with its seeded probability (cached per inputs); the nominal one if the
-    sample cannot run."""
+    key = frozen_inputs(d.requirement, d.configuration)
     try:
-        return _verdict(inputs_json)
+        return memo("verdict", key, lambda: assess(d, PAGE_SAMPLES, PAGE_SEED), size=64)
     except Exception:  # noqa: BLE001 - the nominal verdict is still a verdict
         return d.verdict()
 
 
-def render(d: Design, inputs_json: str, stale: bool = False) -> None:
+def render(d: Design, stale: bool = False) -> None:
     """Lead the results with the verdict; a failing design shows what binds and what to
     change, and a hull that sinks says that its wind quantities are not shown."""
-    v = verdict_of(inputs_json, d)
+    v = verdict_of(d)
     who = "The last valid inputs: " if stale else ""
     p = v.probability_meets_operating_limits
     prob = (f" Probability of meeting the operating limits: {p:.2f} ({v.samples} seeded "

@@ -229,8 +229,8 @@ def _results_body() -> None:
     stale = bool(st.session_state.get(form_model.ERROR_KEY))
 
     st.subheader("Result", anchor=False)
-    d_now = cache.cached_design(state.current_inputs_key())
-    verdict_view.render(d_now, state.current_inputs_key(), stale)  # the verdict first
+    d_now = cache.design_of(*frozen)
+    verdict_view.render(d_now, stale)  # the verdict first
     rules = form_model.RULE_SETS[rep.inputs["requirement"]["rules"]]
     st.caption(  # short (one line at 1024 px); the rule set's title in its help
         f"Rule set: **{rules.name}**. "

@@ -151,23 +151,23 @@ def hull6_from_design(design, hull: HullModel | None = None, **hull_options) -> 
     m = af.mass
     b = float(np.asarray(af.hull.b).reshape(-1)[0])
     zc = float(np.asarray(m.z_cg).reshape(-1)[0])
-    items = {k: float(np.asarray(v).reshape(-1)[0]) for k, v in m.items.items()}
+    mass = {k: float(np.asarray(v).reshape(-1)[0]) for k, v in m.items.items()}
     pos = {k: tuple(float(np.asarray(c).reshape(-1)[0]) for c in v) for k, v in m.positions.items()}
     fins = af.fins
     z_f = np.abs(np.array([float(np.asarray(z).reshape(-1)[0]) for z in fins.z_fins]))
     arr = cfg.fins.arrangement
     ph = np.radians(FIN_ANGLES_DEG[arr])
     r_f = float(np.max(z_f) / np.max(np.abs(np.sin(ph)))) if np.max(z_f) > 0 else b
-    i_xx = (2.0 / 3.0) * items["hull"] * b**2 + 0.4 * items["lifting gas"] * b**2
-    i_xx += items["fins"] * r_f**2 + (items["hull"] + items["lifting gas"] + items["fins"]) * zc**2
+    i_xx = (2.0 / 3.0) * mass["hull"] * b**2 + 0.4 * mass["lifting gas"] * b**2
+    i_xx += mass["fins"] * r_f**2 + (mass["hull"] + mass["lifting gas"] + mass["fins"]) * zc**2
     vertical = 0.0
     for k in ("miscellaneous", "payload", "battery", "ballonet"):
-        if k in items and k in pos:
+        if k in mass and k in pos:
             d2 = (pos[k][1] - zc) ** 2
-            i_xx += items[k] * d2
-            vertical += items[k] * d2
+            i_xx += mass[k] * d2
+            vertical += mass[k] * d2
     i_yy = float(np.asarray(m.pitch_inertia).reshape(-1)[0])
-    i_zz = max(i_yy - vertical - (items["hull"] + items["lifting gas"]) * zc**2, 0.1 * i_yy)
+    i_zz = max(i_yy - vertical - (mass["hull"] + mass["lifting gas"]) * zc**2, 0.1 * i_yy)
     ratio, kp = fin_layout_factors(arr, float(np.asarray(fins.area_one).reshape(-1)[0]),
                                    float(np.asarray(fins.lift_slope).reshape(-1)[0]),
                                    cfg.aero.fin_efficiency, r_f)

@@ -211,9 +211,9 @@ TETHERS: dict[str, TetherSpec] = {
         TetherSpec("Dyneema 6 mm (21 g/m)", 0.021, 0.006, 1.0, 0.01, 30000.0, 1.4e6),
         TetherSpec("Electro-optic tether 8 mm (60 g/m)", 0.060, 0.008, 1.2, 0.01, 20000.0, 2.0e6),
         TetherSpec("Power tether 2 x 1.5 mm2 Cu on Dyneema 6 mm (52 g/m)", 0.0520, 0.00656,
-                   1.0, 0.01, 30207.0, 1.4e6),
+                   1.0, 0.01, 30000.0, 1.4e6),
         TetherSpec("Power tether 2 x 2.5 mm2 Cu on Dyneema 6 mm (71 g/m)", 0.0709, 0.00681,
-                   1.0, 0.01, 30345.0, 1.4e6),
+                   1.0, 0.01, 30000.0, 1.4e6),
     )
 }
 

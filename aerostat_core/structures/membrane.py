@@ -143,7 +143,7 @@ WRINKLE_MIN_RADIUS = 0.5
 
 
 def wrinkling_moment(pressure, radius):
-    """Bending moment at which a pressurised circular envelope section starts to wrinkle [N m].
+    r"""Bending moment at which a pressurised circular envelope section starts to wrinkle [N m].
 
     M_w = pi p r^3 / 2: the axial membrane tension of the pressure, p r / 2 per unit length of
     circumference, is cancelled on the compression side by the bending load M / (pi r^2) (thin
@@ -153,6 +153,11 @@ def wrinkling_moment(pressure, radius):
     Carichner & Nicolai (2013), *Fundamentals of Aircraft and Airship Design* vol. 2, envelope
     structure (the wrinkling criterion of non-rigid airship practice, Burgess 1927 *Airship
     Design* ch. 9).
+
+    .. math:: M_w = \frac{\pi p r^3}{2}
+
+    Valid for a thin circular section of an inflated envelope (p >= 0, r > 0), up to the onset
+    of wrinkling.
 
     Parameters
     ----------
@@ -170,13 +175,19 @@ def wrinkling_moment(pressure, radius):
 
 
 def beam_moment(x, load, point_loads=(), couples=()):
-    """Bending moment along a free-free beam in equilibrium [N m] (pure function).
+    r"""Bending moment along a free-free beam in equilibrium [N m] (pure function).
 
     V(x) = int_0^x w dx' + sum_i P_i H(x - x_i); M(x) = int_0^x V dx' + sum_j C_j H(x - x_j),
     by the trapezoid rule on the stations ``x``. Loads from a simplified distribution do not
     close exactly: the force residual is the caller's (it sets the reaction), and the moment
     residual at the tail, M(L), is removed as a linear ramp M(x) - M(L) x / L (the "closing"
     of airship load curves, Burgess 1927 ch. 9), so M(0) = M(L) = 0.
+
+    .. math:: V(x) = \int_0^x w\,dx' + \sum_i P_i H(x - x_i), \quad
+              M(x) = \int_0^x V\,dx' + \sum_j C_j H(x - x_j)
+
+    Valid for a slender free-free beam in static equilibrium (stations increasing from the
+    nose). Source: Burgess (1927) *Airship Design* ch. 9; docs/methods.md §1.17.
 
     Parameters
     ----------
@@ -217,7 +228,7 @@ def beam_moment(x, load, point_loads=(), couples=()):
 
 
 def envelope_loads(af, cfg, ev, stations: int = BEAM_STATIONS) -> dict:
-    """Pressure, membrane loads, bending and wrinkling moments of the envelope, the hull taken as
+    r"""Pressure, membrane loads, bending and wrinkling moments of the envelope, the hull taken as
     a pressurised beam at the trim of an evaluation (Carichner & Nicolai 2013 vol. 2; Burgess
     1927 ch. 9; docs/methods.md §1.17).
 
@@ -251,6 +262,12 @@ def envelope_loads(af, cfg, ev, stations: int = BEAM_STATIONS) -> dict:
     largest (the nose and tail caps carry their loads as shells of double curvature, not as a
     beam).
 
+    .. math:: N_x = \frac{p r}{2} + \frac{|M(x)|}{\pi r^2}, \quad
+              p \ge \frac{2 M}{\pi r^3} + \rho_g g\,r
+
+    Valid for a streamlined, pressurised hull at incidences where the trim of ``ev`` holds.
+    Source: Carichner & Nicolai (2013) vol. 2; Burgess (1927) ch. 9; docs/methods.md §1.17.
+
     Parameters
     ----------
     af : Airframe
@@ -260,7 +277,7 @@ def envelope_loads(af, cfg, ev, stations: int = BEAM_STATIONS) -> dict:
     ev : Evaluation
         Trim and tether at the speed(s) of interest (arrays broadcast over designs and speeds).
     stations : int
-        Stations of the integrals, >= 11.
+        Stations of the integrals [-], >= 11.
 
     Returns
     -------
@@ -300,8 +317,8 @@ def envelope_loads(af, cfg, ev, stations: int = BEAM_STATIONS) -> dict:
     ca = np.cos(alpha)
     drho = af.air_density - af.gas_density
     load = drho * g * area * ca
-    items, positions = af.mass.items, af.mass.positions
-    load = load - np.asarray(items["hull"]) * g * ca * per / per_int
+    positions = af.mass.positions
+    load = load - np.asarray(af.mass.items["hull"]) * g * ca * per / per_int
     streamlined = SHAPE_INFO[h.shape].streamlined
     couples = []
     if streamlined:
@@ -336,7 +353,7 @@ def envelope_loads(af, cfg, ev, stations: int = BEAM_STATIONS) -> dict:
     # the carried items as point weights (those at one station, as the payload, miscellaneous,
     # battery and ballonet under the centre of buoyancy, summed into one load)
     at: dict = {}
-    for k, m in items.items():
+    for k, m in af.mass.items.items():
         if k in ("hull", "lifting gas", "tether") or k not in positions:
             continue
         xk = positions[k][0]

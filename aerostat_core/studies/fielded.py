@@ -343,7 +343,7 @@ def validate_fielded(systems=FIELDED, rules: str = "practice",
     --------
     >>> v = validate_fielded()
     >>> len(v.rows), sorted({r.system.aerostat_class for r in v.rows})
-    (11, ['operational', 'strategic', 'tactical'])
+    (13, ['operational', 'strategic', 'tactical'])
     """
     return FieldedValidation(tuple(size_fielded(s, rules, mission) for s in systems))
 

@@ -270,6 +270,7 @@ REPORT_KEYS = frozenset(
 }  # fmt: skip
 #: Dicts that are not the report but share a key with it: (file, base name) -> what they are.
 NOT_THE_REPORT = {
+    ("aerostat_core/dynamics/sixdof.py", "mass"): "mass items by name (floats)",
     ("aerostat_core/cli/commands.py", "out"): "the envelope sweep (its points)",
     ("aerostat_core/dynamics/cli.py", "m"): "dynamics metrics (limit flags)",
     ("aerostat_core/studies/reference.py", "p"): "the point-aerostat reference case",
