@@ -319,18 +319,19 @@ def requirement_rows(req, units: str = "SI") -> list[dict]:
 def _verdict(d: Design, units: str) -> str:
     """The verdict first: feasible or not, what binds, and the key numbers at the design wind.
 
-    A ``verdict`` attribute of the design (a text or an object with ``text``) is shown when the
-    design has one; the feasibility and binding summary of the design report otherwise.
+    The design's nominal verdict (:meth:`Design.verdict`): its word, headline and what to
+    change, then what binds.
     """
     s = d.summary()
     req = d.requirement
-    verdict = getattr(d, "verdict", None)
-    if verdict is not None:
-        head = _e(getattr(verdict, "text", verdict))
-    elif d.feasible:
-        head = "Feasible: every requirement is met at the design wind."
-    else:
-        head = "NOT feasible: " + _e("; ".join(d.violations))
+    v = d.verdict()  # the nominal verdict (issue 22): meets, meets_nominal_only or fails
+    word = {"meets": "Feasible", "meets_nominal_only": "Feasible (nominal margins only)",
+            "fails": "NOT feasible"}.get(v.verdict, "NOT feasible")
+    head = f"{word}: {_e(v.headline)}"
+    if v.what_to_change:
+        head += " What to change: " + _e("; ".join(v.what_to_change))
+    if not d.feasible and d.violations:
+        head += " (" + _e("; ".join(d.violations)) + ")"
     binds = s.binding_constraint.replace("_", " ") if s.binding_constraint else ""
     sized = f" The hull is sized by the {_e(binds)}." if binds else ""
     cls = "ok" if d.feasible else "bad"

@@ -82,6 +82,7 @@ def test_report_prints_to_a4_without_a_cut_table(browser: Browser, report):
             assert b["avoid"] == "avoid", f"{where} may be split across pages"
         pdf = page.pdf(format="A4", prefer_css_page_size=True)
         pages = len(re.findall(rb"/Type\s*/Page(?!s)", pdf))
-        assert 5 <= pages <= 14, f"{pages} pages"
+        # 16 A4 pages since the verdict, class, envelope-beam and material rows joined it
+        assert 5 <= pages <= 20, f"{pages} pages"
     finally:
         ctx.close()
