@@ -42,16 +42,29 @@ def feedback(level: str, text: str) -> None:
     show(plain(text))
 
 
+#: The session's unit choice, kept apart from the widget's own state: Streamlit drops the state
+#: of a widget drawn by app.py on a rerun (the switch's widget state did not survive the rerun
+#: its own click starts), so the choice is copied here by the widget's callback.
+CHOICE_KEY = "_unit_choice"
+
+
+def _keep_choice() -> None:
+    st.session_state[CHOICE_KEY] = st.session_state.get(UNIT_KEY) or "SI"
+
+
 def unit_switch() -> None:
     """The unit-system switch (SI / US customary), once for the whole app (``app.py`` draws it in
     the sidebar before running the page), and the choice applied to this script run
     (:func:`app_ui.formats.use_system`): the Design and Compare results, the Mission tab and the
     design report follow it; inputs, studies and exports stay SI."""
+    chosen = st.session_state.get(CHOICE_KEY, "SI")
     st.radio(
         "Units",
         UNIT_SYSTEMS,
+        index=UNIT_SYSTEMS.index(chosen) if chosen in UNIT_SYSTEMS else 0,
         format_func=UNIT_SYSTEM_LABELS.get,
         key=UNIT_KEY,
+        on_change=_keep_choice,
         horizontal=True,
         help="SI (m, kg, N, m/s, °C) or US customary (ft, lb, lbf, kt, ft³, °F): how results "
         "are shown on the Design and Compare pages and in the design report. Inputs, the other "
@@ -65,4 +78,4 @@ def apply_unit_choice() -> None:
     """Apply the session's unit choice to this run: app.py does it for a full run, and every
     fragment does it again, because a fragment's rerun does not run app.py (the choice lives in
     a context variable of the script run)."""
-    formats.use_system(st.session_state.get(UNIT_KEY) or "SI")
+    formats.use_system(st.session_state.get(CHOICE_KEY) or "SI")

@@ -260,3 +260,16 @@ def test_rule_set_spread_flags_read_yes_no():
 
     df = _text_frame(pd.DataFrame({"q": ["feasible", "volume"], "practice": [True, 55.2]}))
     assert df["practice"].tolist() == ["yes", "55.2"]
+
+
+def test_the_unit_choice_survives_reruns():
+    """The sidebar switch's choice holds on every later run (a widget drawn by app.py loses its
+    own state on a rerun: the choice is kept apart by its callback)."""
+    from streamlit.testing.v1 import AppTest
+
+    at = AppTest.from_file("app.py", default_timeout=180).run()
+    switch = next(w for w in at.radio if w.key == "unit_system")
+    switch.set_value("US").run()
+    assert [m.label for m in at.metric][:2] == ["Volume [ft³]", "Length [ft]"]
+    at.run()  # a later run (a tab switch, another input) keeps the choice
+    assert [m.label for m in at.metric][:2] == ["Volume [ft³]", "Length [ft]"]

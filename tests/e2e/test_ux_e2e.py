@@ -169,11 +169,6 @@ def test_design_verdict_and_key_numbers_above_the_fold(
         ctx.close()
 
 
-@pytest.mark.xfail(
-    reason="known defect (issue #24 item 5, left open): the sidebar's unit choice does not survive "
-    "the rerun it starts; the widget drawn by app.py loses its session state on reruns",
-    strict=False,
-)
 def test_unit_switch_shows_the_design_in_us_customary_units(browser: Browser, base_url: str):
     ctx = browser.new_context(viewport={"width": 1400, "height": 900}, base_url=base_url)
     try:
