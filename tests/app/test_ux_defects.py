@@ -265,9 +265,12 @@ def test_rule_set_spread_flags_read_yes_no():
 def test_the_unit_choice_survives_reruns():
     """The sidebar switch's choice holds on every later run (a widget drawn by app.py loses its
     own state on a rerun: the choice is kept apart by its callback)."""
+    from pathlib import Path
+
     from streamlit.testing.v1 import AppTest
 
-    at = AppTest.from_file("app.py", default_timeout=180).run()
+    app = Path(__file__).resolve().parents[2] / "app.py"
+    at = AppTest.from_file(str(app), default_timeout=180).run()
     switch = next(w for w in at.radio if w.key == "unit_system")
     switch.set_value("US").run()
     assert [m.label for m in at.metric][:2] == ["Volume [ft³]", "Length [ft]"]
