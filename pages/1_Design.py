@@ -357,10 +357,12 @@ def _results_body() -> None:
     case_box = st.container()  # always present: the tabs below keep their place
     envelope_view.report_button(state.current_inputs_key())
     fb = st.session_state.pop(saving.FEEDBACK_KEY, None)
-    if fb and workspace_ui.frame_is_stale():
+    redrawn = st.session_state.pop("_frame_redrawn", False)
+    if fb and not redrawn and workspace_ui.frame_is_stale():
         # a save during an outage changes the app frame, which this fragment's rerun does not
-        # redraw: rerun the whole app once, keeping the message
+        # redraw: rerun the whole app once (never twice), keeping the message
         st.session_state[saving.FEEDBACK_KEY] = fb
+        st.session_state["_frame_redrawn"] = True
         st.rerun()
     with case_box:
         if fb:
