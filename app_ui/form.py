@@ -14,7 +14,7 @@ from typing import Any
 import streamlit as st
 
 from aerostat_core import FABRICS, TETHERS
-from app_ui import cache
+from app_ui import cache, show
 
 from .form_model import (
     CHOICES,
@@ -36,35 +36,47 @@ from .form_model import (
     InputError,
     build_inputs,
     group_key,
+    texts_in_system,
     widget_values,
 )
 from .state import DESIGN_KEY, init_state
 from .text import plain
 
+#: The unit system the number boxes' texts are in (the sidebar's choice when they were filled).
+UNITS_SRC_KEY = "_widgets_units"
+
 
 def sync_widgets(state: MutableMapping[str, Any] | None = None, *, force: bool = False) -> None:
     """Fill the form's widgets from the current inputs when those changed elsewhere (baseline
-    button, file import, another page) or when a widget value is missing. Call before the form
-    renders, or from a callback."""
+    button, file import, another page) or when a widget value is missing, in the session's unit
+    system; after a switch of the unit system, show the boxes' texts in the new units (an edit
+    not applied yet is kept, converted). Call before the form renders, or from a callback."""
     s = st.session_state if state is None else state
     init_state(s)
     for group in GROUPS:
         if group_key(group) not in s:
             s[group_key(group)] = group in OPEN_GROUPS
     inputs = s[DESIGN_KEY]
+    system = show.chosen_system(s)
     missing = any(k not in s for k in WIDGET_KEYS)
     if force or missing or s.get(SRC_KEY) != inputs:
         previous = {k: s[k] for k in WIDGET_KEYS if k in s}
-        for k, v in widget_values(inputs, previous).items():
+        for k, v in widget_values(inputs, previous, system).items():
             s[k] = v
         s[SRC_KEY] = copy.deepcopy(inputs)
+    elif s.get(UNITS_SRC_KEY, "SI") != system:
+        values = {k: s[k] for k in WIDGET_KEYS if k in s}
+        for k, v in texts_in_system(values, inputs, s.get(UNITS_SRC_KEY, "SI"), system).items():
+            s[k] = v
+    s[UNITS_SRC_KEY] = system
 
 
 def _on_submit() -> None:
     s = st.session_state
     values = {k: s[k] for k in WIDGET_KEYS if k in s}
     try:
-        req, cfg = build_inputs(values, s[DESIGN_KEY])
+        # the boxes' texts are in the units they were filled in (sync_widgets keeps them so)
+        req, cfg = build_inputs(values, s[DESIGN_KEY], s.get(UNITS_SRC_KEY, "SI"))
     except InputError as exc:
         s[ERROR_KEY] = {"group": exc.group, "text": str(exc), "key": exc.key}
         if exc.group in GROUPS:
@@ -83,13 +95,13 @@ def _group_error(group: str) -> None:
         st.error(plain(f"Not applied: {err['text']}"), icon=":material/error:")
 
 
-def _number(f: Field) -> None:
+def _number(f: Field, system: str) -> None:
     # A text box, parsed by parse_number: the browser's number box read "12,5" as 125 and showed
-    # an emptied box as 0.
+    # an emptied box as 0. Label, unit and valid range in the session's unit system.
     st.text_input(
-        f.label,
+        f.label_in(system),
         key=f.key,
-        help=f.help,
+        help=f.help_in(system),
         placeholder="auto" if f.optional else "required",
         persist_state="session",
     )
@@ -129,9 +141,9 @@ _GROUP_ICONS = {
 }
 
 
-def _widget(key: str) -> None:
+def _widget(key: str, system: str = "SI") -> None:
     if key in FIELD_BY_KEY:
-        _number(FIELD_BY_KEY[key])
+        _number(FIELD_BY_KEY[key], system)
     elif key in CHOICES:
         _choice(key)
     elif key == VOLUME_MODE_KEY:
@@ -180,6 +192,7 @@ def input_form() -> None:
     reported inside its group and nothing is applied. The submit button comes first, so it is
     in sight without scrolling, and again after the last group."""
     sync_widgets()
+    system = st.session_state.get(UNITS_SRC_KEY, "SI")  # the units the boxes' texts are in
     err = st.session_state.get(ERROR_KEY)
     # Enter in a box applies the form, as "Update design" does (issue 20: it did nothing)
     with st.form("design_inputs_form", border=False, enter_to_submit=True):
@@ -209,5 +222,5 @@ def input_form() -> None:
                 if group == "materials":
                     st.caption("The custom values are used when 'Custom' is chosen above them.")
                 for key in keys:
-                    _widget(key)
+                    _widget(key, system)
         _submit_button(SUBMIT_KEY + "_bottom")

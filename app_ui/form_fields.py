@@ -8,11 +8,13 @@ from __future__ import annotations
 from collections.abc import Mapping
 from dataclasses import dataclass
 from functools import cached_property
+from typing import Any
 
 from aerostat_core.geometry.shapes import SHAPE_INFO
 from aerostat_core.model.input_paths import PathSpec, spec_for_path
 from aerostat_core.model.rules import RULE_SETS
 
+from . import formats
 from .text import short
 
 CUSTOM = "Custom"
@@ -68,13 +70,35 @@ class Field:
 
     @property
     def unit(self) -> str:
-        return self.entry.spec.shown_unit
+        """The SI display unit (see :meth:`unit_in` for a unit system)."""
+        return self.unit_in("SI")
 
     @property
     def label(self) -> str:
+        """The SI label (see :meth:`label_in`)."""
+        return self.label_in("SI")
+
+    def unit_in(self, system: str) -> str:
+        """The unit of the box in unit system ``system`` ("ft" for the altitude in "US")."""
+        return formats.box_unit(self.entry.spec, system)
+
+    def label_in(self, system: str) -> str:
+        """The box's label in unit system ``system`` (the altitude's unit reads [ft] in US)."""
         s = self.entry.spec
         note = self.note if self.note is not None else (f"empty = {s.empty}" if s.empty else "")
-        return f"{self.entry.label} [{self.unit}]" + (f" ({note})" if note else "")
+        return f"{self.entry.label} [{self.unit_in(system)}]" + (f" ({note})" if note else "")
+
+    def text_of(self, si: Any, system: str = "SI") -> str:
+        """An SI value as the text of this box in ``system`` (:func:`app_ui.formats.box_text`)."""
+        return formats.box_text(si, self.entry.spec, system)
+
+    def to_si(self, x: float, system: str = "SI") -> float:
+        """A number typed in this box (``system``'s unit) in SI, to 12 significant digits."""
+        return formats.box_to_si(x, self.entry.spec, system)
+
+    def shown(self, si: float, system: str = "SI") -> float:
+        """An SI value in this box's unit in ``system`` (unrounded)."""
+        return formats.field_unit(self.entry.spec, system).show(si)
 
     @property
     def scale(self) -> float:
@@ -98,10 +122,14 @@ class Field:
 
     @property
     def help(self) -> str:
-        """The registry's help, plus the valid range in display units (not for a range that
-        depends on another field: the help says it)."""
+        """The SI help (see :meth:`help_in`)."""
+        return self.help_in("SI")
+
+    def help_in(self, system: str) -> str:
+        """The registry's help, plus the valid range in ``system``'s display units (not for a
+        range that depends on another field: the help says it)."""
         s = self.entry.spec
-        rng = s.range_text() if s.checked and not s.hi_field else ""
+        rng = s.range_text(system) if s.checked and not s.hi_field else ""
         return f"{s.help} Valid {rng}.".strip() if rng else s.help
 
 

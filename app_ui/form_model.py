@@ -6,7 +6,8 @@ from the core's field registry (:mod:`aerostat_core.base.fields`); :mod:`app_ui.
 says which widget key shows which input path, and where (re-exported here).
 
 * :data:`FIELDS` - every numeric widget (key, path, group; the rest from the registry);
-* :func:`widget_values` - inputs dict -> widget values (display units);
+* :func:`widget_values` - inputs dict -> widget values (display units of a unit system);
+* :func:`texts_in_system` - the boxes' texts after a switch of the unit system;
 * :func:`build_inputs` - widget values + the current inputs -> (Requirement, Configuration), or
   :class:`InputError` naming the widget and group the problem belongs to;
 * :func:`form_error` - an engine :class:`aerostat_core.base.validation.InputError` in the form's
@@ -54,7 +55,7 @@ from .form_fields import (  # noqa: F401 - re-exported: the form model's vocabul
     InputError,
     group_key,
 )
-from .text import clean, format_value, short
+from .text import format_value, short
 
 # --- errors: placed by the engine's owner and field -------------------------------------------
 
@@ -67,12 +68,16 @@ _WIDGET_OF_PATH: dict[str, tuple[str, str]] = {
 
 
 def widget_for(
-    owner: str, field: str, value: Any = None, values: Mapping[str, Any] | None = None
+    owner: str,
+    field: str,
+    value: Any = None,
+    values: Mapping[str, Any] | None = None,
+    system: str = "SI",
 ) -> tuple[str | None, str]:
     """(widget key or ``None``, group) of an engine input ``owner.field`` (an
     ``InputError``'s attributes). A class used in two places (``Fabric``: hull and fin) picks
-    the widget whose box shows the rejected ``value`` in the widget ``values``, else the
-    first. An input without a widget goes to the group of its siblings (``"general"`` if
+    the widget whose box shows the rejected ``value`` in the widget ``values`` (in unit system
+    ``system``), else the first. An input without a widget goes to the group of its siblings (``"general"`` if
     none)."""
     paths = paths_for(owner, field)
     for path in paths:
@@ -83,7 +88,7 @@ def widget_for(
     if len(shown) > 1 and values is not None and isinstance(value, (int, float)):
         for key, group in shown:
             f = FIELD_BY_KEY.get(key)
-            if f is not None and _same_text(values.get(key), format_value(value * f.scale)):
+            if f is not None and _same_text(values.get(key), f.text_of(value, system)):
                 return key, group
     if shown:
         return shown[0]
@@ -106,33 +111,39 @@ def _range_words(lo: float, hi: float, lo_open: bool, hi_open: bool) -> str:
     return f"between {lo_t} and {hi_t}"
 
 
-def form_error(exc: _validation.InputError, values: Mapping[str, Any] | None = None) -> InputError:
+def form_error(
+    exc: _validation.InputError, values: Mapping[str, Any] | None = None, system: str = "SI"
+) -> InputError:
     """An engine :class:`aerostat_core.base.validation.InputError` in the form's words: its label and
-    display unit (e.g. % of hull length for the fin position), the value as typed, the range.
-    The widget is found by the error's ``owner`` and ``field``; ``values`` (the widget values)
-    tell the hull fabric from the fin fabric.
+    display unit in unit system ``system`` (e.g. % of hull length for the fin position, ft for
+    the altitude in US customary units), the value as typed, the range. The widget is found by
+    the error's ``owner`` and ``field``; ``values`` (the widget values) tell the hull fabric
+    from the fin fabric.
 
     >>> from aerostat_core import Requirement
     >>> try:
     ...     Requirement(payload_mass=-5)
     ... except ValueError as e:
-    ...     print(form_error(e))
-    Payload mass [kg]: -5 is not allowed; it must be more than 0 and at most 500.
+    ...     print(form_error(e)); print(form_error(e, system="US"))
+    Payload mass [kg]: -5 is not allowed; it must be more than 0 and at most 10000.
+    Payload mass [lb]: -11.0231 is not allowed; it must be more than 0 and at most 22046.2.
     """
-    key, group = widget_for(exc.owner, exc.field, exc.value, values)
+    key, group = widget_for(exc.owner, exc.field, exc.value, values, system)
     f = FIELD_BY_KEY.get(key or "")
     if f is None:
         label = CHOICES[key].label if key in CHOICES else exc.label
         return InputError(group, f"{label}: {exc.reason}.", key)
+    label = f.label_in(system)
     if exc.lo is not None and exc.hi is not None and isinstance(exc.value, (int, float)):
-        value = format_value(float(exc.value) * f.scale, f.integer)
-        rng = _range_words(exc.lo * f.scale, exc.hi * f.scale, exc.lo_open, exc.hi_open)
+        value = f.text_of(exc.value, system) if not f.integer else format_value(exc.value, True)
+        lo, hi = (float(f.text_of(b, system)) for b in (exc.lo, exc.hi))
+        rng = _range_words(lo, hi, exc.lo_open, exc.hi_open)
         if exc.too_small:
-            return InputError(f.group, f"{f.label}: {value} is too small to compute with.", f.key)
+            return InputError(f.group, f"{label}: {value} is too small to compute with.", f.key)
         return InputError(
-            f.group, f"{f.label}: {value} is not allowed; it must be {rng}{exc.context}.", f.key
+            f.group, f"{label}: {value} is not allowed; it must be {rng}{exc.context}.", f.key
         )
-    return InputError(f.group, f"{f.label}: {exc.reason}.", f.key)
+    return InputError(f.group, f"{label}: {exc.reason}.", f.key)
 
 
 # --- pure conversions ---------------------------------------------------------------------------
@@ -140,13 +151,15 @@ def form_error(exc: _validation.InputError, values: Mapping[str, Any] | None = N
 _NUMBER_RE = re.compile(r"^[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?$")
 
 
-def parse_number(text: Any, f: Field) -> float | int | None:
-    """The number typed in the box of field ``f``, or ``None`` for an empty optional box.
+def parse_number(text: Any, f: Field, label: str | None = None) -> float | int | None:
+    """The number typed in the box of field ``f``, or ``None`` for an empty optional box;
+    ``label`` (default ``f.label``) names the box in messages (its label in the unit system).
 
     A decimal comma is read as a decimal point ("12,5" is 12.5, never 125); text with both a
     comma and a point, or several commas, is refused as ambiguous (no thousands separators).
     Raises :class:`InputError` with the field's label; an empty required box says "required".
     """
+    label = f.label if label is None else label
     if isinstance(text, (int, float)) and not isinstance(text, bool):
         value = float(text)  # a number set programmatically (tests, older session state)
         raw = format_value(value)
@@ -155,24 +168,24 @@ def parse_number(text: Any, f: Field) -> float | int | None:
         if not raw:
             if f.optional:
                 return None
-            raise InputError(f.group, f"{f.label}: required; enter a value.", f.key)
+            raise InputError(f.group, f"{label}: required; enter a value.", f.key)
         shown = short(raw, 30)
         if raw.count(",") > 1 or ("," in raw and "." in raw):
             raise InputError(
                 f.group,
-                f"{f.label}: “{shown}” is ambiguous. Use one decimal point or one decimal comma, "
+                f"{label}: “{shown}” is ambiguous. Use one decimal point or one decimal comma, "
                 "without thousands separators.",
                 f.key,
             )
         candidate = raw.replace(",", ".")
         if not _NUMBER_RE.match(candidate):
-            raise InputError(f.group, f"{f.label}: “{shown}” is not a number.", f.key)
+            raise InputError(f.group, f"{label}: “{shown}” is not a number.", f.key)
         value = float(candidate)
     if not math.isfinite(value):
-        raise InputError(f.group, f"{f.label}: “{short(raw, 30)}” is too large.", f.key)
+        raise InputError(f.group, f"{label}: “{short(raw, 30)}” is too large.", f.key)
     if f.integer:
         if value != int(value):
-            raise InputError(f.group, f"{f.label}: {raw} is not a whole number.", f.key)
+            raise InputError(f.group, f"{label}: {raw} is not a whole number.", f.key)
         return int(value)
     return value
 
@@ -225,11 +238,11 @@ def _same_text(a: Any, b: Any) -> bool:
 
 
 def widget_values(
-    inputs: Mapping[str, Any], previous: Mapping[str, Any] | None = None
+    inputs: Mapping[str, Any], previous: Mapping[str, Any] | None = None, system: str = "SI"
 ) -> dict[str, Any]:
-    """Widget values (the text of each box, in display units) that show ``inputs``;
-    ``previous`` widget values fill the boxes the inputs leave open (the given-volume box while
-    the volume is sized)."""
+    """Widget values (the text of each box, in the display units of unit system ``system``)
+    that show ``inputs``; ``previous`` widget values fill the boxes the inputs leave open (the
+    given-volume box while the volume is sized)."""
     previous = previous or {}
     out: dict[str, Any] = {}
     for f in FIELDS:
@@ -242,10 +255,10 @@ def widget_values(
             out[f.key] = (
                 prev
                 if isinstance(prev, str) and prev.strip()
-                else ("170" if f.key == "in_volume" else "")
+                else (f.text_of(170.0, system) if f.key == "in_volume" else "")
             )
             continue
-        out[f.key] = format_value(int(v) if f.integer else float(v) * f.scale, f.integer)
+        out[f.key] = f.text_of(int(v) if f.integer else float(v), system)
     for key, c in CHOICES.items():
         v = _get(inputs, c.path)
         out[key] = v if v in c.options else next(iter(c.options))
@@ -258,8 +271,49 @@ def widget_values(
     return out
 
 
-def _materials(d: dict, values: Mapping[str, Any], shown: Mapping[str, Any]) -> None:
-    """Set the fabrics and the tether in ``d`` from the catalogue choices or the custom boxes."""
+def texts_in_system(
+    values: Mapping[str, Any], inputs: Mapping[str, Any], old: str, new: str
+) -> dict[str, str]:
+    """The number boxes' texts of ``values`` (typed in unit system ``old``) in unit system
+    ``new``: a box showing ``inputs`` shows them in the new unit (so applying it keeps the exact
+    SI value), a box with an edit not yet applied keeps that edit, converted (1000 ft -> 304.8
+    m); text that is not a number stays as typed (its message comes on applying).
+
+    >>> from aerostat_core import thesis_baseline
+    >>> from aerostat_core.model.io import inputs_to_dict
+    >>> d = inputs_to_dict(*thesis_baseline())
+    >>> si = widget_values(d)
+    >>> us = texts_in_system({**si, "in_payload": "10"}, d, "SI", "US")
+    >>> us["in_altitude"], us["in_payload"]
+    ('984.252', '22.0462')
+    """
+    shown_old = widget_values(inputs, values, old)
+    shown_new = widget_values(inputs, values, new)
+    out: dict[str, str] = {}
+    for f in FIELDS:
+        if f.key not in values:
+            continue
+        text = values[f.key]
+        if _get(inputs, f.path) is not None and _same_text(text, shown_old.get(f.key)):
+            out[f.key] = shown_new[f.key]
+            continue
+        try:
+            x = parse_number(text, f)
+        except InputError:
+            out[f.key] = text
+            continue
+        if x is None or f.integer:
+            out[f.key] = text if x is None else format_value(x, True)
+            continue
+        out[f.key] = f.text_of(f.to_si(x, old), new)
+    return out
+
+
+def _materials(
+    d: dict, values: Mapping[str, Any], shown: Mapping[str, Any], system: str = "SI"
+) -> None:
+    """Set the fabrics and the tether in ``d`` from the catalogue choices or the custom boxes
+    (typed in unit system ``system``)."""
     for sel_key, gsm_key, part in (
         (HULL_FABRIC_KEY, "in_hull_gsm", "hull_fabric"),
         (FIN_FABRIC_KEY, "in_fin_gsm", "fin_fabric"),
@@ -273,13 +327,13 @@ def _materials(d: dict, values: Mapping[str, Any], shown: Mapping[str, Any]) -> 
             _set(d, f"configuration.{part}", inputs_to_dict_part(FABRICS[choice]))
             continue
         f = FIELD_BY_KEY[gsm_key]
-        shown_value = parse_number(values.get(gsm_key), f)
+        shown_value = parse_number(values.get(gsm_key), f, f.label_in(system))
         old = _get(d, f"configuration.{part}") or {}
-        areal = clean(float(shown_value) / f.scale)
+        areal = f.to_si(float(shown_value), system)
         name = (
             old.get("name")
             if (old.get("areal_density") == areal and old.get("name") not in FABRICS)
-            else f"Custom {shown_value:g} g/m2"
+            else f"Custom {f.shown(areal, 'SI'):g} g/m2"
         )
         _set(d, f"configuration.{part}", {"name": name, "areal_density": areal})
     choice = values.get(TETHER_KEY)
@@ -297,20 +351,23 @@ def _materials(d: dict, values: Mapping[str, Any], shown: Mapping[str, Any]) -> 
         name = f.path.rsplit(".", 1)[1]
         if _same_text(values.get(key), shown.get(key)) and old.get(name) is not None:
             continue
-        new[name] = clean(parse_number(values.get(key), f) / f.scale)
+        new[name] = f.to_si(parse_number(values.get(key), f, f.label_in(system)), system)
     if new != old or old.get("name") in TETHERS or not old.get("name"):
         new["name"] = f"Custom tether {new['linear_density'] * 1000:g} g/m"
     _set(d, "configuration.tether", new)
 
 
 def build_inputs(
-    values: Mapping[str, Any], base: Mapping[str, Any]
+    values: Mapping[str, Any], base: Mapping[str, Any], system: str = "SI"
 ) -> tuple[Requirement, Configuration]:
-    """Validated (Requirement, Configuration) from widget ``values``; anything the widgets do not
-    cover is taken from ``base`` (the current inputs dict). Raises :class:`InputError`."""
+    """Validated (Requirement, Configuration) from widget ``values``, typed in the display units
+    of unit system ``system`` ("SI" or "US": 1000 in the altitude box is 304.8 m in "US"),
+    converted to SI here, once; anything the widgets do not cover is taken from ``base`` (the
+    current inputs dict). A box whose text is what the form showed for ``base`` keeps its exact
+    SI value, so switching units and applying changes nothing. Raises :class:`InputError`."""
     d = copy.deepcopy(dict(base))
     d.pop("name", None)
-    shown = widget_values(base)
+    shown = widget_values(base, system=system)
     for f in FIELDS:
         if f.key not in values:
             continue
@@ -319,11 +376,11 @@ def build_inputs(
             continue  # untouched: keep the exact value (no rounding drift through the display)
         if f.group == "materials" or f.key == "in_volume":
             continue  # handled with the material choice and the volume mode below
-        x = parse_number(v, f)
+        x = parse_number(v, f, f.label_in(system))
         if x is None:
             _set(d, f.path, None)
             continue
-        _set(d, f.path, x if f.integer else clean(x / f.scale))
+        _set(d, f.path, x if f.integer else f.to_si(x, system))
     for key, c in CHOICES.items():
         if key in values:
             _set(d, c.path, values[key])
@@ -341,18 +398,18 @@ def build_inputs(
         v = values["in_volume"]
         if v is None or (isinstance(v, str) and not v.strip()):
             raise InputError(
-                f.group, f"{f.label}: required; enter a value or choose 'Sized'.", f.key
+                f.group, f"{f.label_in(system)}: required; enter a value or choose 'Sized'.", f.key
             )
         if (
             not _same_text(v, shown.get("in_volume"))
             or _get(base, "configuration.hull.volume") is None
         ):
-            _set(d, f.path, clean(parse_number(v, f) / f.scale))
-    _materials(d, values, shown)
+            _set(d, f.path, f.to_si(parse_number(v, f, f.label_in(system)), system))
+    _materials(d, values, shown, system)
     try:
         req, cfg = inputs_from_dict(d)
     except _validation.InputError as exc:
-        raise form_error(exc, values) from None
+        raise form_error(exc, values, system) from None
     except ValueError as exc:  # not about one input (a malformed file): shown as it is
         raise InputError("general", str(exc)) from None
     try:

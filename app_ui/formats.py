@@ -21,7 +21,9 @@ import math
 from dataclasses import dataclass
 from typing import Any
 
-from aerostat_core.base.fields import UNIT_SYSTEMS, DisplayUnit, unit_in
+from aerostat_core.base.fields import UNIT_SYSTEMS, DisplayUnit, FieldSpec, spec_display, unit_in
+
+from .text import clean, format_value
 
 
 @dataclass(frozen=True)
@@ -82,6 +84,8 @@ QUANTITIES: dict[str, str] = {
 
 #: Units as the core spells them -> as shown (m3 -> m³).
 _UNIT_TEXT = {"m3": "m³", "m2": "m²"}
+#: Shown SI units -> the core's token (m³ -> m3, °C -> degC).
+_TOKEN_OF_TEXT = {"m³": "m3", "m²": "m2", "°C": "degC", "kg/m³": "kg/m3"}
 #: Unit -> kind, for tables whose rows carry their unit (geometry).
 _KIND_OF_UNIT = {
     "m3": "volume",
@@ -151,6 +155,11 @@ def display(quantity: str) -> DisplayUnit:
     if not k.si:
         return DisplayUnit(k.unit)
     return unit_in(k.si, system())
+
+
+def unit_token(u: str) -> str:
+    """The SI token of a displayed SI unit ("m³" -> "m3"), as :func:`unit_in` takes it."""
+    return _TOKEN_OF_TEXT.get(u, u)
 
 
 def unit_of(quantity: str) -> str:
@@ -296,3 +305,90 @@ def axis_hover(title: str) -> str:
     unit_text = title.rsplit("[", 1)[-1].rstrip("]") if "[" in title else "-"
     raw = {"m³": "m3", "m²": "m2"}.get(unit_text, unit_text)
     return d3(_KIND_OF_AXIS_UNIT.get(raw, "ratio"))
+
+
+# --- registry-built input boxes in the chosen unit system ---------------------------------------
+#
+# Every number box built from a field of the registry (the Design form, the Mission tab, the
+# Envelope site, the Dynamics request) shows its value, unit, range and step in the session's
+# unit system through these functions, and reads the typed number back to SI through them: a
+# US user types 1000 ft, 22 lb or 30 kt and the engine receives 304.8 m, 9.979 kg, 15.43 m/s.
+
+#: Significant digits of a box's text in a converted unit (984.252 ft for 300 m): enough that a
+#: value typed back gives the same SI value to 6 digits; an untouched box keeps its exact SI
+#: value (the form compares the text with what it showed).
+BOX_DIGITS = 6
+
+
+def field_unit(spec: FieldSpec, system_name: str | None = None) -> DisplayUnit:
+    """The display unit of a registry field in ``system_name`` (default: the current system)."""
+    return spec_display(spec, system_name or system())
+
+
+def _converted(du: DisplayUnit, spec: FieldSpec) -> bool:
+    return du.scale != float(spec.scale) or du.offset != 0.0
+
+
+def box_text(
+    si: Any, spec: FieldSpec, system_name: str | None = None, *, integer: bool | None = None
+) -> str:
+    """An SI value of a registry field as the text of its box in ``system_name``: as
+    :func:`app_ui.text.format_value` in the field's own display unit, at :data:`BOX_DIGITS`
+    significant digits in a converted one; "" for ``None``.
+
+    >>> from aerostat_core.base.fields import field_spec
+    >>> from aerostat_core.model.inputs import Requirement
+    >>> s = field_spec(Requirement, "altitude")
+    >>> box_text(300.0, s, "SI"), box_text(300.0, s, "US")
+    ('300', '984.252')
+    """
+    integer = spec.integer if integer is None else integer
+    if si is None:
+        return ""
+    if integer:
+        return format_value(si, True)
+    du = field_unit(spec, system_name)
+    x = du.show(float(si))
+    if _converted(du, spec):
+        x = float(f"{x:.{BOX_DIGITS}g}")
+    return format_value(x)
+
+
+def box_to_si(x: float, spec: FieldSpec, system_name: str | None = None) -> float:
+    """A number typed in a registry field's box (in ``system_name``'s unit) in SI, rounded to 12
+    significant digits (:func:`app_ui.text.clean`) so that 1000 ft is 304.8 m exactly.
+
+    >>> from aerostat_core.base.fields import field_spec
+    >>> from aerostat_core.model.inputs import Requirement
+    >>> box_to_si(1000, field_spec(Requirement, "altitude"), "US")
+    304.8
+    """
+    return clean(field_unit(spec, system_name).to_si(float(x)))
+
+
+def box_unit(spec: FieldSpec, system_name: str | None = None) -> str:
+    """The unit shown in a registry field's label ("ft", "%", "-")."""
+    return field_unit(spec, system_name).unit
+
+
+def box_label(label: str, spec: FieldSpec, system_name: str | None = None) -> str:
+    """A box label with the field's unit in ``system_name`` in brackets ("Altitude [ft]")."""
+    u = box_unit(spec, system_name)
+    return f"{label} [{u}]" if u else label
+
+
+def box_bounds(
+    spec: FieldSpec, system_name: str | None = None
+) -> tuple[float | None, float | None, float | None]:
+    """(min, max, step) of a registry field's box in ``system_name``'s unit: the registry range
+    converted (``None`` for an open or missing bound: the engine checks it and says why), the
+    step converted at 2 significant digits (10 m -> 33 ft) so a spin box stays readable."""
+    du = field_unit(spec, system_name)
+    lo = None if spec.lo is None or spec.lo_open else clean(du.show(spec.lo))
+    hi = None if spec.hi is None or spec.hi_open else clean(du.show(spec.hi))
+    step = None
+    if spec.step:
+        # the registry's step is in the field's own display unit (scale), an SI step underneath
+        raw = du.scale * float(spec.step) / float(spec.scale)
+        step = float(f"{raw:.2g}") if _converted(du, spec) else float(spec.step)
+    return lo, hi, step

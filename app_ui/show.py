@@ -48,6 +48,15 @@ def feedback(level: str, text: str) -> None:
 CHOICE_KEY = "_unit_choice"
 
 
+def chosen_system(state: Any = None) -> str:
+    """The session's unit system ("SI" or "US"), read from the session state: callbacks (the
+    Design form's submit) run before ``app.py`` applies the choice to the run, so they read it
+    here instead of :func:`app_ui.formats.system`."""
+    s = st.session_state if state is None else state
+    chosen = s.get(CHOICE_KEY) or "SI"
+    return chosen if chosen in UNIT_SYSTEMS else "SI"
+
+
 def _keep_choice() -> None:
     st.session_state[CHOICE_KEY] = st.session_state.get(UNIT_KEY) or "SI"
 
@@ -78,4 +87,4 @@ def apply_unit_choice() -> None:
     """Apply the session's unit choice to this run: app.py does it for a full run, and every
     fragment does it again, because a fragment's rerun does not run app.py (the choice lives in
     a context variable of the script run)."""
-    formats.use_system(st.session_state.get(CHOICE_KEY) or "SI")
+    formats.use_system(chosen_system())

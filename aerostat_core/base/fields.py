@@ -152,13 +152,19 @@ class FieldSpec:
             return self.csv_unit
         return _CSV_UNIT.get(self.unit, self.unit)
 
-    def range_text(self) -> str:
-        """The valid range in display units, e.g. ``"(0, 500] kg"``, ``"[40, 95] % of hull
-        length"``; empty when the field has no range."""
+    def range_text(self, system: str = "SI") -> str:
+        """The valid range in display units of unit system ``system`` (:func:`spec_display`),
+        e.g. ``"(0, 500] kg"``, ``"[40, 95] % of hull length"``, ``"(0, 22046.2] lb"`` (6
+        significant digits); empty when the field has no range.
+
+        >>> FieldSpec("Altitude", unit="m", lo=10, hi=5000).range_text("US")
+        '[32.8084, 16404.2] ft'
+        """
         if self.lo is None or self.hi is None:
             return ""
-        lo, hi = _clean(self.lo * self.scale), _clean(self.hi * self.scale)
-        unit = self.shown_unit
+        du = spec_display(self, system)
+        lo, hi = _clean(du.show(self.lo)), _clean(du.show(self.hi))
+        unit = du.unit
         u = f" {unit}" if unit and unit != "-" else ""
         left, right = "(" if self.lo_open else "[", ")" if self.hi_open else "]"
         return f"{left}{lo:g}, {hi:g}{right}{u}"
