@@ -479,7 +479,7 @@ def _fig(data: list, title: str, xt: str, yt: str, **layout: Any) -> go.Figure:
                yaxis=dict(title=dict(text=yt), hoverformat=formats.axis_hover(yt)),
                legend=dict(orientation="h", y=-0.2), height=360)
     lay.update(layout)
-    return go.Figure(dict(data=data, layout=lay))
+    return go.Figure(formats.figure_dict_in_system(dict(data=data, layout=lay)))
 
 
 def _line(x, y, name, colour=ACCENT, **kw) -> dict:

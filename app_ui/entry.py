@@ -16,6 +16,7 @@ import streamlit as st
 
 from aerostat_core.base.fields import field_spec
 
+from . import formats, show
 from .widgets import format_value, parse_number
 
 #: The error group of these boxes (they are not part of the Design form's groups).
@@ -82,24 +83,62 @@ def read(
     return value
 
 
-def _spec_label(owner: type, name: str) -> tuple[Any, str]:
-    s = field_spec(owner, name)
-    return s, f"{s.label} [{s.shown_unit}]" if s.shown_unit else s.label
+#: Session key prefix of what a registry box was filled with: (unit system, text, SI value).
+_FILLED = "_box_filled_"
 
 
 def spec_box(container: Any, owner: type, name: str, value: float, key: str) -> str:
     """:func:`number_box` for field ``name`` of input dataclass ``owner``: label, unit, display
-    scale and help from the field registry (aerostat_core.base.fields); ``value`` in SI units."""
-    s, label = _spec_label(owner, name)
+    scale, valid range and help from the field registry (aerostat_core.base.fields), in the
+    session's unit system (:func:`app_ui.show.chosen_system`: 30 kt, 1000 ft); ``value`` in SI
+    units. Read it with :func:`spec_read` (same ``key``): the generic helper of every
+    registry-built box outside the Design form.
+
+    After a switch of the unit system the box shows its value in the new unit: an untouched box
+    its exact SI value, an edited one its typed number converted."""
+    s = field_spec(owner, name)
+    system = show.chosen_system()
+    ss = st.session_state
+    filled = ss.get(_FILLED + key)
+    if key not in ss:
+        ss[key] = formats.box_text(value, s, system)
+        ss[_FILLED + key] = (system, ss[key], value)
+    elif filled is not None and filled[0] != system:
+        text = ss[key]
+        if filled[1] == text:
+            si = filled[2]
+        else:
+            try:
+                si = spec_read(text, owner, name, key)
+            except ValueError:
+                si = None
+        if si is not None:
+            ss[key] = formats.box_text(si, s, system)
+            ss[_FILLED + key] = (system, ss[key], si)
+    elif filled is None:
+        ss[_FILLED + key] = (system, ss[key], None)
+    rng = s.range_text(system) if s.checked and not s.hi_field else ""
+    help_text = f"{s.help} Valid {rng}.".strip() if rng else s.help
     return number_box(
-        label, key=key, value=value * s.scale, container=container, help=s.help or None
+        formats.box_label(s.label, s, system),
+        key=key,
+        value=None,
+        container=container,
+        help=help_text or None,
     )
 
 
-def spec_read(text: Any, owner: type, name: str) -> float:
-    """The SI value typed in a :func:`spec_box`, checked against the registry's range (an open
-    bound is left to the engine's check, which names it); ValueError names the box's label."""
-    s, label = _spec_label(owner, name)
-    lo = None if s.lo is None or s.lo_open else s.lo * s.scale
-    hi = None if s.hi is None or s.hi_open else s.hi * s.scale
-    return float(read(text, label, lo=lo, hi=hi, unit=s.shown_unit)) / s.scale
+def spec_read(text: Any, owner: type, name: str, key: str | None = None) -> float:
+    """The SI value typed in a :func:`spec_box` (in the unit system it shows: its ``key`` tells;
+    without it, the session's), checked against the registry's range (an open bound is left to
+    the engine's check, which names it); ValueError names the box's label. An untouched box
+    gives back the exact SI value it was filled with."""
+    s = field_spec(owner, name)
+    filled = st.session_state.get(_FILLED + key) if key is not None else None
+    system = filled[0] if filled else show.chosen_system()
+    if filled and filled[2] is not None and str(text) == filled[1]:
+        return float(filled[2])
+    lo, hi, _step = formats.box_bounds(s, system)
+    label = formats.box_label(s.label, s, system)
+    x = read(text, label, lo=lo, hi=hi, unit=formats.box_unit(s, system))
+    return formats.box_to_si(float(x), s, system)

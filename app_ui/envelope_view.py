@@ -269,8 +269,8 @@ def envelope_figure(env: Envelope) -> go.Figure:
             "marker": {"symbol": "star", "size": 14, "color": "black"},
         }
     )
-    return go.Figure(
-        {
+    return go.Figure(  # drawn in SI, shown in the session's unit system
+        formats.figure_dict_in_system({
             "data": traces,
             "layout": {
                 "title": {
@@ -282,7 +282,7 @@ def envelope_figure(env: Envelope) -> go.Figure:
                 "height": 520,
                 "margin": {"l": 60, "r": 20, "t": 50, "b": 50},
             },
-        }
+        })
     )
 
 
@@ -325,8 +325,9 @@ def bands_figure(mc: dict, rep: DesignReport) -> go.Figure:
             col=col,
         )
         fig.update_xaxes(title_text=WIND_AXIS, row=1, col=col)
+        fig.update_yaxes(title_text=("Blow-by [m]", "Top tension [N]")[col - 1], row=1, col=col)
     fig.update_layout(height=380, margin={**MARGIN, "t": 40})
-    return fig
+    return formats.figure_in_system(fig)  # drawn in SI, shown in the session's unit system
 
 
 def report_button(inputs_json: str) -> None:
@@ -389,7 +390,7 @@ def _site_form() -> None:
         if st.form_submit_button("Compute flyable time", icon=":material/air:"):
             try:
                 k, cc, zr, al = (
-                    entry.spec_read(texts[key], WeibullSite, name)
+                    entry.spec_read(texts[key], WeibullSite, name, key)
                     for key, (name, _d) in _SITE_BOXES.items()
                 )
             except ValueError as exc:

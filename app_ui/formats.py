@@ -392,3 +392,215 @@ def box_bounds(
         raw = du.scale * float(spec.step) / float(spec.scale)
         step = float(f"{raw:.2g}") if _converted(du, spec) else float(spec.step)
     return lo, hi, step
+
+
+# --- figures in the chosen unit system ----------------------------------------------------------
+#
+# The figure builders draw in SI (their axis titles carry the unit in brackets: "Blow-by [m]");
+# :func:`figure_in_system` turns a finished figure into the session's unit system by those
+# brackets: every trace on an axis whose unit converts is converted, with the axis' title, range
+# and ticks, the reference lines and notes on it, the colour bar's values, the hover texts' units
+# and the numbers with a unit in titles, names and notes ("blow-by limit 150 m" -> "492.1 ft").
+# One definition of each factor: :data:`aerostat_core.base.fields.US_CUSTOMARY`.
+
+import re as _re  # noqa: E402 - kept with the figure helpers
+
+#: Units as shown in figures -> their SI token, for the units whose display converts a value in
+#: that very unit (not "kN" or "mm", whose US entries apply to the value in N or m).
+_FIGURE_UNITS = {"m/s": "m/s", "m³": "m3", "m²": "m2", "m": "m", "N": "N", "kg": "kg", "°C": "degC"}
+_UNIT_ALT = "|".join(_re.escape(u) for u in sorted(_FIGURE_UNITS, key=len, reverse=True))
+_BRACKET = _re.compile(r"\[(" + _UNIT_ALT + r")\]")
+_NUMBER_UNIT = _re.compile(
+    r"(?<![\w.])(-?\d[\d,]*(?:\.\d+)?)( ?)(" + _UNIT_ALT + r")(?![\w/³²])"
+)
+_PLACEHOLDER_UNIT = _re.compile(r"(%\{(x|y|z)(?::[^}]*)?\})(\s*)(" + _UNIT_ALT + r")(?![\w/³²])")
+_AXIS_KEY = _re.compile(r"^(x|y)axis(\d*)$")
+
+
+def _fig_unit(text: str, system_name: str) -> DisplayUnit | None:
+    """The display unit of the last bracketed unit of an axis or colour-bar title, when it
+    converts in ``system_name``."""
+    found = _BRACKET.findall(text or "")
+    if not found:
+        return None
+    du = unit_in(_FIGURE_UNITS[found[-1]], system_name)
+    return du if (du.scale != 1.0 or du.offset != 0.0) else None
+
+
+def _relabel_text(text: str, system_name: str) -> str:
+    """Bracketed units and "number unit" pairs of a text in ``system_name``."""
+
+    def bracket(m: _re.Match) -> str:
+        return f"[{unit_in(_FIGURE_UNITS[m.group(1)], system_name).unit}]"
+
+    def number(m: _re.Match) -> str:
+        raw = m.group(1).replace(",", "")
+        du = unit_in(_FIGURE_UNITS[m.group(3)], system_name)
+        if du.scale == 1.0 and du.offset == 0.0:
+            return m.group(0)
+        x = du.show(float(raw))
+        d = len(raw.split(".")[1]) if "." in raw else 0
+        if not d:  # an integer: three significant digits, never an exponent
+            d = max(0, 2 - math.floor(math.log10(abs(x)))) if x else 0
+        out = f"{x:.{d}f}"
+        return f"{out}{m.group(2)}{du.unit}"
+
+    return _BRACKET.sub(bracket, _NUMBER_UNIT.sub(number, text))
+
+
+def _convert_values(v: Any, du: DisplayUnit, *, delta: bool = False) -> Any:
+    """Values (a number, a list with ``None`` gaps, nested lists, a numpy array) in ``du``;
+    ``delta``: a difference (a step), scaled only."""
+    import numpy as np
+
+    def one(x: Any) -> Any:
+        if x is None or isinstance(x, (bool, str)):
+            return x
+        return float(x) * du.scale if delta else du.show(float(x))
+
+    if isinstance(v, np.ndarray):
+        if v.dtype.kind in "fiu":
+            return v * du.scale if delta else v * du.scale + du.offset
+        return np.array([_convert_values(x, du, delta=delta) for x in v], dtype=object)
+    if isinstance(v, (list, tuple)):
+        return [_convert_values(x, du, delta=delta) for x in v]
+    if isinstance(v, dict):
+        return v  # a typed-array encoding is not expected in a figure being built
+    return one(v)
+
+
+def _title_text(obj: dict) -> str:
+    t = obj.get("title")
+    if isinstance(t, dict):
+        return str(t.get("text") or "")
+    return str(t or "")
+
+
+def _set_title(obj: dict, text: str) -> None:
+    t = obj.get("title")
+    if isinstance(t, dict):
+        t["text"] = text
+    else:
+        obj["title"] = {"text": text}
+
+
+def _convert_axis(ax: dict, system_name: str) -> DisplayUnit | None:
+    du = _fig_unit(_title_text(ax), system_name)
+    if _title_text(ax):
+        _set_title(ax, _relabel_text(_title_text(ax), system_name))
+    if du is None:
+        return None
+    for k in ("range", "tickvals"):
+        if ax.get(k) is not None:
+            ax[k] = _convert_values(ax[k], du)
+    if ax.get("dtick") is not None and isinstance(ax["dtick"], (int, float)):
+        ax["dtick"] = ax["dtick"] * du.scale
+    return du
+
+
+def _hover_units(template: str, units: dict[str, DisplayUnit | None]) -> str:
+    def sub(m: _re.Match) -> str:
+        du = units.get(m.group(2))
+        return m.group(0) if du is None else f"{m.group(1)}{m.group(3)}{du.unit}"
+
+    return _PLACEHOLDER_UNIT.sub(sub, template)
+
+
+def figure_dict_in_system(fig: dict, system_name: str | None = None) -> dict:
+    """A plotly figure as a dict (``{"data": [...], "layout": {...}}``, SI values, units in the
+    axis titles' brackets) in unit system ``system_name`` (default: the current one), converted
+    in place and returned. Pure: no plotly import.
+
+    >>> f = {"data": [{"type": "scatter", "x": [10.0], "y": [150.0],
+    ...                "hovertemplate": "%{x:.1f} m/s: %{y:.0f} m"}],
+    ...      "layout": {"xaxis": {"title": {"text": "Wind [m/s]"}},
+    ...                 "yaxis": {"title": {"text": "Blow-by [m]"}},
+    ...                 "shapes": [{"xref": "paper", "yref": "y", "y0": 150.0, "y1": 150.0}],
+    ...                 "annotations": [{"text": "blow-by limit 150 m", "xref": "paper",
+    ...                                  "yref": "y", "y": 150.0}]}}
+    >>> g = figure_dict_in_system(f, "US")
+    >>> g["layout"]["yaxis"]["title"]["text"], round(g["data"][0]["y"][0], 1)
+    ('Blow-by [ft]', 492.1)
+    >>> g["data"][0]["hovertemplate"], g["layout"]["annotations"][0]["text"]
+    ('%{x:.1f} kt: %{y:.0f} ft', 'blow-by limit 492.1 ft')
+    """
+    system_name = system_name or system()
+    if system_name == "SI":
+        return fig
+    lay = fig.setdefault("layout", {})
+    axes: dict[str, DisplayUnit | None] = {}
+    for key in list(lay):
+        m = _AXIS_KEY.match(key)
+        if m and isinstance(lay[key], dict):
+            axes[f"{m.group(1)}{m.group(2)}"] = _convert_axis(lay[key], system_name)
+        elif key.startswith("scene") and isinstance(lay[key], dict):
+            for a in ("x", "y", "z"):
+                ax = lay[key].get(f"{a}axis")
+                if isinstance(ax, dict):
+                    axes[f"{key}.{a}"] = _convert_axis(ax, system_name)
+    if _title_text(lay):
+        _set_title(lay, _relabel_text(_title_text(lay), system_name))
+    for tr in fig.get("data", []):
+        if tr.get("type") in ("scatter3d", "mesh3d", "surface", "cone"):
+            scene = tr.get("scene") or "scene"
+            units = {a: axes.get(f"{scene}.{a}") for a in ("x", "y", "z")}
+        else:
+            units = {
+                "x": axes.get(tr.get("xaxis") or "x"),
+                "y": axes.get(tr.get("yaxis") or "y"),
+                "z": None,
+            }
+            bar = tr.get("colorbar") or (tr.get("marker") or {}).get("colorbar") or {}
+            units["z"] = _fig_unit(_title_text(bar), system_name) if bar else None
+            if bar and _title_text(bar):
+                _set_title(bar, _relabel_text(_title_text(bar), system_name))
+        for a, du in units.items():
+            if du is None:
+                continue
+            if tr.get(a) is not None:
+                tr[a] = _convert_values(tr[a], du)
+            if a == "z" and tr.get("type") not in ("scatter3d", "mesh3d", "surface"):
+                c = tr.get("contours") or {}
+                for k in ("start", "end"):
+                    if c.get(k) is not None:
+                        c[k] = _convert_values(c[k], du)
+                if c.get("size") is not None:
+                    c["size"] = _convert_values(c["size"], du, delta=True)
+                marker = tr.get("marker") or {}
+                if tr.get("type") == "scatter" and marker.get("color") is not None:
+                    marker["color"] = _convert_values(marker["color"], du)
+        if isinstance(tr.get("hovertemplate"), str):
+            tr["hovertemplate"] = _hover_units(tr["hovertemplate"], units)
+        if isinstance(tr.get("name"), str):
+            tr["name"] = _relabel_text(tr["name"], system_name)
+        text = tr.get("text")
+        if isinstance(text, str):
+            tr["text"] = _relabel_text(text, system_name)
+        elif isinstance(text, (list, tuple)):
+            tr["text"] = [_relabel_text(t, system_name) if isinstance(t, str) else t for t in text]
+    for shape in lay.get("shapes") or []:
+        for a in ("x", "y"):
+            du = axes.get(shape.get(f"{a}ref") or a)
+            if du is not None:
+                for k in (f"{a}0", f"{a}1"):
+                    if shape.get(k) is not None:
+                        shape[k] = du.show(float(shape[k]))
+    for note in lay.get("annotations") or []:
+        for a in ("x", "y"):
+            du = axes.get(note.get(f"{a}ref") or a)
+            if du is not None and isinstance(note.get(a), (int, float)):
+                note[a] = du.show(float(note[a]))
+        if isinstance(note.get("text"), str):
+            note["text"] = _relabel_text(note["text"], system_name)
+    return fig
+
+
+def figure_in_system(fig: Any, system_name: str | None = None) -> Any:
+    """A plotly figure (``go.Figure``) in the current unit system (:func:`figure_dict_in_system`);
+    the same object in SI, a new figure of the same type otherwise."""
+    system_name = system_name or system()
+    if system_name == "SI":
+        return fig
+    d = fig.to_dict() if hasattr(fig, "to_dict") else fig
+    out = figure_dict_in_system(d, system_name)
+    return type(fig)(out) if hasattr(fig, "to_dict") else out

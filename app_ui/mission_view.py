@@ -46,7 +46,7 @@ _BOXES = {
 
 def _read(key: str) -> float:
     """A mission box's SI number (a decimal comma is a decimal point); ValueError names the box."""
-    return entry.spec_read(st.session_state.get(key), *_BOXES[key])
+    return entry.spec_read(st.session_state.get(key), *_BOXES[key], key)
 
 
 def _apply() -> None:

@@ -2,7 +2,9 @@
 (:class:`~aerostat_core.output.report.DesignReport` of :func:`aerostat_core.output.report.design_report`) to plotly figures and display-ready pandas frames (no
 Streamlit; tested directly).
 
-Conventions: SI units in every axis title; operating-limit rows marked with red crosses (trace
+Conventions: drawn in SI units, every axis title with its unit in brackets, then shown in the
+session's unit system by :func:`app_ui.formats.figure_dict_in_system` (the brackets say which
+axes convert); operating-limit rows marked with red crosses (trace
 name :data:`LIMIT_TRACE`); requirement limits drawn as dashed lines; tether and side views to
 scale (equal axis aspect).
 
@@ -135,7 +137,8 @@ def _figure(
         lay["shapes"] = shapes
         lay["annotations"] = notes
     lay.update(layout)
-    return go.Figure({"data": traces, "layout": lay})
+    # drawn in SI, shown in the session's unit system (ft, kt, lbf, lb in US customary)
+    return go.Figure(formats.figure_dict_in_system({"data": traces, "layout": lay}))
 
 
 def _limit_trace(x: Any, y: Any, limited: Any, text: Sequence[str], **kw: Any) -> list[dict]:

@@ -40,7 +40,7 @@ def _layout(fig: go.Figure, title: str, **kw: Any) -> go.Figure:
     """Common layout of the page's figures; the legend right of the plot (below it, it sat on
     the x-axis title)."""
     fig.update_layout(**base_layout(title, margin={**MARGIN, "t": 60}, legend=LEGEND_RIGHT, **kw))
-    return fig
+    return formats.figure_in_system(fig)  # drawn in SI, shown in the session's unit system
 
 
 def sensitivity_figure(res: SensitivityResult) -> go.Figure:

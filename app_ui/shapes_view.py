@@ -257,8 +257,8 @@ def blow_by_figure(cmp: Mapping[str, Any], title: str) -> go.Figure:
         )
         for k in TABLE_SHAPES
     ]
-    return go.Figure(
-        dict(
+    return go.Figure(  # drawn in SI, shown in the session's unit system
+        formats.figure_dict_in_system(dict(
             data=traces,
             layout=base_layout(
                 title,
@@ -268,7 +268,7 @@ def blow_by_figure(cmp: Mapping[str, Any], title: str) -> go.Figure:
                     title=dict(text="Blow-by [m]"), hoverformat=formats.axis_hover("Blow-by [m]")
                 ),
             ),
-        )
+        ))
     )
 
 
@@ -330,8 +330,8 @@ def sweeps_figure(sweeps: Mapping[str, Mapping[str, list]]) -> go.Figure:
                 marker=dict(symbol=np.where(ok, "circle", "circle-open").tolist(), size=7),
             )
         )
-    return go.Figure(
-        dict(
+    return go.Figure(  # drawn in SI, shown in the session's unit system
+        formats.figure_dict_in_system(dict(
             data=traces,
             layout=base_layout(
                 "Sized total mass versus fineness ratio, per shape",
@@ -348,7 +348,7 @@ def sweeps_figure(sweeps: Mapping[str, Mapping[str, list]]) -> go.Figure:
                     type="log",
                 ),
             ),
-        )
+        ))
     )
 
 

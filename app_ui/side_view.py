@@ -40,7 +40,7 @@ def _nice_step(span: float, target: int = 8) -> float:
 
 def side_view_svg(rep: DesignReport) -> str:
     """Side view to scale (nose left, z up): hull outline, fins, confluence lines, CB, CG and
-    the confluence point, a station axis in metres. Returns the SVG markup."""
+    the confluence point, a station axis in the chosen unit (m or ft). Returns the SVG markup."""
     h = rep.hull
     xi, r = (np.asarray(a, float) for a in hull_outline(h.a1, h.a2, h.b, shape=rep.shape))
     hull_x = np.concatenate([xi, xi[::-1]])
@@ -65,7 +65,6 @@ def side_view_svg(rep: DesignReport) -> str:
     def path(x: np.ndarray, z: np.ndarray) -> str:
         return " ".join(f"{px(a):.1f},{pz(b):.1f}" for a, b in zip(x, z))
 
-    length = formats.d3("length")[1:-1]  # decimals of a length
     out = [
         f'<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 {_W:.0f} {height:.0f}" '
         f'width="100%" role="img" data-testid="side-view" data-scale="{scale:.6g}" '
@@ -86,30 +85,34 @@ def side_view_svg(rep: DesignReport) -> str:
     ]
     for key, label, short, colour in POINTS:
         x, z = pts[key]
-        tip = f"{label}: ξ = {x:.{length}f} m, z = {z:.{length}f} m"
+        tip = f"{label}: ξ = {formats.shown(x, 'length', with_unit=True)}, " + (
+            f"z = {formats.shown(z, 'length', with_unit=True)}"
+        )
         out.append(
             f'<g data-point="{key}" data-xi="{x:.9g}" data-z="{z:.9g}"><title>{escape(tip)}'
             f'</title><circle cx="{px(x):.1f}" cy="{pz(z):.1f}" r="5" fill="{colour}"/>'
             f'<text x="{px(x) + 7:.1f}" y="{pz(z) - 7:.1f}" fill="{colour}">{short}</text></g>'
         )
-    # station axis under the drawing: round ticks in metres from the nose
+    # station axis under the drawing: round ticks from the nose in the chosen unit (m or ft)
+    du = formats.display("length")
     y_axis = height - 22
-    step = _nice_step(x1 - x0)
+    step = _nice_step((x1 - x0) * du.scale)
     out.append(
         f'<line x1="{px(x0):.1f}" y1="{y_axis:.1f}" x2="{px(x1):.1f}" y2="{y_axis:.1f}" '
         f'stroke="{NEUTRAL}"/>'
     )
-    t = math.ceil(x0 / step) * step
-    while t <= x1 + 1e-9:
+    t = math.ceil(du.show(x0) / step) * step
+    while t <= du.show(x1) + 1e-9:
+        at = px(du.to_si(t))
         out.append(
-            f'<line x1="{px(t):.1f}" y1="{y_axis:.1f}" x2="{px(t):.1f}" y2="{y_axis + 5:.1f}" '
-            f'stroke="{NEUTRAL}"/><text x="{px(t):.1f}" y="{y_axis + 17:.1f}" '
+            f'<line x1="{at:.1f}" y1="{y_axis:.1f}" x2="{at:.1f}" y2="{y_axis + 5:.1f}" '
+            f'stroke="{NEUTRAL}"/><text x="{at:.1f}" y="{y_axis + 17:.1f}" '
             f'text-anchor="middle" fill="{NEUTRAL}">{t:g}</text>'
         )
         t += step
     out.append(
         f'<text x="{px(x1):.1f}" y="{y_axis - 6:.1f}" text-anchor="end" fill="{NEUTRAL}">'
-        "station from the nose ξ [m]</text>"
+        f"station from the nose ξ [{du.unit}]</text>"
     )
     out.append("</svg>")
     return "".join(out)

@@ -24,7 +24,7 @@ from aerostat_core.dynamics.scenarios6 import SCENARIOS6, Request6, metrics6, ru
 from aerostat_core.dynamics.sixdof_results import SIGNALS6
 from aerostat_core.model.io import inputs_from_dict
 
-from . import cache
+from . import cache, formats
 from .theme import ACCENT, FONT, MARGIN, SECOND, THIRD
 
 #: What each 6-DOF scenario does, for the radio's labels.
@@ -169,7 +169,7 @@ def view3d_figure(out: Mapping[str, Any], k: int) -> go.Figure:
         title=f"t = {out['frames'][k]:.1f} s", font=FONT, margin=MARGIN, height=520,
         scene={"aspectmode": "data", "xaxis_title": "x [m]", "yaxis_title": "y [m]",
                "zaxis_title": "z [m]"})
-    return fig
+    return formats.figure_in_system(fig)  # drawn in SI, shown in the session's unit system
 
 
 def lateral_figure(out: Mapping[str, Any]) -> go.Figure:
@@ -180,9 +180,10 @@ def lateral_figure(out: Mapping[str, Any]) -> go.Figure:
     for i, n in enumerate(names):
         fig.add_trace(go.Scatter(x=out["t"], y=out["signals"][n], mode="lines",
                                  line={"color": ACCENT}, showlegend=False), row=i + 1, col=1)
+        fig.update_yaxes(title_text=f"[{out['units'][n]}]", row=i + 1, col=1)
     fig.update_xaxes(title_text="t [s]", row=4, col=1)
     fig.update_layout(font=FONT, margin=MARGIN, height=720)
-    return fig
+    return formats.figure_in_system(fig)  # drawn in SI, shown in the session's unit system
 
 
 __all__ = ["SCENARIOS6", "SCENARIO_LABELS", "build_request6", "form_fields", "lateral_figure",
