@@ -522,7 +522,7 @@ def figure_dict_in_system(fig: dict, system_name: str | None = None) -> dict:
     >>> g["layout"]["yaxis"]["title"]["text"], round(g["data"][0]["y"][0], 1)
     ('Blow-by [ft]', 492.1)
     >>> g["data"][0]["hovertemplate"], g["layout"]["annotations"][0]["text"]
-    ('%{x:.1f} kt: %{y:.0f} ft', 'blow-by limit 492.1 ft')
+    ('%{x:.1f} kt: %{y:.0f} ft', 'blow-by limit 492 ft')
     """
     system_name = system_name or system()
     if system_name == "SI":
