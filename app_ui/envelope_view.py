@@ -447,10 +447,13 @@ def _flyable(inputs_json: str) -> None:
     c[0].metric(
         "Time flyable [%]",
         f"{f['percent_time_flyable']:.1f}",
-        help=f"Share of the time the wind at {f['site_altitude_m']:g} m lies in the "
-        "flyable winds "
-        + ", ".join(f"{a:.1f}-{b:.1f}" for a, b in f["flyable_winds_m_s"])
-        + " m/s.",
+        help=formats.text_in_system(f"Share of the time the wind at {f['site_altitude_m']:g} m")
+        + " lies in the flyable winds "
+        + ", ".join(
+            f"{formats.shown(a, 'wind')}-{formats.shown(b, 'wind')}"
+            for a, b in f["flyable_winds_m_s"]
+        )
+        + f" {formats.unit_of('wind')}.",
     )
     c[1].metric(
         "Longest outage [h]",
@@ -459,8 +462,8 @@ def _flyable(inputs_json: str) -> None:
         "run of simulated hours; CSV: in the record).",
     )
     c[2].metric(
-        f"Design wind for {100 * f['target_availability']:g} % [m/s]",
-        f"{f['design_wind_for_target_m_s']:.1f}",
+        formats.label(f"Design wind for {100 * f['target_availability']:g} %", "wind"),
+        formats.shown(f["design_wind_for_target_m_s"], "wind"),
         help="Wind at the aerostat not exceeded that share of the time: size for it "
         "to fly that often.",
     )
@@ -492,10 +495,21 @@ def _uncertainty(inputs_json: str, rep: DesignReport) -> None:
         return
     s = mc["summary"]
     c = show.metric_row(4)  # metrics as wide as their labels: four columns cut them
-    c[0].metric("Blow-by 5-95 % [m]", f"{s['blow_by_p05_m']:.1f} – {s['blow_by_p95_m']:.1f}")
-    c[1].metric("Tension 5-95 % [N]", f"{s['tension_p05_N']:.0f} – {s['tension_p95_N']:.0f}")
+    # in the chosen unit system (ft, lbf, lb in US customary)
+    c[0].metric(
+        formats.label("Blow-by 5-95 %", "distance"),
+        f"{formats.shown(s['blow_by_p05_m'], 'distance')} – "
+        f"{formats.shown(s['blow_by_p95_m'], 'distance')}",
+    )
+    c[1].metric(
+        formats.label("Tension 5-95 %", "force"),
+        f"{formats.shown(s['tension_p05_N'], 'force')} – "
+        f"{formats.shown(s['tension_p95_N'], 'force')}",
+    )
+    lift = formats.display("mass")
     c[2].metric(
-        "Free lift 5-95 % [kg]", f"{s['free_lift_p05_kg']:.2f} – {s['free_lift_p95_kg']:.2f}"
+        formats.label("Free lift 5-95 %", "mass"),
+        f"{lift.show(s['free_lift_p05_kg']):.2f} – {lift.show(s['free_lift_p95_kg']):.2f}",
     )
     c[3].metric("P(all limits met)", f"{100 * s['probability_feasible']:.0f} %")
     st.plotly_chart(bands_figure(mc, rep), key="mc_bands")
@@ -536,16 +550,25 @@ def limits_frame(env: Envelope, payload_index: int = 0) -> pd.DataFrame:
     names = env.binding_names()[payload_index]
     fly = env.flyable[payload_index]
     top = float(env.wind[-1])
+    wind, height = formats.display("wind"), formats.display("distance")  # the chosen units
     cells = []
     for ia, w in enumerate(lw):
         if np.isfinite(w):
             at_top = bool(fly[ia].all())
-            cells.append(f"≥ {top:.1f} (top of the map)" if at_top else f"{w:.1f}")
+            cells.append(
+                f"≥ {wind.show(top):.1f} (top of the map)" if at_top else f"{wind.show(w):.1f}"
+            )
         else:
             broken = BY_NAME[str(names[ia, 0])].label.lower()
-            cells.append(f"not flyable: {broken} broken at {float(env.wind[0]):g} m/s already")
+            cells.append(
+                f"not flyable: {broken} broken at {wind.show(float(env.wind[0])):.3g} "
+                f"{wind.unit} already"
+            )
     return pd.DataFrame(
-        {"Altitude [m]": [f"{h:.0f}" for h in env.altitude], "Flyable up to [m/s]": cells}
+        {
+            formats.label("Altitude", "distance"): [f"{height.show(h):.0f}" for h in env.altitude],
+            formats.label("Flyable up to", "wind"): cells,
+        }
     )
 
 

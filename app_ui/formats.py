@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import contextvars
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
 
@@ -140,8 +141,26 @@ def use_system(name: str) -> None:
     _SYSTEM.set(name)
 
 
+#: Where the session's choice is read from while a script runs (set by :mod:`app_ui.show`, which
+#: knows the session; this module stays free of Streamlit): a page, a fragment or a callback then
+#: follows the choice even where no :func:`use_system` ran before it.
+_SESSION_CHOICE: Callable[[], str | None] | None = None
+
+
+def read_choice_with(resolver: Callable[[], str | None] | None) -> None:
+    """Read the unit system from ``resolver`` (``None`` outside a session) before the context's
+    :func:`use_system` value."""
+    global _SESSION_CHOICE
+    _SESSION_CHOICE = resolver
+
+
 def system() -> str:
-    """The unit system values are shown in ("SI" or "US")."""
+    """The unit system values are shown in ("SI" or "US"): the session's choice while a script
+    runs, else the one :func:`use_system` set (SI by default)."""
+    if _SESSION_CHOICE is not None:
+        chosen = _SESSION_CHOICE()
+        if chosen in UNIT_SYSTEMS:
+            return chosen
     return _SYSTEM.get()
 
 
@@ -410,9 +429,7 @@ import re as _re  # noqa: E402 - kept with the figure helpers
 _FIGURE_UNITS = {"m/s": "m/s", "m³": "m3", "m²": "m2", "m": "m", "N": "N", "kg": "kg", "°C": "degC"}
 _UNIT_ALT = "|".join(_re.escape(u) for u in sorted(_FIGURE_UNITS, key=len, reverse=True))
 _BRACKET = _re.compile(r"\[(" + _UNIT_ALT + r")\]")
-_NUMBER_UNIT = _re.compile(
-    r"(?<![\w.])(-?\d[\d,]*(?:\.\d+)?)( ?)(" + _UNIT_ALT + r")(?![\w/³²])"
-)
+_NUMBER_UNIT = _re.compile(r"(?<![\w.])(-?\d[\d,]*(?:\.\d+)?)( ?)(" + _UNIT_ALT + r")(?![\w/³²])")
 _PLACEHOLDER_UNIT = _re.compile(r"(%\{(x|y|z)(?::[^}]*)?\})(\s*)(" + _UNIT_ALT + r")(?![\w/³²])")
 _AXIS_KEY = _re.compile(r"^(x|y)axis(\d*)$")
 
@@ -446,6 +463,17 @@ def _relabel_text(text: str, system_name: str) -> str:
         return f"{out}{m.group(2)}{du.unit}"
 
     return _BRACKET.sub(bracket, _NUMBER_UNIT.sub(number, text))
+
+
+def text_in_system(text: str, system_name: str | None = None) -> str:
+    """A sentence with SI numbers and units ("payload 10 kg at 300 m") in the current unit
+    system ("payload 22.0 lb at 984 ft"): bracketed units and "number unit" pairs converted.
+
+    >>> text_in_system("blow-by limit 150 m at 15 m/s [m]", "US")
+    'blow-by limit 492 ft at 29.2 kt [ft]'
+    """
+    system_name = system_name or system()
+    return text if system_name == "SI" else _relabel_text(text, system_name)
 
 
 def _convert_values(v: Any, du: DisplayUnit, *, delta: bool = False) -> Any:

@@ -6,6 +6,7 @@ from __future__ import annotations
 from typing import Any
 
 import streamlit as st
+from streamlit.runtime.scriptrunner import get_script_run_ctx
 
 from aerostat_core.base.fields import UNIT_SYSTEM_LABELS, UNIT_SYSTEMS
 
@@ -57,6 +58,16 @@ def chosen_system(state: Any = None) -> str:
     return chosen if chosen in UNIT_SYSTEMS else "SI"
 
 
+def _session_choice() -> str | None:
+    """The session's unit system while a script of a session runs, else ``None``."""
+    if get_script_run_ctx(suppress_warning=True) is None:
+        return None
+    return chosen_system()
+
+
+formats.read_choice_with(_session_choice)
+
+
 def _keep_choice() -> None:
     st.session_state[CHOICE_KEY] = st.session_state.get(UNIT_KEY) or "SI"
 
@@ -64,8 +75,8 @@ def _keep_choice() -> None:
 def unit_switch() -> None:
     """The unit-system switch (SI / US customary), once for the whole app (``app.py`` draws it in
     the sidebar before running the page), and the choice applied to this script run
-    (:func:`app_ui.formats.use_system`): the Design and Compare results, the Mission tab and the
-    design report follow it; inputs, studies and exports stay SI."""
+    (:func:`app_ui.formats.use_system`): every page's inputs, results and plots and the design
+    report follow it; exports stay SI, with the chosen units offered beside them."""
     chosen = st.session_state.get(CHOICE_KEY, "SI")
     st.radio(
         "Units",
@@ -75,10 +86,10 @@ def unit_switch() -> None:
         key=UNIT_KEY,
         on_change=_keep_choice,
         horizontal=True,
-        help="SI (m, kg, N, m/s, °C) or US customary (ft, lb, lbf, kt, ft³, °F): how results "
-        "are shown on the Design and Compare pages and in the design report. Inputs, the other "
-        "pages' studies and every export (CSV, JSON) stay in SI; a CSV of the Design page adds "
-        "US columns.",
+        help="SI (m, kg, N, m/s, °C) or US customary (ft, lb, lbf, kt, ft³, °F): the units of "
+        "every page's inputs, results and plots and of the design report (you type 1000 ft, "
+        "22 lb, 30 kt). The program computes in SI; every export (CSV, JSON) keeps SI with a "
+        "unit row, and a CSV of the Design page adds the chosen units.",
     )
     apply_unit_choice()
 

@@ -9,7 +9,7 @@ from aerostat_core.base.validation import short
 from aerostat_core.model import budget
 from aerostat_core.model.io import inputs_from_dict
 from aerostat_core.output.report import thesis_gui_cases
-from app_ui import cache, plots, show, state, text, workspace_ui
+from app_ui import cache, formats, plots, show, state, text, workspace_ui
 
 st.title("Compare saved cases")
 st.caption(
@@ -331,11 +331,11 @@ with tab_tether:
         default = next(iter(design_winds)) if len(design_winds) == 1 else max(speeds)
         default = min(speeds, key=lambda v: abs(v - default))
         wind = st.select_slider(
-            "Wind speed [m/s]",
+            formats.label("Wind speed", "wind"),  # in the chosen unit system
             options=speeds,
             value=default,
             key="compare_wind",
-            format_func=lambda v: f"{v:g}",
+            format_func=lambda v: formats.shown(v, "wind"),
             help="Each case's profile at the sweep speed nearest this.",
         )
         st.plotly_chart(plots.compare_tether_figure(reports, wind), key="cmp_tether")

@@ -7,8 +7,8 @@ import streamlit as st
 
 from aerostat_core.base.validation import short
 from aerostat_core.optimize import VARIABLE_INFO, VARIABLES
+from app_ui import formats, shapes_view, widgets
 from app_ui import optimize_view as view
-from app_ui import shapes_view, widgets
 
 st.title("Sensitivity")
 st.caption(
@@ -25,12 +25,12 @@ base = {
 }
 shown = {k: view.shown(k, v) for k, v in base.items()}  # the fin position in % of l
 vol_txt = f"given volume {cfg.hull.volume:g} m³" if cfg.hull.volume is not None else "volume sized"
-st.markdown(
+st.markdown(formats.text_in_system(  # the numbers in the chosen unit system
     f"**Baseline:** f = {shown['fineness_ratio']:g}, ΔS_f = {shown['area_change']:g} %, "
     f"Δl_f = {shown['position']:g} % of l, {vol_txt}; payload {req.payload_mass:g} kg at "
     f"{req.altitude:g} m; blow-by limit {req.blow_by_limit:g} m at {req.design_wind:g} m/s; "
     f"rule set **{req.rules}** (every constraint of its table applies)."
-)
+))
 
 VOLUME_MODES = {
     "resize": "Re-sized at every point (smallest hull meeting the requirement)",

@@ -6,9 +6,10 @@ from __future__ import annotations
 import pandas as pd
 import streamlit as st
 
+from aerostat_core import Requirement
 from aerostat_core.base.validation import short
 from aerostat_core.optimize import OBJECTIVES, SOLVERS
-from app_ui import entry, widgets
+from app_ui import entry, formats, widgets
 from app_ui import optimize_view as view
 
 st.title("Optimise")
@@ -20,10 +21,10 @@ st.caption(
 )
 
 inputs_json, req, cfg = view.load_inputs()
-st.caption(
+st.caption(formats.text_in_system(  # the numbers in the chosen unit system
     f"Requirement from the Design page: {req.payload_mass:g} kg at {req.altitude:g} m, rule set "
     f"**{req.rules}** (same limits and the same sized design as the Design page)."
-)
+))
 
 with st.expander("Problem definition", icon=":material/functions:"):
     st.dataframe(pd.DataFrame(view.problem_rows(req, cfg)), hide_index=True, key="opt_problem")
@@ -35,7 +36,7 @@ with st.expander("Problem definition", icon=":material/functions:"):
 
 # The limit box follows the design inputs unless the user edits it here.
 if st.session_state.get("_opt_limit_src") != req.blow_by_limit:
-    st.session_state["opt_limit"] = widgets.format_value(req.blow_by_limit)
+    st.session_state.pop("opt_limit", None)  # refilled from the design (entry.spec_box)
     st.session_state["_opt_limit_src"] = req.blow_by_limit
 
 # Every number is a text box read like the Design form's ("12,5" is 12.5, never 125).
@@ -67,14 +68,8 @@ with st.form("opt_form"):
         help="Seeds the starts, the surrogate sample and the swarm: the "
         "same seed gives the same result.",
     )
-    limit_text = entry.number_box(
-        "Blow-by limit [m]",
-        key="opt_limit",
-        value=req.blow_by_limit,
-        container=c[3],
-        help=f"At the design wind {req.design_wind:g} m/s. Taken from the design inputs; "
-        "change it here to explore (the Pareto front shows the whole range).",
-    )
+    # the registry's box in the chosen unit system (ft in US customary)
+    limit_text = entry.spec_box(c[3], Requirement, "blow_by_limit", req.blow_by_limit, "opt_limit")
     solvers = st.multiselect(
         "Solvers",
         list(SOLVERS),
@@ -107,7 +102,7 @@ if submitted:
     try:
         request = view.build_request(
             inputs_json,
-            limit=entry.read(limit_text, "Blow-by limit [m]"),
+            limit=entry.spec_read(limit_text, Requirement, "blow_by_limit", "opt_limit"),
             bounds=view.parse_ranges(bound_texts, "lower", "upper"),
             objective=objective,
             level=view.RUN_LEVELS[level],

@@ -5,7 +5,7 @@ from __future__ import annotations
 import streamlit as st
 
 from app_ui import dynamics_view as view
-from app_ui import entry, tables, widgets
+from app_ui import entry, formats, tables, widgets
 from app_ui import sixdof_view as six
 
 st.title("Dynamics")
@@ -274,15 +274,17 @@ if out.get("turbulence"):
 
 sig = out["signals"]
 k = widgets.metric_row(5)  # metrics as wide as their labels: five columns cut them at 1024 px
-k[0].metric("Peak blow-by x_C [m]", f"{max(sig['x_C']):.1f}")
-k[1].metric("Lowest altitude z_C [m]", f"{min(sig['z_C']):.1f}")
+# in the chosen unit system (ft, kt, lbf in US customary)
+k[0].metric(formats.label("Peak blow-by x_C", "distance"), formats.shown(max(sig["x_C"]), "distance"))
+k[1].metric(formats.label("Lowest altitude z_C", "distance"),
+            formats.shown(min(sig["z_C"]), "distance"))
 if out["is_hull"]:
     k[2].metric("Pitch range θ [deg]",
                 f"{view.one_decimal(min(sig['theta']))} … {view.one_decimal(max(sig['theta']))}")
 rms = {r["signal"]: r for r in out["stats"]}
-k[3].metric("RMS fluctuation of v_x [m/s]",
-            f"{rms[view.SIGNALS['vx'][0]]['rms_fluctuation']:.2f}")
-k[4].metric("Peak tension at C [N]", f"{max(sig['tension_C']):.0f}")
+k[3].metric(formats.label("RMS fluctuation of v_x", "speed"),
+            f"{formats.convert(rms[view.SIGNALS['vx'][0]]['rms_fluctuation'], 'speed'):.2f}")
+k[4].metric(formats.label("Peak tension at C", "force"), formats.shown(max(sig["tension_C"]), "force"))
 
 r1 = st.columns(2)
 r1[0].plotly_chart(view.tether_figure(out, title="Tether profile at t = 0 and at the end"),

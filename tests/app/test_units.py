@@ -1,0 +1,217 @@
+"""The unit system the user chooses (issue 24 item 5): the inputs typed in it, the plots and the
+other pages shown in it, and the conversions exact enough that switching units never changes a
+design. AppTest (headless) and pure checks; the browser test is tests/e2e/test_ux_e2e.py."""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+from streamlit.testing.v1 import AppTest
+
+from aerostat_core.model.input_paths import all_specs
+from app_ui import formats, show
+from app_ui.form_model import FIELDS, build_inputs, widget_values
+from tests.app.conftest import APP_PATH
+from tests.app.helpers import chart, goto, messages, open_groups, show_tab, submit
+
+#: 1 ft, 1 lb, 1 kt in SI (exact definitions).
+FT, LB, KT = 0.3048, 0.45359237, 1852.0 / 3600.0
+NUMBERS = [p for p in all_specs() if p.spec.kind == "number" and p.spec.lo is not None]
+
+
+def _app() -> AppTest:
+    at = AppTest.from_file(str(APP_PATH), default_timeout=180).run()
+    assert not at.exception, [e.value for e in at.exception]
+    return at
+
+
+def _units(at: AppTest, system: str) -> AppTest:
+    """Choose the unit system with the sidebar's switch (AppTest keeps app.py's sidebar only in
+    the first run's tree: later, as the switch's callback does, through the session)."""
+    switch = [w for w in at.radio if w.key == "unit_system"]
+    if switch:
+        switch[0].set_value(system).run()
+    else:
+        at.session_state[show.CHOICE_KEY] = system
+        at.run()
+    assert not at.exception, [e.value for e in at.exception]
+    return at
+
+
+def _box(at: AppTest, key: str):
+    open_groups(at, key)
+    return next(w for w in at.text_input if w.key == key)
+
+
+# --- conversions over each field's range --------------------------------------------------------
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.sampled_from(NUMBERS), st.floats(0.0, 1.0))
+def test_box_conversions_round_trip_over_each_fields_range(entry, t):
+    """Every registry number, anywhere in its range: its US box text read back gives the SI
+    value to the box's 6 significant digits; the unrounded US value gives it back to 12 (the
+    program's exactness); the SI box is exact as before."""
+    s = entry.spec
+    lo, hi = float(s.lo), float(min(s.hi, 1e9))
+    x = lo + t * (hi - lo)
+    for system in ("SI", "US"):
+        du = formats.field_unit(s, system)
+        assert formats.box_to_si(du.show(x), s, system) == pytest.approx(x, rel=1e-11, abs=1e-12)
+        back = formats.box_to_si(float(formats.box_text(x, s, system)), s, system)
+        tol = 1e-11 if system == "SI" else 6e-6
+        assert back == pytest.approx(x, rel=tol, abs=1e-9 * max(1.0, abs(hi))), entry.path
+    lo_b, hi_b, step = formats.box_bounds(s, "US")
+    if lo_b is not None:
+        assert formats.box_to_si(lo_b, s, "US") == pytest.approx(lo, rel=1e-9, abs=1e-12)
+    if step is not None:
+        assert step > 0
+
+
+def test_us_boxes_speak_feet_knots_pounds_and_fahrenheit():
+    us = {f.key: f.label_in("US") for f in FIELDS}
+    assert us["in_payload"].startswith("Payload mass [lb]")
+    assert "[ft]" in us["in_altitude"] and "[kt]" in us["in_design_wind"]
+    assert "[ft³]" in us["in_volume"] and "[°F]" in us["in_site_temp"]
+    assert "[lbf]" in us["in_tether_mbl"] and "[in]" in us["in_tether_dia"]
+    # dimensionless and percent boxes read the same in both systems
+    assert us["in_fineness"] == FIELDS[[f.key for f in FIELDS].index("in_fineness")].label
+    help_us = next(f for f in FIELDS if f.key == "in_payload").help_in("US")
+    assert "lb" in help_us and "22046.2" in help_us
+
+
+def test_a_value_typed_in_us_units_builds_the_design_of_its_si_equivalent(thesis_at):
+    base = thesis_at.session_state["design_inputs"]
+    us = widget_values(base, system="US")
+    si = widget_values(base, system="SI")
+    typed_us = {**us, "in_altitude": "1000", "in_payload": "22", "in_wind_max": "30"}
+    typed_si = {
+        **si,
+        "in_altitude": "304.8",
+        "in_payload": f"{22 * LB:.12g}",
+        "in_wind_max": f"{30 * KT:.12g}",
+    }
+    a = build_inputs(typed_us, base, "US")
+    b = build_inputs(typed_si, base, "SI")
+    assert a == b
+    assert a[0].altitude == 304.8 and a[0].payload_mass == pytest.approx(22 * LB, rel=1e-11)
+    # the untouched boxes keep their exact SI values in either system
+    assert build_inputs(us, base, "US") == build_inputs(si, base, "SI")
+
+
+# --- the app: the Design form in US units -------------------------------------------------------
+
+
+def test_design_form_takes_us_units_and_the_switch_never_changes_the_design():
+    at = _units(_app(), "US")
+    assert _box(at, "in_altitude").label == "Operating altitude [ft]"
+    assert _box(at, "in_payload").label == "Payload mass [lb]"
+    before = at.session_state["design_inputs"]
+    assert float(_box(at, "in_altitude").value) == pytest.approx(
+        before["requirement"]["altitude"] / FT, rel=1e-6
+    )
+    # applying the US boxes untouched, and switching back and applying, keep the design
+    at.button(key="in_submit").click().run()
+    assert at.session_state["design_inputs"] == before
+    _units(at, "SI")
+    at.button(key="in_submit").click().run()
+    assert at.session_state["design_inputs"] == before
+    assert _box(at, "in_altitude").label == "Operating altitude [m]"
+    # a US user types 1000 ft and 22 lb: the design is 304.8 m and 9.979 kg
+    _units(at, "US")
+    submit(at, in_altitude="1000", in_payload="22", in_design_wind="30")
+    assert not at.exception and not at.error, [e.value for e in at.error]
+    req = at.session_state["design_inputs"]["requirement"]
+    assert req["altitude"] == 304.8
+    assert req["payload_mass"] == pytest.approx(22 * LB, rel=1e-11)
+    assert req["design_wind"] == pytest.approx(30 * KT, rel=1e-11)
+    assert _box(at, "in_altitude").value == "1000"
+    assert [m.label for m in at.metric][:2] == ["Volume [ft³]", "Length [ft]"]
+
+
+def test_an_edit_not_applied_is_converted_by_a_switch():
+    """A box the design does not show (a rejected value stays in its box to be corrected) keeps
+    its number through a switch, in the new unit. (Text typed in the form and not submitted stays
+    in the browser: a rerun does not see it.)"""
+    at = _app()
+    submit(at, in_altitude="5")  # 5 m: below the range, rejected, left in the box
+    assert at.error
+    _units(at, "US")
+    assert _box(at, "in_altitude").value == "16.4042"
+    assert _box(at, "in_payload").value == "22.0462"  # 10 kg, untouched
+
+
+def test_a_rejected_us_value_is_named_in_us_units():
+    at = _units(_app(), "US")
+    submit(at, in_altitude="5")
+    text = " ".join(messages(at, "error"))
+    assert "Operating altitude [ft]: 5 is not allowed" in text and "32.8084 and 16404.2" in text
+
+
+def test_design_plots_follow_the_unit_system():
+    at = _units(_app(), "US")
+    show_tab(at, "Performance")
+    fig = chart(at, "perf_blow_by")
+    assert fig["layout"]["yaxis"]["title"]["text"] == "Blow-by [ft]"
+    assert fig["layout"]["xaxis"]["title"]["text"].endswith("[kt]")
+    tension = chart(at, "perf_tension")
+    assert tension["layout"]["yaxis"]["title"]["text"] == "Tether tension [lbf]"
+
+
+# --- the other pages in US units ----------------------------------------------------------------
+
+
+def _page(page: str) -> AppTest:
+    at = _units(_app(), "US")
+    goto(at, page)
+    assert not at.exception, [e.value for e in at.exception]
+    return at
+
+
+def test_sensitivity_page_in_us_units():
+    at = _page("pages/3_Sensitivity.py")
+    text = " ".join(str(m.value) for m in at.markdown)
+    assert " lb at " in text and " ft; blow-by limit " in text and " kt;" in text
+    fig = chart(at, "sens_ofat")
+    titles = [
+        v["title"]["text"]
+        for k, v in fig["layout"].items()
+        if k.startswith("yaxis") and isinstance(v, dict) and v.get("title")
+    ]
+    assert any("[lb]" in t for t in titles) and not any("[kg]" in t for t in titles)
+
+
+def test_optimise_page_limit_box_in_feet():
+    from aerostat_core.model.io import inputs_from_dict
+
+    at = _page("pages/4_Optimise.py")
+    box = next(w for w in at.text_input if w.key == "opt_limit")
+    assert box.label.endswith("[ft]")
+    limit = inputs_from_dict(at.session_state["design_inputs"])[0].resolved().blow_by_limit
+    assert float(box.value) == pytest.approx(limit / FT, rel=1e-6)
+    caption = " ".join(str(c.value) for c in at.caption)
+    assert " lb at " in caption and " ft, rule set " in caption
+
+
+def test_compare_shapes_and_method_pages_in_us_units():
+    at = _page("pages/7_Shapes.py")
+    fig = chart(at, "shape_fig_full")
+    assert fig["layout"]["yaxis"]["title"]["text"] == "Blow-by [ft]"
+    goto(at, "pages/6_Method.py")
+    assert not at.exception, [e.value for e in at.exception]
+    goto(at, "pages/2_Compare.py")
+    assert not at.exception, [e.value for e in at.exception]
+
+
+def test_envelope_tab_in_us_units():
+    at = _units(_app(), "US")
+    show_tab(at, "Envelope")
+    assert not at.exception, [e.value for e in at.exception]
+    fig = chart(at, "envelope_map")
+    assert fig["layout"]["yaxis"]["title"]["text"] == "Altitude = tether length [ft]"
+    assert fig["layout"]["xaxis"]["title"]["text"].endswith("[kt]")
+    site = next(w for w in at.text_input if w.key == "site_c")
+    assert site.label.endswith("[kt]") and math.isclose(float(site.value), 6.0 / KT, rel_tol=1e-5)
