@@ -47,10 +47,10 @@ import streamlit as st
 
 from aerostat_core import Configuration, Design, Requirement
 from aerostat_core.model import budget
-from aerostat_core.model.io import cases_to_json, inputs_from_dict, rows_to_csv
+from aerostat_core.model.io import cases_to_json, inputs_from_dict
 from aerostat_core.output.report import DesignReport, cases_csv, comparison_rows, design_report
 from aerostat_core.studies.robust import design_with_confidence
-from app_ui import state
+from app_ui import formats, state, tables
 
 #: Designs (and reports) kept for every session together.
 MAX_DESIGNS = 256
@@ -331,8 +331,9 @@ def cached_cases_csv(cases_json: str) -> str:
 
 
 def csv_bytes(rows: list[dict]) -> bytes:
-    """UTF-8 CSV of flat rows (see :func:`aerostat_core.model.io.rows_to_csv`)."""
-    return rows_to_csv(rows).encode("utf-8")
+    """UTF-8 CSV of flat rows for download: the SI columns, a row of units, and in US customary
+    units a converted column after each SI one (:func:`app_ui.tables.export_csv`)."""
+    return tables.export_csv(rows, formats.system())
 
 
 def cases_json_bytes(cases: dict) -> bytes:

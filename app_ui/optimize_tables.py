@@ -15,9 +15,8 @@ from aerostat_core.optimize import OptimizationResult, ParetoFront, comparison_r
 from aerostat_core.studies.sensitivity import SensitivityResult
 
 from . import formats
-from .cache import csv_bytes
 from .optimize_form import DISPLAY, shown, unit, var_label
-from .tables import WRAP
+from .tables import WRAP, export_csv
 
 
 def comparison_frame(results: Sequence[OptimizationResult]) -> pd.DataFrame:
@@ -211,8 +210,10 @@ def summary_frame(res: SensitivityResult) -> pd.DataFrame:
 
 
 def csv_of(rows: list[dict]) -> bytes:
-    """CSV bytes of flat rows (pure: :func:`aerostat_core.model.io.rows_to_csv`)."""
-    return csv_bytes(rows)
+    """CSV bytes of flat rows for download (Sensitivity and Optimise): the SI columns, a row of
+    units, and in US customary units a converted column after each SI one
+    (:func:`app_ui.tables.export_csv`, the Design page's export)."""
+    return export_csv(rows, formats.system())
 
 
 #: Rows of the transposed range summary: (row label, summary key, shown in the variable's unit).

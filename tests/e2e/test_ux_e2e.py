@@ -5,7 +5,8 @@
 * every label whole (no text cut by its box: an ellipsis or a clipped line);
 * every tab reachable without scrolling sideways (the tab bar wraps, no page scrolls sideways);
 * on the Design page the verdict and the key numbers are above the fold;
-* the unit switch in the sidebar changes the Design page's numbers and labels to US customary.
+* the unit switch in the sidebar changes the Design page's numbers, labels, plot axes and input
+  boxes to US customary (a value typed in feet is applied in metres).
 
 One browser session per width walks every page and every tab (and runs a short simulation on
 the Dynamics page so its tables are there too).
@@ -196,9 +197,23 @@ def _switch_units(page: Page) -> None:
     expect(page.get_by_test_id("stTable").filter(has_text="Wind [kt]").first).to_be_visible(
         timeout=PAGE_TIMEOUT_MS
     )
+    # the plots' axes follow (drawn by plotly in the browser)
+    expect(page.locator(".ytitle", has_text="Blow-by [ft]").first).to_be_visible(
+        timeout=PAGE_TIMEOUT_MS
+    )
+    expect(page.locator(".xtitle", has_text="[kt]").first).to_be_visible(timeout=PAGE_TIMEOUT_MS)
+    # the inputs too: a US user types 1000 ft, which the design takes as 304.8 m
+    altitude = page.get_by_role("textbox", name="Operating altitude [ft]", exact=True)
+    expect(altitude).to_be_visible(timeout=PAGE_TIMEOUT_MS)
+    altitude.fill("1000")
+    altitude.press("Enter")
+    wait_for_rerun(page, timeout=PAGE_TIMEOUT_MS)
+    expect(altitude).to_have_value("1000", timeout=PAGE_TIMEOUT_MS)
     goto_page(page, "Compare")  # the choice holds for the whole app
     page.get_by_test_id("stSidebar").get_by_text("SI", exact=True).click()
     wait_for_rerun(page)
     goto_page(page, "Design")
     expect(metric.filter(has_text="Volume [m³]").first).to_be_visible(timeout=PAGE_TIMEOUT_MS)
+    si_altitude = page.get_by_role("textbox", name="Operating altitude [m]", exact=True)
+    expect(si_altitude).to_have_value("304.8", timeout=PAGE_TIMEOUT_MS)
     assert _raw_hits(page) == []
