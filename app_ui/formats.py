@@ -476,6 +476,42 @@ def text_in_system(text: str, system_name: str | None = None) -> str:
     return text if system_name == "SI" else _relabel_text(text, system_name)
 
 
+def unit_shown(u: str, system_name: str | None = None) -> DisplayUnit | None:
+    """How a value in the SI unit ``u`` (as a table's Unit column or a header's brackets show
+    it: "m", "m/s", "N", "kg", "m³") is shown in the current system, when it converts; ``None``
+    when the number stays as it is (SI, or a unit no system changes: deg, s, %)."""
+    token = _FIGURE_UNITS.get(str(u).strip())
+    if token is None:
+        return None
+    du = unit_in(token, system_name or system())
+    return du if (du.scale != 1.0 or du.offset != 0.0) else None
+
+
+def frame_in_system(df: Any, system_name: str | None = None) -> tuple[Any, dict[str, str]]:
+    """A table (pandas frame) whose headers carry SI units in brackets ("Blow-by [m]") in the
+    current unit system: numeric cells of those columns converted, headers relabelled; returns
+    the frame and {old header: new header} (every header), so formats keyed by the old names
+    follow."""
+    system_name = system_name or system()
+    names = {c: c for c in df.columns}
+    if system_name == "SI":
+        return df, names
+    out = df.copy()
+    for c in df.columns:
+        found = _BRACKET.findall(str(c))
+        du = unit_shown(found[-1], system_name) if found else None
+        if du is None:
+            continue
+        out[c] = [
+            du.show(float(v))
+            if isinstance(v, (int, float)) and not isinstance(v, bool) and v == v
+            else v
+            for v in df[c]
+        ]
+        names[c] = _relabel_text(str(c), system_name)
+    return out.rename(columns=names), names
+
+
 def _convert_values(v: Any, du: DisplayUnit, *, delta: bool = False) -> Any:
     """Values (a number, a list with ``None`` gaps, nested lists, a numpy array) in ``du``;
     ``delta``: a difference (a step), scaled only."""

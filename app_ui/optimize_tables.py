@@ -327,7 +327,8 @@ def styled(df: pd.DataFrame, columns: Sequence[str] | None = None) -> Styler:
     """A static table of ``columns`` of ``df`` (default all), each numeric column at the
     decimals of its quantity, no index."""
     shown_df = df if columns is None else df[list(columns)]
-    fmt = {c: formats.formatter(COLUMN_KINDS[c]) for c in shown_df.columns if c in COLUMN_KINDS}
+    shown_df, names = formats.frame_in_system(shown_df)  # "Blow-by [ft]" in US customary
+    fmt = {names[c]: formats.formatter(k) for c, k in COLUMN_KINDS.items() if c in names}
     return shown_df.style.format(fmt, na_rep="–").set_table_styles(WRAP).hide(axis="index")
 
 

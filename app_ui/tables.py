@@ -296,20 +296,32 @@ def labelled_table(
     ['0.000', '–', 'never']
     """
 
-    def cell(v: Any, spec: tuple) -> Any:
+    def cell(v: Any, spec: tuple, du: Any = None) -> Any:
         header, fmt = spec[0], spec[1]
         if isinstance(v, (bool, np.bool_)):
             return "yes" if v else "no"
         if v is None or (isinstance(v, (float, np.floating)) and not np.isfinite(v)):
             return spec[2] if len(spec) > 2 else formats.missing("no value")
         if header == "Unit" and isinstance(v, str):
-            return formats.cell_unit(v)
+            return formats.cell_unit(du.unit if du is not None else v)
         if fmt and isinstance(v, (int, float, np.integer, np.floating)):
+            if du is not None and "[" not in header:  # in the row's unit: the chosen system's
+                v = du.show(float(v))
             return _no_negative_zero(fmt.format(v))
         return v
 
     keys = [k for k in columns if any(k in r for r in rows)]
-    return pd.DataFrame({columns[k][0]: [cell(r.get(k), columns[k]) for r in rows] for k in keys})
+    # a table with a Unit column: each row's numbers without a unit of their own in the header
+    # are in that row's unit, shown in the session's unit system (ft, kt, lbf in US customary)
+    unit_key = next((k for k in keys if columns[k][0] == "Unit"), None)
+    units = [
+        formats.unit_shown(r.get(unit_key)) if unit_key and isinstance(r.get(unit_key), str)
+        else None
+        for r in rows
+    ]
+    return pd.DataFrame(
+        {columns[k][0]: [cell(r.get(k), columns[k], du) for r, du in zip(rows, units)] for k in keys}
+    )
 
 
 def _no_negative_zero(text: str) -> str:

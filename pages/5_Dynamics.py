@@ -141,7 +141,7 @@ def thesis_section() -> None:
         st.table(tables.labelled_table(cmp["rows"], {
             "scenario": ("Scenario", None), "metric": ("Metric", None), "unit": ("Unit", None),
             "thesis": ("Thesis", "{:.2f}"), "ours": ("Ours (peak)", "{:.2f}"),
-            "ratio": ("Ours / thesis", "{:.2f}"), "our_rms": ("Ours (RMS)", "{:.2f}"),
+            "ratio": ("Ours / thesis [-]", "{:.2f}"), "our_rms": ("Ours (RMS)", "{:.2f}"),
             "match": ("Within ×1.5", None), "claim_holds": ("Claim holds", None),
             "window": ("Window", None)}), hide_index=True)
         misses = [r for r in cmp["rows"] if not r["match"]]
@@ -210,7 +210,7 @@ def sixdof_section() -> None:
                          format_func=lambda j: f"{out6['frames'][j]:.1f}", key="dyn6_slider")
     st.plotly_chart(six.view3d_figure(out6, k), key="dyn6_3d")
     st.plotly_chart(six.lateral_figure(out6), key="dyn6_lateral")
-    st.subheader(f"Lateral-directional modes at {out6['modes_speed']:g} m/s")
+    st.subheader(formats.text_in_system(f"Lateral-directional modes at {out6['modes_speed']:g} m/s"))
     st.table(tables.labelled_table(out6["modes"], {
         "frequency_Hz": ("Frequency [Hz]", "{:.4f}"), "damping_ratio": ("Damping ratio [-]",
                                                                          "{:.3f}"),

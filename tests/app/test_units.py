@@ -215,3 +215,61 @@ def test_envelope_tab_in_us_units():
     assert fig["layout"]["xaxis"]["title"]["text"].endswith("[kt]")
     site = next(w for w in at.text_input if w.key == "site_c")
     assert site.label.endswith("[kt]") and math.isclose(float(site.value), 6.0 / KT, rel_tol=1e-5)
+
+
+# --- tables of the study pages ------------------------------------------------------------------
+
+
+@pytest.fixture
+def us():
+    formats.use_system("US")
+    yield
+    formats.use_system("SI")
+
+
+def test_a_table_with_a_unit_column_shows_each_row_in_the_chosen_units(us):
+    from app_ui.tables import labelled_table
+
+    rows = [
+        {"signal": "x_C", "unit": "m", "mean": 30.48, "ratio": 2.0, "t": 5.0},
+        {"signal": "theta", "unit": "deg", "mean": 3.0, "ratio": 2.0, "t": 5.0},
+    ]
+    cols = {
+        "signal": ("Signal", None),
+        "unit": ("Unit", None),
+        "mean": ("Mean", "{:.1f}"),
+        "ratio": ("Ours / thesis [-]", "{:.1f}"),
+        "t": ("First at [s]", "{:.1f}"),
+    }
+    df = labelled_table(rows, cols)
+    assert df["Unit"].tolist() == ["ft", "deg"]
+    assert df["Mean"].tolist() == ["100.0", "3.0"]
+    assert df["Ours / thesis [-]"].tolist() == ["2.0", "2.0"]  # its own unit: unchanged
+    assert df["First at [s]"].tolist() == ["5.0", "5.0"]
+
+
+def test_optimise_tables_follow_the_unit_system(us):
+    import pandas as pd
+
+    from app_ui.optimize_tables import styled
+
+    df = pd.DataFrame({"Total mass [kg]": [LB * 100], "Blow-by [m]": [FT * 500], "f [-]": [3.0]})
+    shown = styled(df)
+    assert list(shown.data.columns) == ["Total mass [lb]", "Blow-by [ft]", "f [-]"]
+    html = shown.to_html()
+    assert "100.0" in html and "500.0" in html
+
+
+def test_csv_downloads_keep_si_with_a_unit_row_and_add_the_chosen_units(us):
+    import csv
+    import io
+
+    from app_ui.cache import csv_bytes
+
+    got = list(csv.reader(io.StringIO(csv_bytes([{"blow_by_m": FT * 100, "f": 3.0}]).decode())))
+    assert got[0] == ["blow_by_m", "blow_by_ft", "f"]
+    assert got[1] == ["m", "ft", ""]
+    assert float(got[2][0]) == FT * 100 and float(got[2][1]) == pytest.approx(100.0)
+    formats.use_system("SI")
+    si = list(csv.reader(io.StringIO(csv_bytes([{"blow_by_m": 30.0}]).decode())))
+    assert si == [["blow_by_m"], ["m"], ["30.0"]]
