@@ -577,7 +577,8 @@ def render(inputs_json: str, rep: DesignReport) -> None:
     env = cached_envelope(inputs_json)
     st.plotly_chart(envelope_figure(env), key="envelope_map")
     st.caption(
-        f"{env.points} points for the built {env.volume:.1f} m³ aerostat (tether length "
+        f"{env.points} points for the built {formats.shown(env.volume, 'volume', with_unit=True)}"
+        " aerostat (tether length "
         "= altitude, length limits scaled with it). Colour: the largest normalised "
         "constraint value g (> 0: a limit is broken); hover for the binding constraint "
         "and its margin."

@@ -238,8 +238,10 @@ STUDY_KINDS = {
 
 
 def study_styler(df: pd.DataFrame):
-    """The per-shape optima as a static table (cells wrap), each number at its kind's decimals."""
-    fmt = {c: formats.formatter(k) for c, k in STUDY_KINDS.items() if c in df.columns}
+    """The per-shape optima as a static table (cells wrap), each number at its kind's decimals,
+    in the chosen unit system ("Blow-by [ft]" in US customary)."""
+    df, names = formats.frame_in_system(df)
+    fmt = {names[c]: formats.formatter(k) for c, k in STUDY_KINDS.items() if c in names}
     return df.style.format(fmt, na_rep="–")
 
 

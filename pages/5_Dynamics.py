@@ -270,7 +270,7 @@ if out.get("slack_events"):
         + (" …" if len(ev) > 10 else ""))
 
 if out.get("turbulence"):
-    st.caption(view.turbulence_caption(out["turbulence"]))
+    st.caption(formats.text_in_system(view.turbulence_caption(out["turbulence"])))
 
 sig = out["signals"]
 k = widgets.metric_row(5)  # metrics as wide as their labels: five columns cut them at 1024 px

@@ -10,7 +10,7 @@ import streamlit as st
 
 from aerostat_core.base.validation import short
 from aerostat_core.model.io import rows_to_csv
-from app_ui import show, text
+from app_ui import formats, show, text
 
 st.title("Method")
 st.caption(
@@ -380,8 +380,7 @@ with tab_val:
                     help="The systems the fit did not see.")
         c[3].metric("Median |volume error| [%]", f"{100 * stats['volume_median']:.1f}",
                     help="Where a volume is published. Target: at most 12 %.")
-        st.dataframe(
-            pd.DataFrame([{
+        fielded, names = formats.frame_in_system(pd.DataFrame([{
                 "System": r["system"], "Class": r["class"], "Role": r["role"],
                 "Payload [kg]": r["payload_kg"],
                 "Altitude [m]": r["altitude_m"], "Published length [m]": r["published_length_m"],
@@ -391,15 +390,17 @@ with tab_val:
                 "Predicted volume [m³]": r["predicted_volume_m3"],
                 "Volume error [%]": r["volume_error_pct"],
                 "Sized by": r["sized_by"], "Source": r["source"],
-            } for r in rows]),
+            } for r in rows]))  # in the chosen unit system: "Altitude [ft]" in US
+        st.dataframe(
+            fielded,
             hide_index=True, width="stretch", key="fielded_table",
-            column_config={
+            column_config={names.get(c, c): f for c, f in {
                 "Predicted length [m]": st.column_config.NumberColumn(format="%.2f"),
                 "Error [%]": st.column_config.NumberColumn(format="%+.1f"),
                 "Predicted volume [m³]": st.column_config.NumberColumn(format="%.1f"),
                 "Published volume [m³]": st.column_config.NumberColumn(format="%.1f"),
                 "Volume error [%]": st.column_config.NumberColumn(format="%+.1f"),
-            },
+            }.items()},
         )
 
 with tab_src:
