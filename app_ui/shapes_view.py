@@ -175,7 +175,8 @@ def versus_frame(ours: list[dict], ref: list[dict]) -> pd.DataFrame:
 
 
 def library_frame(rows: list[dict]) -> pd.DataFrame:
-    """The shape library at one volume, display column names with units."""
+    """The shape library at one volume, display column names with units, in the chosen unit
+    system ("Length [ft]" in US customary)."""
     names = {
         "label": "Shape",
         "fineness_ratio": "l/d [-]",
@@ -191,7 +192,7 @@ def library_frame(rows: list[dict]) -> pd.DataFrame:
         "k_rot": "k' [-]",
         "source": "Source",
     }
-    return pd.DataFrame(rows)[list(names)].rename(columns=names)
+    return formats.frame_in_system(pd.DataFrame(rows)[list(names)].rename(columns=names))[0]
 
 
 def static_frame(df: pd.DataFrame, transpose: bool = False) -> pd.DataFrame:

@@ -7,7 +7,7 @@ import streamlit as st
 
 from aerostat_core.optimize import OBJECTIVES
 from app_ui import shapes_view as view
-from app_ui import state, widgets
+from app_ui import formats, state, widgets
 
 st.title("Hull shapes")
 st.caption(
@@ -19,7 +19,7 @@ st.caption(
 
 st.subheader("Shape library", anchor=False)
 st.plotly_chart(view.profiles_figure(), key="shape_profiles")
-st.markdown("**Every shape at 100 m³ and its standard l/d**")
+st.markdown(formats.text_in_system("**Every shape at 100 m³ and its standard l/d**"))
 # one column per shape, one row per property, streamlined and bluff hulls in two static tables,
 # so every cell is in sight at 1024 px
 _lib = view.static_frame(view.library_frame(view.cached_library(100.0)).set_index("Shape"), True)
