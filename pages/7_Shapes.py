@@ -6,8 +6,8 @@ from __future__ import annotations
 import streamlit as st
 
 from aerostat_core.optimize import OBJECTIVES
-from app_ui import shapes_view as view
 from app_ui import formats, state, widgets
+from app_ui import shapes_view as view
 
 st.title("Hull shapes")
 st.caption(
