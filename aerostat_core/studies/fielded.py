@@ -140,6 +140,9 @@ class FieldedSystem:
         (:attr:`class_endurance_days`).
     payload_power : float
         Published payload power [W] drawn through the tether (0: none published).
+    readings : str
+        Where a published figure is ambiguous or two sources disagree: both readings, the one
+        used and why (empty where the figures are unambiguous).
     """
 
     name: str
@@ -153,6 +156,16 @@ class FieldedSystem:
     fit: bool = False
     endurance_days: float | None = None
     payload_power: float = 0.0
+    readings: str = ""
+
+    @property
+    def published_fineness_ratio(self) -> float | None:
+        """The vendor's hull fineness ratio l/d [-] where it publishes both length and diameter
+        (the hull shape is then part of the published requirement, docs/validation.md §7);
+        ``None`` otherwise (the practice fineness ratio is used)."""
+        if self.length and self.diameter:
+            return float(self.length / self.diameter)
+        return None
 
     @property
     def aerostat_class(self) -> str:
@@ -187,32 +200,62 @@ _FT3 = 0.3048**3
 #: (a strategic system, so that each class has one): 4 of 11.
 FIELDED: tuple[FieldedSystem, ...] = (
     FieldedSystem("Raven TIF-1600", 16.0, 610.0, 9.6, 3.3, 1600 * _FT3,
-                  source=TABLE_2_3 + "; volume from the model name (1600 ft3)", fit=True),
+                  source=TABLE_2_3 + "; volume from the model name (1600 ft3)", fit=True,
+                  readings="volume: 45.3 m3 from the model name (USED: the name is the "
+                  "volume for TIF-25K, whose 23.2 x 7.6 m match its 25,000 ft3 to 1 % with "
+                  "the practice hull) or 54.7 m3 from the published 9.6 x 3.3 m with that "
+                  "hull shape; the two disagree by 21 %. Altitude '0-610 m': 610 m taken as "
+                  "the operating altitude at the 16 kg payload (no source says at which "
+                  "altitude the 16 kg is carried)"),
     FieldedSystem("TCOM 12M", 27.0, 300.0, 12.0),
-    FieldedSystem("TCOM 17M", 90.0, 300.0, 17.0),
+    FieldedSystem("TCOM 17M", 90.0, 300.0, 17.0, endurance_days=14.0,
+                  source=TABLE_2_3 + "; endurance: TCOM's 17M, 22M and 38M systems 'can "
+                  "typically remain aloft for two weeks to one month' (Shephard Media, 'DHS "
+                  "assessing TCOM aerostats for border security', 2014), lower end used"),
     FieldedSystem("Sky Crow TA", 9.0, 305.0, 10.3),
     FieldedSystem("Top Vision T.A.S", 4.0, 150.0, 9.1, 2.9, fit=True),
     FieldedSystem("Raven TIF-25K", 227.0, 900.0, 23.2, 7.6, 25000 * _FT3,
                   source=TABLE_2_3 + "; volume from the model name (25,000 ft3)", fit=True),
-    FieldedSystem("TCOM 22M", 190.0, 900.0, 22.0),
+    FieldedSystem("TCOM 22M", 190.0, 900.0, 22.0, endurance_days=14.0,
+                  source=TABLE_2_3 + "; endurance: TCOM's 17M, 22M and 38M systems 'can "
+                  "typically remain aloft for two weeks to one month' (Shephard Media, 'DHS "
+                  "assessing TCOM aerostats for border security', 2014), lower end used",
+                  readings="class: operational by the thesis' criteria (900 m); TCOM calls "
+                  "the 22M 'tactical class' (Shephard 2014). The thesis' class is used"),
     FieldedSystem("TCOM 28M", 570.0, 900.0, 28.0),
-    FieldedSystem("Aeroscraft AEROS 3200", 300.0, 1500.0, 39.0),
+    FieldedSystem("Aeroscraft AEROS 3200", 300.0, 1500.0, 39.0,
+                  readings="no vendor sheet of this system was found (searched: Worldwide "
+                  "Aeros and Aeroscraft pages, the SAVER survey): only Table 2.3's reading "
+                  "(300 kg, 1,500 m, 39 m) is available and is USED. It disagrees with the "
+                  "class, independent of any model: the Lockheed Martin 74K carries 500 kg "
+                  "to the same 1,500 m on a 35 m hull and TCOM 28M 570 kg to 900 m on 28 m; "
+                  "a 39 m hull of the practice shape holds about 3,300 m3. The published "
+                  "300 kg reads as a typical mission payload rather than the capacity, or the "
+                  "39 m as another variant; neither reading could be confirmed"),
     FieldedSystem("Lockheed Martin 74K (PTDS)", 500.0, 1500.0, 35.0, volume=74000 * _FT3,
+                  endurance_days=25.0,
                   source="SpaceNews, 'Lockheed Martin ramps surveillance blimp production' "
                   "(2010): 35 m, about 2,100 m3, 800-1,500 m, power and fibre through the "
                   "tether (not quantified); ClearanceJobs, 'U.S. Army receives last threat "
                   "detection dirigible' (7 Aug 2012): 74,000 ft3, 1,500 m, 500 kg at its "
-                  "heaviest"),
+                  "heaviest; Defense Daily, 'Lockheed Martin continues work on blimp-based "
+                  "surveillance': 'can remain aloft for more than 25 consecutive days'",
+                  readings="payload: 500 kg 'at its heaviest' at 1,500 m (ClearanceJobs 2012, "
+                  "USED: the capacity) or 500-1,000 lb (227-454 kg) 'upward of 5,000 feet' for "
+                  "the unit lent to CBP (Defense Daily, 'DHS likes capabilities of aerostat "
+                  "system'), a carried load, not the capacity"),
     FieldedSystem("TCOM 71M", 1600.0, 4600.0, 71.0, fit=True),
     FieldedSystem("Lockheed Martin 420K (TARS)", 1000.0, 4600.0, None, volume=420000 * _FT3,
                   source="Wikipedia, 'Tethered Aerostat Radar System': 1,000 kg payload, "
                   "15,000 ft (4,600 m), an onboard diesel generator (no power through the "
                   "tether); Lockheed Martin press release, 8 Jun 2004: 420,000 ft3. No length "
                   "published in these sources: volume only"),
-    FieldedSystem("TCOM 74M", 3200.0, 3000.0, 74.0, volume=590000 * _FT3,
+    FieldedSystem("TCOM 74M", 3200.0, 3000.0, 74.0, volume=590000 * _FT3, endurance_days=30.0,
                   source=TABLE_2_3 + "; volume 590,000 ft3 of the TCOM-built JLENS aerostat "
                   "(AIN Online, 12 Nov 2011, 'Aerostats rise through ranks in surveillance "
-                  "service'), INFERRED to be the 74M"),
+                  "service'), INFERRED to be the 74M; endurance: the 74 m JLENS aerostats are "
+                  "'capable of remaining operational for 30 days' (AIAA news, 31 Jul 2013, "
+                  "citing the Washington Business Journal)"),
 )
 
 
@@ -247,13 +290,16 @@ class FieldedRow:
         }
 
 
-def size_fielded(system: FieldedSystem, rules: str = "practice",
-                 mission: bool = True) -> FieldedRow:
-    """Size one fielded system from its payload and altitude (and wind rating if published).
+def fielded_case(system: FieldedSystem, rules: str = "practice", mission: bool = True,
+                 configuration=None):
+    """The (Requirement, Configuration) the harness sizes a fielded system with.
 
-    ``mission=True`` also asks for its class endurance (``class_endurance_days``) and builds a
-    ballonet where the thesis' 500 m rule calls for one (MissionSpec ballonet "auto"), with the
-    practice configuration otherwise unchanged (issue 13 item 9)."""
+    The requirement: its payload and altitude, its published wind rating, endurance and payload
+    power where published (else the class endurance of thesis §2.3 and the strategic class'
+    survival wind, ``mission=True``). The configuration: ``configuration`` (default: the rule
+    set's, with a ballonet where the thesis' 500 m rule calls for one, MissionSpec ballonet
+    "auto", ``mission=True``), with the vendor's published fineness ratio where it publishes
+    length and diameter (:attr:`FieldedSystem.published_fineness_ratio`)."""
     req = Requirement(payload_mass=system.payload_mass, altitude=system.altitude,
                       design_wind=system.design_wind, rules=rules,
                       survival_wind=system.class_survival_wind if mission else None,
@@ -261,9 +307,25 @@ def size_fielded(system: FieldedSystem, rules: str = "practice",
                       power_via="tether" if system.payload_power > 0 else "onboard",
                       endurance_days=system.class_endurance_days if mission else 0.0,
                       top_up_interval_days=0.0)  # the calibration's sizing: class endurance only
-    cfg = None
-    if mission:
-        cfg = replace(rules_configuration(rules), mission=MissionSpec(ballonet="auto"))
+    cfg = configuration
+    if cfg is None:
+        cfg = rules_configuration(rules)
+        if mission:
+            cfg = replace(cfg, mission=MissionSpec(ballonet="auto"))
+    f = system.published_fineness_ratio
+    if f is not None:
+        cfg = replace(cfg, hull=replace(cfg.hull, fineness_ratio=f))
+    return req, cfg
+
+
+def size_fielded(system: FieldedSystem, rules: str = "practice",
+                 mission: bool = True, configuration=None) -> FieldedRow:
+    """Size one fielded system from its published requirement (:func:`fielded_case`).
+
+    ``mission=True`` also asks for its endurance (``class_endurance_days``) and builds a
+    ballonet where the thesis' 500 m rule calls for one (MissionSpec ballonet "auto"), with the
+    practice configuration otherwise unchanged (issue 13 item 9)."""
+    req, cfg = fielded_case(system, rules, mission, configuration)
     d = design(req, cfg)
     s = d.summary()
     rel = lambda p, q: None if q is None else p / q - 1.0  # noqa: E731
@@ -351,16 +413,12 @@ def validate_fielded(systems=FIELDED, rules: str = "practice",
 def fit_rms(per_volume: float, exponent: float, systems=None) -> float:
     """RMS of the log hull-length error of the declared fit set (``systems``: default the
     FIELDED systems marked ``fit``) with the hull-systems law (k, c) = (``per_volume``,
-    ``exponent``): the objective the practice values were chosen by (docs/validation.md §7)."""
+    ``exponent``), each system sized exactly as the harness sizes it (:func:`fielded_case`):
+    the objective the practice values were chosen by (docs/validation.md §7)."""
     systems = [s for s in FIELDED if s.fit] if systems is None else systems
     cfg = replace(practice_configuration(), systems_mass_per_volume=per_volume,
                   systems_mass_exponent=exponent, mission=MissionSpec(ballonet="auto"))
-    e = []
-    for s in systems:
-        req = Requirement(payload_mass=s.payload_mass, altitude=s.altitude,
-                          design_wind=s.design_wind, survival_wind=s.class_survival_wind,
-                          endurance_days=s.class_endurance_days)
-        e.append(np.log(design(req, cfg).summary().length_m / s.length))
+    e = [np.log(size_fielded(s, configuration=cfg).length / s.length) for s in systems]
     return float(np.sqrt(np.mean(np.square(e))))
 
 
