@@ -304,6 +304,7 @@ class FieldedRow:
             "published_volume_m3": s.volume, "predicted_volume_m3": self.volume,
             "volume_error_pct": None if self.volume_error is None else 100 * self.volume_error,
             "feasible": self.feasible, "sized_by": self.binding, "source": s.source,
+            "readings": s.readings,
         }
 
 
