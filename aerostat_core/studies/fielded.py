@@ -398,15 +398,21 @@ class FieldedValidation:
 
     def statistics(self) -> dict:
         """Median and worst |length error| [-] over all, the fit set and the held-out set, and
-        the median |volume error| where published."""
+        the median |volume error| where published (all, fit set, held out)."""
         def stats(rows):
             e = np.abs([r.length_error for r in rows if r.length_error is not None])
             return (float(np.median(e)), float(np.max(e))) if len(e) else (None, None)
+
+        def vstats(rows):
+            e = np.abs([r.volume_error for r in rows if r.volume_error is not None])
+            return float(np.median(e)) if len(e) else None
 
         out = {}
         for k, rows in (("all", self.rows), ("fit", self.fitted()), ("held_out", self.held_out())):
             out[k + "_median"], out[k + "_worst"] = stats(rows)
         out["volume_median"] = self.median_abs_volume_error
+        out["volume_fit_median"] = vstats(self.fitted())
+        out["volume_held_out_median"] = vstats(self.held_out())
         return out
 
     def table(self) -> list[dict]:
