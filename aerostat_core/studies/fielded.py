@@ -241,8 +241,9 @@ FIELDED: tuple[FieldedSystem, ...] = (
                   "the 22M 'tactical class' (Shephard 2014). The thesis' class is used"),
     FieldedSystem("TCOM 28M", 570.0, 900.0, 28.0),
     FieldedSystem("Aeroscraft AEROS 3200", 300.0, 1500.0, 39.0,
-                  readings="no vendor sheet of this system was found (searched: Worldwide "
-                  "Aeros and Aeroscraft pages, the SAVER survey): only Table 2.3's reading "
+                  readings="no vendor sheet of this system was found (searched for: a "
+                  "Worldwide Aeros or Aeroscraft sheet and the SAVER 2013 survey Table 2.3 "
+                  "cites; none with this system's figures): only Table 2.3's reading "
                   "(300 kg, 1,500 m, 39 m) is available and is USED. It disagrees with the "
                   "class, independent of any model: the Lockheed Martin 74K carries 500 kg "
                   "to the same 1,500 m on a 35 m hull and TCOM 28M 570 kg to 900 m on 28 m; "
