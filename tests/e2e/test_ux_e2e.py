@@ -209,6 +209,7 @@ def _switch_units(page: Page) -> None:
     altitude.press("Enter")
     wait_for_rerun(page, timeout=PAGE_TIMEOUT_MS)
     expect(altitude).to_have_value("1000", timeout=PAGE_TIMEOUT_MS)
+    assert _raw_hits(page) == []  # converted numbers are never "nan" or "-0.0" either
     goto_page(page, "Compare")  # the choice holds for the whole app
     page.get_by_test_id("stSidebar").get_by_text("SI", exact=True).click()
     wait_for_rerun(page)
