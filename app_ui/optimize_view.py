@@ -134,11 +134,11 @@ def render_results(job: Mapping[str, Any], baseline_inputs_json: str) -> None:
             icon=":material/cancel:",
         )
     lab, u = OBJECTIVES[req_d["objective"]]
-    st.caption(
+    st.caption(formats.text_in_system(  # the numbers in the chosen unit system
         f"Run: minimise {lab.lower()}, blow-by limit {req.blow_by_limit:g} m at "
         f"{req.design_wind:g} m/s, {req_d['level']} setting, seed {req_d['seed']}; "
         "volume = smallest hull meeting the constraints for each design (nested V*(x))."
-    )
+    ))
     if not results:
         st.info("No solver finished.")
         return
@@ -337,22 +337,24 @@ def resize_caption(res) -> str:
     ok = [r for r in res.rows() if r["feasible"]]
     at = [abs(float(r["blow_by_m"]) - lim) <= 0.01 * lim for r in ok]
     tail = " Red crosses break another constraint (hover for which)."
+    du = formats.display("distance")  # the chosen unit system's (m or ft)
+    lim_t = f"{du.show(lim):g} {du.unit}"
     if not ok:
-        return f"No sweep point meets every requirement (blow-by limit {lim:g} m).{tail}"
-    lo = min(float(r["blow_by_m"]) for r in ok)
-    hi = max(float(r["blow_by_m"]) for r in ok)
+        return f"No sweep point meets every requirement (blow-by limit {lim_t}).{tail}"
+    lo = du.show(min(float(r["blow_by_m"]) for r in ok))
+    hi = du.show(max(float(r["blow_by_m"]) for r in ok))
     if all(at):
         return (
-            f"The blow-by equals the limit, {lim:g} m, at every feasible point: the limit is what "
+            f"The blow-by equals the limit, {lim_t}, at every feasible point: the limit is what "
             f"sets the volume.{tail}"
         )
     if not any(at):
         return (
-            f"The blow-by stays below the limit {lim:g} m at every feasible point ({lo:.0f}-"
-            f"{hi:.0f} m): another requirement sets the volume, not the blow-by limit.{tail}"
+            f"The blow-by stays below the limit {lim_t} at every feasible point ({lo:.0f}-"
+            f"{hi:.0f} {du.unit}): another requirement sets the volume, not the blow-by limit.{tail}"
         )
     return (
-        f"The blow-by reaches the limit {lim:g} m at {sum(at)} of {len(ok)} feasible points (there "
+        f"The blow-by reaches the limit {lim_t} at {sum(at)} of {len(ok)} feasible points (there "
         f"the limit sets the volume); elsewhere another requirement sizes the hull and the "
-        f"blow-by is lower (down to {lo:.0f} m).{tail}"
+        f"blow-by is lower (down to {lo:.0f} {du.unit}).{tail}"
     )
