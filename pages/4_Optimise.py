@@ -46,7 +46,7 @@ with st.form("opt_form"):
         "Objective",
         list(OBJECTIVES),
         key="opt_objective",
-        format_func=lambda k: f"{OBJECTIVES[k][0]} [{view.unit(OBJECTIVES[k][1])}]",
+        format_func=lambda k: formats.text_in_system(f"{OBJECTIVES[k][0]} [{view.unit(OBJECTIVES[k][1])}]"),
         persist_state="session",
     )
     level = c[1].radio(
