@@ -14,8 +14,9 @@ from typing import Any
 
 import numpy as np
 
-from aerostat_core.base.fields import choice, integer, number, validate
+from aerostat_core.base.fields import choice, integer, number
 from aerostat_core.dynamics.options import SolverOptions
+from aerostat_core.dynamics.request import RunRequest
 from aerostat_core.dynamics.results import response_metrics
 from aerostat_core.dynamics.sixdof import Events6, Wind3D, simulate6, system6_from_design
 from aerostat_core.dynamics.turbulence import DRYDEN_W20
@@ -27,9 +28,10 @@ INTENSITIES6 = ("light", "moderate", "severe")
 
 
 @dataclass(frozen=True)
-class Request6:
-    """Settings of one 6-DOF run (every field in the registry; defaults per scenario from
-    :meth:`for_scenario`)."""
+class Request6(RunRequest):
+    """Settings of one 6-DOF run (every field in the registry, validated once when it is built,
+    like the 3-DOF :class:`~aerostat_core.dynamics.request.DynamicsRequest`; defaults per
+    scenario from :meth:`for_scenario`)."""
 
     scenario: str = choice("crosswind-gust", "6-DOF scenario", SCENARIOS6)
     speed: float = number(10.0, "Mean wind at the aerostat", "m/s", 0.5, 40.0)
@@ -48,9 +50,6 @@ class Request6:
     reel_speed: float = number(0.3048, "Winch reel speed", "m/s", 0.01, 5.0,
                                source="thesis §2.2.4 (60 ft/min)")
     reel_duration: float = number(30.0, "Reel duration", "s", 0.0, 3600.0)
-
-    def __post_init__(self) -> None:
-        validate(self)
 
     @classmethod
     def for_scenario(cls, scenario: str, **changes: Any) -> Request6:
@@ -93,13 +92,7 @@ class Request6:
 
     def header(self) -> dict:
         """``key = value`` lines for the CSV header (every setting, with units)."""
-        from aerostat_core.base.fields import specs
-
-        out = {}
-        for name, spec in specs(type(self)).items():
-            unit = f" [{spec.unit}]" if spec.unit else ""
-            out[f"{spec.label}{unit}"] = getattr(self, name)
-        return out
+        return self.labelled()
 
 
 def run6(req: Request6, design=None, progress=None):
