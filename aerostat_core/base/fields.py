@@ -366,7 +366,7 @@ def _check_flag(obj: object, owner: str, name: str, spec: FieldSpec, value: Any)
     # bool or numpy.bool_ only: 1, "yes" or "False" are refused, never read as a truth value
     if type(value) is bool:
         return value
-    if type(value).__name__ == "bool_" and type(value).__module__ == "numpy":
+    if type(value).__module__ == "numpy" and type(value).__name__ in ("bool", "bool_"):
         object.__setattr__(obj, name, bool(value))
         return bool(value)
     reason = "is not yes or no (True or False)"

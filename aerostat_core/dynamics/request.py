@@ -51,7 +51,7 @@ from aerostat_core.base.validation import InputError, range_text, shown_value
 from aerostat_core.dynamics.options import SolverOptions
 from aerostat_core.dynamics.tether import TetherModel
 from aerostat_core.dynamics.turbulence import DRYDEN_W20, DrydenTurbulence
-from aerostat_core.dynamics.wind import GUST_SHAPES, PROFILE_KINDS, Gust, MeanProfile
+from aerostat_core.dynamics.wind import Gust, MeanProfile
 
 SCENARIOS = ("steady", "varying", "gust", "turbulence")
 #: Turbulence intensities: "profile" = W20 from the run's mean profile; "light", "moderate" and
@@ -77,7 +77,7 @@ def error_text(exc: InputError) -> str:
     """
     v = exc.value
     if isinstance(v, (int, float)) and not isinstance(v, bool):
-        shown = f"{v:g}" + (f" {exc.unit}" if exc.unit else "")
+        shown = (str(v) if isinstance(v, int) else f"{v:g}") + (f" {exc.unit}" if exc.unit else "")
     else:
         shown = shown_value(v)
     return f"{exc.label} = {shown} {exc.reason}"

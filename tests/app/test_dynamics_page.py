@@ -170,11 +170,9 @@ def test_a_decimal_comma_is_a_decimal_point_never_ten_times(dyn):
     _set(dyn, "dyn_duration", "2,5e1")
     at = _run(dyn)
     assert not messages(at, "error")
-    assert at.session_state["dyn_request"]
-    import json as _json
-
-    request = _json.loads(at.session_state["dyn_request"])
-    assert (request["speed"], request["duration"]) == (4.5, 25.0)
+    run_key = at.session_state["dyn_request"]
+    assert isinstance(run_key, view.DynamicsKey)  # the typed request, no JSON on the way
+    assert (run_key.request.speed, run_key.request.duration) == (4.5, 25.0)
     _set(at, "dyn_speed", "4.5,0")
     at = _run(at)
     assert any("Mean wind at the aerostat" in m and "ambiguous" in m for m in messages(at, "error"))
@@ -261,21 +259,21 @@ def test_modes_table(dyn):
 
 
 def test_csv_of_the_time_histories():
-    form = dict(
-        source=view.THESIS,
-        scenario="steady",
-        speed=8.0,
-        duration=12.0,
-        exponent=1 / 7,
-        roughness=0.03,
-        body="hull",
-        segments=10,
-        damping=1.0,
-        wall=60.0,
-        unsteady=True,
-        profile="uniform",
-    )
-    out = view.run(view.build_request(form, None, {}))
+    form = {
+        "dyn_source": view.THESIS,
+        "dyn_scenario": "steady",
+        "dyn_speed": "8",
+        "dyn_duration": "12",
+        "dyn_exp": 1 / 7,
+        "dyn_z0": "0,03",
+        "dyn_body": "hull",
+        "dyn_nseg": "10",
+        "dyn_zeta": 1.0,
+        "dyn_wall": "60",
+        "dyn_unsteady": True,
+        "dyn_profile": "uniform",
+    }
+    out = view.run(view.build_run(form, None, {}))
     assert out["csv_name"] == "aerostat_dynamics_steady.csv"
     meta = [ln for ln in out["csv"].splitlines() if ln.startswith("# ")]
     assert "# scenario = steady" in meta and "# speed = 8.0" in meta
