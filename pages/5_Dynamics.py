@@ -128,7 +128,7 @@ def sixdof_section() -> None:
         else:
             values[f["name"]] = col.number_input(f["label"], value=float(f["default"]),
                                                  key=f"dyn6_{sc6}_{f['name']}", help=f["help"])
-    req6, problem = six.build_request6(sc6, values)
+    dyn6, problem = six.build_request6(sc6, values)
     if problem:
         st.error(problem)
         return
@@ -136,7 +136,7 @@ def sixdof_section() -> None:
         bar = st.progress(0.0, text="Simulating…")
         try:
             st.session_state["dyn6_out"] = six.run_request6(
-                req6, view.current_inputs_or_none(st.session_state),
+                dyn6, view.current_inputs_or_none(st.session_state),
                 progress=lambda f: bar.progress(min(f, 1.0), text="Simulating…"))
         except (ValueError, RuntimeError) as exc:
             st.error(f"The 6-DOF run could not start: {exc}")

@@ -172,7 +172,7 @@ def run_6dof(args: argparse.Namespace) -> int:
         if args.duration is not None:
             kw["duration"] = args.duration
         try:
-            req6 = Request6.for_scenario(scenario, **kw)
+            dyn6 = Request6.for_scenario(scenario, **kw)
         except InputError as exc:
             raise option_error(exc) from None
         design = None
@@ -184,18 +184,18 @@ def run_6dof(args: argparse.Namespace) -> int:
                 design = build(*inputs_from_dict(_read_design(args.design)))
             except OSError as exc:
                 raise ValueError(f"--design {args.design}: {exc.strerror}") from None
-        res, d = run6(req6, design)
-        m = metrics6(res, req6, d)
+        res, d = run6(dyn6, design)
+        m = metrics6(res, dyn6, d)
     except (ValueError, RuntimeError) as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2
     m["scenario"] = scenario
     m["dof"] = 6
-    m["settings"] = "; ".join(f"{k} = {v}" for k, v in req6.header().items())
+    m["settings"] = "; ".join(f"{k} = {v}" for k, v in dyn6.header().items())
     m["wall_time_s"] = res.stats["wall_time"]
     if args.csv is not None:
         try:
-            args.csv.write_text(res.to_csv(header=req6.header()))
+            args.csv.write_text(res.to_csv(header=dyn6.header()))
         except OSError as exc:
             print(f"error: --csv {args.csv}: {exc.strerror}", file=sys.stderr)
             return 2
