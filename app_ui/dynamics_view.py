@@ -226,10 +226,7 @@ def build_request(form: Mapping[str, Any]) -> DynamicsRequest:
         elif scenario == "gust":
             kw["gust"] = GustSettings(**_given(form, "gust"))
         elif scenario == "turbulence":
-            given = _given(form, "turbulence")
-            if given.get("intensity", "profile") != "custom":
-                given.pop("w20", None)  # read with a custom intensity only
-            kw["turbulence"] = TurbulenceSettings(**given)
+            kw["turbulence"] = TurbulenceSettings(**_given(form, "turbulence"))
         return DynamicsRequest(scenario=scenario, **kw)
     except InputError as exc:
         raise ValueError(error_text(exc)) from None

@@ -198,6 +198,10 @@ class GustSettings:
                     self.shape, self.convected)
 
 
+#: The W20 a turbulence request holds when its intensity is not "custom" [m/s].
+_W20_DEFAULT = round(DRYDEN_W20["moderate"], 1)
+
+
 @dataclass(frozen=True)
 class TurbulenceSettings:
     """MIL-HDBK-1797 Dryden turbulence of a run (docs/dynamics.md §2.4): the intensity level (or
@@ -208,8 +212,10 @@ class TurbulenceSettings:
                             help="profile: W20 from the run's wind profile (the wind at 20 ft); "
                                  "light, moderate, severe: W20 = 15, 30, 45 kt; custom: the W20 "
                                  "below.", source="MIL-HDBK-1797")
-    w20: float = like(DrydenTurbulence, "w20", round(DRYDEN_W20["moderate"], 1), lo=0.0,
-                      hi=40.0, empty="", help="Used with the custom intensity only. σ_w = 0.1 W20.")
+    w20: float = like(DrydenTurbulence, "w20", _W20_DEFAULT, lo=0.0,
+                      hi=40.0, empty="",
+                      help="Read with the custom intensity only (any other keeps the default). "
+                           "σ_w = 0.1 W20.")
     seed: int = like(DrydenTurbulence, "seed", 1)
     max_frequency: float = like(DrydenTurbulence, "max_frequency", 1.0, lo=0.05, hi=5.0)
     fade_in: float = like(DrydenTurbulence, "fade_in", 20.0, lo=0.0, hi=120.0,
@@ -221,6 +227,8 @@ class TurbulenceSettings:
              "coherence. Off: one record, the same everywhere.")
 
     def __post_init__(self) -> None:
+        if self.intensity != "custom":  # W20 is read with a custom intensity only
+            object.__setattr__(self, "w20", _W20_DEFAULT)
         validate(self)
 
     @property

@@ -47,7 +47,8 @@ def _build(cls, name, value):
     """A request whose field ``name`` of part ``cls`` is ``value``."""
     if cls is DynamicsRequest:
         return DynamicsRequest(scenario="steady", **{name: value})  # no speed rule there
-    part = cls(**{name: value})
+    extra = {"intensity": "custom"} if cls is TurbulenceSettings else {}  # W20 is read then
+    part = cls(**{name: value}, **extra)
     if cls is SpeedChange:
         return DynamicsRequest(scenario="varying", changes=(part,))
     if cls is GustSettings:
@@ -169,6 +170,9 @@ def test_each_scenario_holds_its_own_parts_only_so_equal_runs_compare_equal():
     assert t.w20_used == DRYDEN_W20["light"] and t.turbulence().w20 == DRYDEN_W20["light"]
     assert TurbulenceSettings(intensity="profile").turbulence().w20 is None
     assert TurbulenceSettings(intensity="custom", w20=12.0).turbulence().w20 == 12.0
+    assert TurbulenceSettings(intensity="light", w20=99.0) == TurbulenceSettings(intensity="light")
+    with pytest.raises(InputError, match="w20 = 99 m/s"):
+        TurbulenceSettings(intensity="custom", w20=99.0)
 
 
 def test_the_thesis_requests_are_the_settings_the_untyped_ones_had():
