@@ -32,6 +32,7 @@ so that a fuller structural model (bending, wrinkling) can replace it in one pla
 
 from __future__ import annotations
 
+import copy
 from dataclasses import dataclass, replace
 
 import numpy as np
@@ -176,7 +177,12 @@ def needs_of(req, cfg, af, state) -> Needs:
 
 def _flown(req, cfg, tether: TetherSpec) -> TetherSpec:
     """The tether as flown (conductors bundled in where power goes through it)."""
-    return effective_tether(req, replace(cfg, tether=tether))
+    # ``cfg`` with the catalogue tether, copied without re-validating the whole configuration
+    # (a validated configuration and a validated catalogue entry: ``replace`` would check
+    # every field again for each entry compared)
+    c = copy.copy(cfg)
+    object.__setattr__(c, "tether", tether)
+    return effective_tether(req, c)
 
 
 def choose(req, cfg, needs: Needs) -> tuple[tuple[int, int, int], tuple[Shortfall, ...]]:

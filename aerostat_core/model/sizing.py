@@ -34,6 +34,7 @@ No scipy root-finder is involved, so nothing raises on an infeasible case.
 from __future__ import annotations
 
 import dataclasses
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -256,15 +257,43 @@ def _cubic_guess(grid, gg, d_idx, k, j):
     u = np.arange(4, dtype=float)
     coef = np.linalg.solve(np.vander(u, 4, increasing=True)[None], h[..., None])[..., 0]
     a, b = (j - i0).astype(float), (j - i0 + 1).astype(float)
-    fa = ((coef[:, 3] * a + coef[:, 2]) * a + coef[:, 1]) * a + coef[:, 0]
-    for _ in range(30):
-        m = 0.5 * (a + b)
-        fm = ((coef[:, 3] * m + coef[:, 2]) * m + coef[:, 1]) * m + coef[:, 0]
-        same = np.sign(fm) == np.sign(fa)
-        a, fa = np.where(same, m, a), np.where(same, fm, fa)
-        b = np.where(same, b, m)
+    if a.size <= _FEW:
+        # a few brackets: the same bisection on Python floats (the same IEEE operations, so the
+        # same numbers, without ~300 numpy calls on arrays of a few elements)
+        a, b = _bisect_cubics(coef.tolist(), a.tolist(), b.tolist())
+    else:
+        fa = ((coef[:, 3] * a + coef[:, 2]) * a + coef[:, 1]) * a + coef[:, 0]
+        for _ in range(30):
+            m = 0.5 * (a + b)
+            fm = ((coef[:, 3] * m + coef[:, 2]) * m + coef[:, 1]) * m + coef[:, 0]
+            same = np.sign(fm) == np.sign(fa)
+            a, fa = np.where(same, m, a), np.where(same, fm, fa)
+            b = np.where(same, b, m)
     xg = np.log(grid)
     return xg[i0] + 0.5 * (a + b) * (xg[1] - xg[0])
+
+
+def _sign(x: float) -> float:
+    """np.sign of a float (NaN for NaN, so that it equals no sign)."""
+    return 1.0 if x > 0.0 else -1.0 if x < 0.0 else 0.0 if x == 0.0 else math.nan
+
+
+def _bisect_cubics(coef, a, b):
+    """The 30 bisection steps of :func:`_cubic_guess` on lists of floats (one cubic per
+    bracket): the bracket ends (a, b) as arrays."""
+    out_a, out_b = [], []
+    for (c0, c1, c2, c3), lo, hi in zip(coef, a, b):
+        f_lo = ((c3 * lo + c2) * lo + c1) * lo + c0
+        for _ in range(30):
+            m = 0.5 * (lo + hi)
+            fm = ((c3 * m + c2) * m + c1) * m + c0
+            if _sign(fm) == _sign(f_lo):
+                lo, f_lo = m, fm
+            else:
+                hi = m
+        out_a.append(lo)
+        out_b.append(hi)
+    return np.array(out_a), np.array(out_b)
 
 
 def _prune(open_, x_lo, x_hi, group, up):
