@@ -99,12 +99,18 @@ class Box:
         return DynamicsRequest.spec_at(self.path)
 
     @property
+    def name(self) -> str:
+        """The label without unit ("New wind speed (second change)")."""
+        ordinal = " (second change)" if self.path.startswith("changes.1.") else ""
+        return f"{self.spec.label}{ordinal}"
+
+    @property
     def label(self) -> str:
+        """The label, a number's with its unit in the session's unit system ([kt] in US)."""
         s = self.spec
         if s.kind not in ("number", "integer"):
             return s.label
-        ordinal = " (second change)" if self.path.startswith("changes.1.") else ""
-        return f"{s.label}{ordinal} [{s.shown_unit}]"
+        return formats.box_label(self.name, s)
 
     @property
     def help(self) -> str | None:
@@ -156,9 +162,9 @@ def widget(box: Box, container: Any, scenario: str, *, radio: bool = False) -> A
     horizontal radio for a choice) and return its value (a number box's text)."""
     s = box.spec
     default = box.default(scenario)
-    if s.kind in ("number", "integer"):
-        return entry.number_box(box.label, key=box.key, value=default, container=container,
-                                integer=s.integer, help=box.help)
+    if s.kind in ("number", "integer"):  # in the chosen unit system, read back to SI
+        return entry.field_box(container, s, box.name, default, box.key, help=box.help,
+                               with_range=False)
     if s.kind == "flag":
         return container.checkbox(box.label, value=bool(default), key=box.key, help=box.help,
                                   persist_state="session")
@@ -177,7 +183,7 @@ def _value(box: Box, form: Mapping[str, Any]) -> Any:
     v = form[box.key]
     s = box.spec
     if s.kind in ("number", "integer") and isinstance(v, str):
-        return entry.read(v, box.label, integer=s.integer)
+        return entry.field_read(v, s, box.name, box.key, check_range=False)
     return v
 
 

@@ -14,7 +14,7 @@ from typing import Any
 
 import streamlit as st
 
-from aerostat_core.base.fields import field_spec
+from aerostat_core.base.fields import FieldSpec, field_spec
 
 from . import formats, show
 from .widgets import format_value, parse_number
@@ -88,15 +88,38 @@ _FILLED = "_box_filled_"
 
 
 def spec_box(container: Any, owner: type, name: str, value: float, key: str) -> str:
-    """:func:`number_box` for field ``name`` of input dataclass ``owner``: label, unit, display
-    scale, valid range and help from the field registry (aerostat_core.base.fields), in the
-    session's unit system (:func:`app_ui.show.chosen_system`: 30 kt, 1000 ft); ``value`` in SI
-    units. Read it with :func:`spec_read` (same ``key``): the generic helper of every
-    registry-built box outside the Design form.
+    """:func:`field_box` for field ``name`` of input dataclass ``owner``, labelled with the
+    registry's label; ``value`` in SI units. Read it with :func:`spec_read` (same ``key``)."""
+    s = field_spec(owner, name)
+    return field_box(container, s, s.label, value, key)
+
+
+def spec_read(text: Any, owner: type, name: str, key: str | None = None) -> float:
+    """:func:`field_read` of a :func:`spec_box`, checked against the registry's range."""
+    s = field_spec(owner, name)
+    return field_read(text, s, s.label, key)
+
+
+def field_box(
+    container: Any,
+    spec: FieldSpec,
+    label: str,
+    value: Any,
+    key: str,
+    *,
+    help: str | None = None,  # noqa: A002 - Streamlit's name
+    with_range: bool = True,
+) -> str:
+    """:func:`number_box` for a registry field ``spec`` (the generic helper of every
+    registry-built box outside the Design form: Mission, site wind, Optimise, Dynamics):
+    ``label`` (without unit) gets the field's unit in the session's unit system
+    (:func:`app_ui.show.chosen_system`: 30 kt, 1000 ft), the box shows ``value`` (SI) in that
+    unit, the help adds the valid range in it (``with_range``). Read it with :func:`field_read`
+    (same ``key``).
 
     After a switch of the unit system the box shows its value in the new unit: an untouched box
     its exact SI value, an edited one its typed number converted."""
-    s = field_spec(owner, name)
+    s = spec
     system = show.chosen_system()
     ss = st.session_state
     filled = ss.get(_FILLED + key)
@@ -109,7 +132,7 @@ def spec_box(container: Any, owner: type, name: str, value: float, key: str) -> 
             si = filled[2]
         else:
             try:
-                si = spec_read(text, owner, name, key)
+                si = field_read(text, s, label, key, check_range=False)
             except ValueError:
                 si = None
         if si is not None:
@@ -117,28 +140,35 @@ def spec_box(container: Any, owner: type, name: str, value: float, key: str) -> 
             ss[_FILLED + key] = (system, ss[key], si)
     elif filled is None:
         ss[_FILLED + key] = (system, ss[key], None)
-    rng = s.range_text(system) if s.checked and not s.hi_field else ""
-    help_text = f"{s.help} Valid {rng}.".strip() if rng else s.help
+    help_text = s.help if help is None else help
+    rng = s.range_text(system) if with_range and s.checked and not s.hi_field else ""
+    help_text = f"{help_text} Valid {rng}.".strip() if rng else help_text
     return number_box(
-        formats.box_label(s.label, s, system),
+        formats.box_label(label, s, system),
         key=key,
         value=None,
         container=container,
+        integer=s.integer,
         help=help_text or None,
     )
 
 
-def spec_read(text: Any, owner: type, name: str, key: str | None = None) -> float:
-    """The SI value typed in a :func:`spec_box` (in the unit system it shows: its ``key`` tells;
-    without it, the session's), checked against the registry's range (an open bound is left to
-    the engine's check, which names it); ValueError names the box's label. An untouched box
-    gives back the exact SI value it was filled with."""
-    s = field_spec(owner, name)
+def field_read(
+    text: Any, spec: FieldSpec, label: str, key: str | None = None, *, check_range: bool = True
+) -> Any:
+    """The SI value typed in a :func:`field_box` (in the unit system it shows: its ``key``
+    tells; without it, the session's), an ``int`` for an integer field; ``check_range``: checked
+    against the registry's range (an open bound is left to the engine's check, which names it).
+    ValueError names the box's label. An untouched box gives back the exact SI value it was
+    filled with."""
+    s = spec
     filled = st.session_state.get(_FILLED + key) if key is not None else None
     system = filled[0] if filled else show.chosen_system()
     if filled and filled[2] is not None and str(text) == filled[1]:
-        return float(filled[2])
-    lo, hi, _step = formats.box_bounds(s, system)
-    label = formats.box_label(s.label, s, system)
-    x = read(text, label, lo=lo, hi=hi, unit=formats.box_unit(s, system))
+        return int(filled[2]) if s.integer else float(filled[2])
+    lo, hi, _step = formats.box_bounds(s, system) if check_range else (None, None, None)
+    shown_label = formats.box_label(label, s, system)
+    x = read(text, shown_label, integer=s.integer, lo=lo, hi=hi, unit=formats.box_unit(s, system))
+    if s.integer:
+        return int(x)
     return formats.box_to_si(float(x), s, system)

@@ -273,3 +273,19 @@ def test_csv_downloads_keep_si_with_a_unit_row_and_add_the_chosen_units(us):
     formats.use_system("SI")
     si = list(csv.reader(io.StringIO(csv_bytes([{"blow_by_m": 30.0}]).decode())))
     assert si == [["blow_by_m"], ["m"], ["30.0"]]
+
+
+def test_dynamics_form_takes_knots_and_runs_in_si():
+    """The Dynamics form's registry-built boxes (the generic helper of app_ui.entry) show knots
+    in US units and give the request m/s; an untouched box keeps its exact SI default."""
+    at = _page("pages/5_Dynamics.py")
+    speed = next(w for w in at.text_input if w.key == "dyn_speed")
+    assert speed.label.endswith("[kt]")
+    assert float(speed.value) == pytest.approx(10.0 / KT, rel=1e-5)
+    speed.set_value("20")
+    next(w for w in at.text_input if w.key == "dyn_duration").set_value("5")
+    at.button(key="dyn_run").click().run()
+    assert not at.exception, [e.value for e in at.exception]
+    request = at.session_state["dyn_request"].request
+    assert request.speed == pytest.approx(20 * KT, rel=1e-11)
+    assert request.duration == 5.0
