@@ -16,6 +16,7 @@ from app_ui import (
     form,
     form_model,
     formats,
+    lateral_view,
     mission_view,
     plots,
     preload,
@@ -163,6 +164,8 @@ def _performance_tab(rep: DesignReport) -> None:
         "C_m is the pitching moment about the confluence point over q V^(2/3) l. The trim "
         "is stable where C_m falls as α rises (negative slope at the green point)."
     )
+    with r3[1]:
+        lateral_view.render(rep)  # the lateral derivatives beside the longitudinal C_m
 
 
 def _tether_tab(rep: DesignReport) -> None:
