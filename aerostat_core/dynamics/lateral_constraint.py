@@ -82,6 +82,12 @@ def _compute(d) -> LateralStability:
         C_l_beta=der["C_l_beta_per_rad"], C_n_beta_confluence=der["C_n_beta_confluence_per_rad"])
 
 
+def clear_cache() -> None:
+    """Forget the cached results (a benchmark times the computation itself)."""
+    with _lock:
+        _cache.clear()
+
+
 def assess_lateral(d):
     """Design ``d`` with its ``lateral_stability`` row filled (:meth:`Design.with_lateral` of
     :func:`lateral_stability`); a design already assessed is returned as it is."""
