@@ -141,6 +141,9 @@ CONSTRAINTS: tuple[Constraint, ...] = (
 NAMES: tuple[str, ...] = tuple(c.name for c in CONSTRAINTS)
 #: Constraint by name.
 BY_NAME: dict[str, Constraint] = {c.name: c for c in CONSTRAINTS}
+#: Rows the vectorised table evaluates: all but ``lateral_stability``, which needs the 6-DOF
+#: model per design and is filled after sizing; a Monte Carlo sample says nothing about it.
+VECTORISED_NAMES: tuple[str, ...] = tuple(n for n in NAMES if n != "lateral_stability")
 
 
 @dataclass(frozen=True)
