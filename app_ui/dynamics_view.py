@@ -2,13 +2,14 @@
 
 Physics lives in :mod:`aerostat_core.dynamics` (:mod:`~aerostat_core.dynamics.scenarios` turns a
 request into a run, :mod:`~aerostat_core.dynamics.thesis` holds the thesis comparison); this
-module validates the page's form into a request (plain data, kept as JSON text), runs it through
-:func:`run_cached` and draws the plain result.
+module lists the form's widgets (:data:`LAYOUT`: widget key -> field of the typed
+:class:`~aerostat_core.dynamics.request.DynamicsRequest`, whose registry gives label, unit, help,
+choices and default, as the Design form's), builds the request from their values (validated
+once, by the request), runs it through :func:`run_cached` and draws the plain result.
 
 Caching: results live in the app's one process-wide store (:func:`app_ui.cache.memo`), keyed
-by the request as frozen values (a :class:`DynamicsKey`, read by field name: the design inputs as
-the frozen Requirement and Configuration, the rest as nested tuples: :func:`frozen_request`); the
-session keeps the request's JSON text.
+by a :class:`DynamicsKey` (read by field name: the design inputs as the frozen Requirement and
+Configuration, and the frozen request itself), which the session keeps; no JSON on the way.
 The store is filled by :func:`run_cached`, never inside an ``st.cache_data`` function, so the
 page's progress bar is drawn by the page itself and a replay (a second click, coming back to the
 page, a second session hitting the same case) never re-runs a UI element (no
@@ -21,10 +22,8 @@ hull velocities, pitch and angle of attack, tensions at C and at the winch, wind
 
 from __future__ import annotations
 
-import functools
-import json
-import math
-from collections.abc import Callable, Hashable, Mapping
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass
 from typing import Any, NamedTuple
 
 import numpy as np
@@ -32,19 +31,19 @@ import plotly.graph_objects as go
 import streamlit as st
 
 from aerostat_core import Configuration, Requirement
-from aerostat_core.base.fields import field_spec
+from aerostat_core.base.fields import FieldSpec
+from aerostat_core.base.validation import InputError
 from aerostat_core.dynamics.linearize import linearize
-from aerostat_core.dynamics.options import SolverOptions
-from aerostat_core.dynamics.results import SIGNALS, limit_flags, response_metrics
-from aerostat_core.dynamics.scenarios import (
-    default_request,
-    event_time,
-    limits_of,
-    request_header,
-    run_request,
+from aerostat_core.dynamics.request import (
+    DynamicsRequest,
+    GustSettings,
+    SpeedChange,
+    TurbulenceSettings,
+    error_text,
 )
+from aerostat_core.dynamics.results import SIGNALS, limit_flags, response_metrics
+from aerostat_core.dynamics.scenarios import limits_of, request_header, run_request
 from aerostat_core.dynamics.simulate import kernels_warm, warm_kernels
-from aerostat_core.dynamics.tether import TetherModel
 from aerostat_core.dynamics.thesis import (
     MATCH_FACTOR,
     THESIS_CLAIMS,
@@ -53,8 +52,6 @@ from aerostat_core.dynamics.thesis import (
     run_thesis_case,
     thesis_settings_text,
 )
-from aerostat_core.dynamics.turbulence import DRYDEN_W20
-from aerostat_core.dynamics.wind import DrydenTurbulence, Gust, MeanProfile
 from aerostat_core.model.io import inputs_from_dict, inputs_to_dict
 from aerostat_core.model.presets import thesis_optimized_label
 
@@ -64,6 +61,8 @@ from .theme import LIMIT_COLOUR as LIMIT
 
 CURRENT = "Current design"
 THESIS = thesis_optimized_label()
+#: How each choice of the request reads in the form (the values and the field's label, help and
+#: range are the registry's: :class:`aerostat_core.dynamics.request.DynamicsRequest`).
 SCENARIOS = {
     "steady": "Steady wind",
     "varying": "Varying wind (ramps)",
@@ -75,74 +74,118 @@ INTENSITIES = {"profile": "From the wind profile (W20 = wind at 20 ft)",
                "severe": "Severe (W20 = 45 kt)", "custom": "Custom W20"}
 PROFILES = {"uniform": "Uniform", "power": "Power law", "log": "Log law"}
 BODIES = {"hull": "3-DOF hull (surge, heave, pitch)", "point": "Point aerostat (no pitch)"}
-#: Valid ranges of the form's numbers: key -> (label, lo, hi, unit).
-#: Boxes of the Dynamics form that are run settings, not fields of an input dataclass:
-#: key -> (label, lowest, highest, unit).
-_RUN_BOXES = {
-    "speed": ("Mean wind at the aerostat", 0.0, 30.0, "m/s"),
-    "duration": ("Simulated time", 10.0, 3600.0, "s"),
-    "t_change": ("Change starts at", 0.0, 3600.0, "s"),
-    "u_new": ("New wind speed", 0.0, 30.0, "m/s"),
-    "ramp": ("Ramp time", 0.1, 600.0, "s"),
-    "t_change2": ("Second change starts at", 0.0, 3600.0, "s"),
-    "u_new2": ("Second new wind speed", 0.0, 30.0, "m/s"),
+GUST_SHAPES = {"full": "Full 1 − cos (returns to zero)", "ramp-hold": "Ramp and hold"}
+CHOICE_NAMES = {"scenario": SCENARIOS, "turbulence.intensity": INTENSITIES,
+                "profile": PROFILES, "body": BODIES, "gust.shape": GUST_SHAPES}
+#: Key of the form's "Second change" checkbox (how many ramps: the request has a tuple of them).
+SECOND_CHANGE = "dyn_second"
+#: The form's defaults: the registry's, with a second ramp ready for the checkbox.
+DEFAULTS = {sc: DynamicsRequest.for_scenario(sc) for sc in SCENARIOS}
+DEFAULTS["varying"] = DynamicsRequest.for_scenario(
+    "varying", changes=(SpeedChange(), SpeedChange(start=80.0, speed=7.0)))
+
+
+@dataclass(frozen=True)
+class Box:
+    """One widget of the Dynamics form: its key and the request field it shows (a dotted path of
+    :class:`DynamicsRequest`, "gust.amplitude_u", "changes.1.start"). Label, unit, help, kind
+    and default come from the field registry; nothing about the field is typed here."""
+
+    key: str
+    path: str
+
+    @property
+    def spec(self) -> FieldSpec:
+        return DynamicsRequest.spec_at(self.path)
+
+    @property
+    def label(self) -> str:
+        s = self.spec
+        if s.kind not in ("number", "integer"):
+            return s.label
+        ordinal = " (second change)" if self.path.startswith("changes.1.") else ""
+        return f"{s.label}{ordinal} [{s.shown_unit}]"
+
+    @property
+    def help(self) -> str | None:
+        return self.spec.help or None
+
+    @property
+    def options(self) -> dict[str, str]:
+        """{value: shown name} of a choice."""
+        names = CHOICE_NAMES.get(self.path, {})
+        return {c: names.get(c, c) for c in self.spec.choices}
+
+    def default(self, scenario: str) -> Any:
+        return DEFAULTS[scenario].value_at(self.path)
+
+
+#: The form's widgets by group, in the page's order.
+LAYOUT = {
+    "run": (Box("dyn_speed", "speed"), Box("dyn_duration", "duration")),
+    "varying": (Box("dyn_tc", "changes.0.start"), Box("dyn_unew", "changes.0.speed"),
+                Box("dyn_ramp", "changes.0.ramp")),
+    "varying2": (Box("dyn_tc2", "changes.1.start"), Box("dyn_unew2", "changes.1.speed")),
+    "gust": (Box("dyn_gu", "gust.amplitude_u"), Box("dyn_gw", "gust.amplitude_w"),
+             Box("dyn_gl", "gust.length"), Box("dyn_gs", "gust.start_time"),
+             Box("dyn_gshape", "gust.shape"), Box("dyn_gconv", "gust.convected")),
+    "turbulence": (Box("dyn_int", "turbulence.intensity"), Box("dyn_w20", "turbulence.w20"),
+                   Box("dyn_seed", "turbulence.seed"), Box("dyn_fade", "turbulence.fade_in"),
+                   Box("dyn_fmax", "turbulence.max_frequency"),
+                   Box("dyn_vert", "turbulence.vertical"),
+                   Box("dyn_spatial", "turbulence.spatial")),
+    "profile": (Box("dyn_profile", "profile"), Box("dyn_exp", "exponent"),
+                Box("dyn_z0", "roughness")),
+    "model": (Box("dyn_body", "body"), Box("dyn_nseg", "segments"), Box("dyn_zeta", "damping"),
+              Box("dyn_wall", "wall"), Box("dyn_unsteady", "unsteady"),
+              Box("dyn_modes", "modes")),
 }
-#: Boxes that are fields of a dynamics input dataclass: key -> (dataclass, field, the app's
-#: bounds). Label and unit come from the field registry (aerostat_core.base.fields); the app's bounds
-#: keep a browser request's compute small and lie inside the registry's range.
-_SPEC_BOXES = {
-    "exponent": (MeanProfile, "exponent", 0.0, 0.6),
-    "roughness": (MeanProfile, "roughness_length", 1e-5, 2.0),
-    "gust_u": (Gust, "amplitude_u", -15.0, 15.0),
-    "gust_w": (Gust, "amplitude_w", -10.0, 10.0),
-    "gust_length": (Gust, "length", 5.0, 1000.0),
-    "gust_start": (Gust, "start_time", 0.0, 3600.0),
-    "w20": (DrydenTurbulence, "w20", 0.0, 40.0),
-    "seed": (DrydenTurbulence, "seed", 0, 2**31 - 1),
-    "max_frequency": (DrydenTurbulence, "max_frequency", 0.05, 5.0),
-    "fade_in": (DrydenTurbulence, "fade_in", 0.0, 120.0),
-    "segments": (TetherModel, "segments", 4, 80),
-    "damping": (TetherModel, "damping_ratio", 0.0, 5.0),
-    "wall": (SolverOptions, "wall_time_limit", 5.0, 600.0),
-}
-
-
-def _spec_range(owner: type, name: str, lo: float, hi: float) -> tuple[str, float, float, str]:
-    s = field_spec(owner, name)
-    if (s.lo is not None and lo < s.lo) or (s.hi is not None and hi > s.hi):
-        raise ValueError(f"the app's bounds of {owner.__name__}.{name} leave the registry's range")
-    return s.label, lo, hi, s.unit or "-"
-
-
-#: Every number box of the Dynamics form: key -> (label, lowest, highest, unit).
-RANGES = {**_RUN_BOXES, **{k: _spec_range(*v) for k, v in _SPEC_BOXES.items()}}
+#: The scenario radio (drawn outside the form: it chooses which boxes the form shows).
+SCENARIO_BOX = Box("dyn_scenario", "scenario")
+BOXES = {b.key: b for group in LAYOUT.values() for b in group} | {SCENARIO_BOX.key: SCENARIO_BOX}
 
 
 def box_label(key: str) -> str:
     """The label of a Dynamics form box, with its unit (e.g. "Random seed [-]")."""
-    label, _lo, _hi, unit = RANGES[key]
-    return f"{label} [{unit}]"
+    return BOXES[key].label
+
+
+def widget(box: Box, container: Any, scenario: str, *, radio: bool = False) -> Any:
+    """Draw the widget of ``box`` in ``container`` from the registry (a number box read like
+    the Design form's, a checkbox for a yes/no field, a select box or, with ``radio``, a
+    horizontal radio for a choice) and return its value (a number box's text)."""
+    s = box.spec
+    default = box.default(scenario)
+    if s.kind in ("number", "integer"):
+        return entry.number_box(box.label, key=box.key, value=default, container=container,
+                                integer=s.integer, help=box.help)
+    if s.kind == "flag":
+        return container.checkbox(box.label, value=bool(default), key=box.key, help=box.help,
+                                  persist_state="session")
+    options = box.options
+    pick = container.radio if radio else container.selectbox
+    kw = {"horizontal": True} if radio else {}
+    return pick(box.label, list(options), index=list(options).index(default),
+                format_func=options.get, key=box.key, help=box.help, persist_state="session",
+                **kw)
 
 
 # --- request ------------------------------------------------------------------------------------
-def _num(form: Mapping[str, Any], key: str, integer: bool = False) -> float:
-    label, lo, hi, unit = RANGES[key]
-    v = form.get(key)
-    u = "" if unit == "-" else f" {unit}"
-    if isinstance(v, str):  # a text box: read like the Design form's ("12,5" is 12.5)
-        v = entry.read(v, label)
-    try:
-        x = float(v)
-    except (TypeError, ValueError):
-        raise ValueError(f"{label} = {v!r} is not a number; valid range [{lo:g}, {hi:g}]{u}") \
-            from None
-    if not math.isfinite(x) or x < lo or x > hi:
-        raise ValueError(f"{label} = {x:g}{u} is outside the valid range [{lo:g}, {hi:g}]{u}")
-    if integer:
-        if x != int(x):
-            raise ValueError(f"{label} = {x:g} must be a whole number")
-        return int(x)
-    return x
+def _value(box: Box, form: Mapping[str, Any]) -> Any:
+    """The value of a widget for the request: a number box's text read like the Design form's
+    ("12,5" is 12.5); its range is the request's to check."""
+    v = form[box.key]
+    s = box.spec
+    if s.kind in ("number", "integer") and isinstance(v, str):
+        return entry.read(v, box.label, integer=s.integer)
+    return v
+
+
+def _given(form: Mapping[str, Any], group: str, prefix: str = "") -> dict[str, Any]:
+    """{field: value} of the boxes of ``group`` that the form holds (a missing box keeps the
+    registry's default)."""
+    return {b.path.rsplit(".", 1)[-1]: _value(b, form) for b in LAYOUT[group]
+            if b.key in form and b.path.startswith(prefix)}
 
 
 def design_sources(cases_state: Mapping[str, Any] | None) -> list[str]:
@@ -150,88 +193,56 @@ def design_sources(cases_state: Mapping[str, Any] | None) -> list[str]:
     return [CURRENT, THESIS] + [f"Case: {n}" for n in (cases_state or {})]
 
 
-def build_request(form: Mapping[str, Any], design_inputs: Mapping[str, Any] | None,
-                  cases_state: Mapping[str, Any] | None) -> dict:
-    """Validate the form and return the run request (plain JSON-able data, the store key;
-    the keys of :func:`aerostat_core.dynamics.scenarios.default_request`).
-
-    Raises ``ValueError`` naming the field, the value and its valid range.
-    """
-    source = form.get("source", CURRENT)
+def _inputs_of(source: Any, design_inputs: Mapping[str, Any] | None,
+               cases_state: Mapping[str, Any] | None) -> dict | None:
     if source == THESIS:
-        inputs = None
-    elif source == CURRENT:
-        inputs = dict(design_inputs) if design_inputs else None
-    elif isinstance(source, str) and source.startswith("Case: ") and cases_state and \
+        return None
+    if source == CURRENT:
+        return dict(design_inputs) if design_inputs else None
+    if isinstance(source, str) and source.startswith("Case: ") and cases_state and \
             source[6:] in cases_state:
-        inputs = dict(cases_state[source[6:]])
-    else:
-        raise ValueError(f"Design = {source!r} is not available; choose one of the list")
-    if inputs is not None:
-        inputs_from_dict(inputs)  # validates; raises ValueError naming the field
-    scenario = form.get("scenario", "gust")
-    if scenario not in SCENARIOS:
-        raise ValueError(f"Wind scenario = {scenario!r}; valid options {list(SCENARIOS)}")
-    profile = form.get("profile", "uniform")
-    if profile not in PROFILES:
-        raise ValueError(f"Wind profile = {profile!r}; valid options {list(PROFILES)}")
-    body = form.get("body", "hull")
-    if body not in BODIES:
-        raise ValueError(f"Body model = {body!r}; valid options {list(BODIES)}")
-    req = default_request(
-        scenario, source=source, inputs=inputs, profile=profile, body=body,
-        speed=_num(form, "speed"), duration=_num(form, "duration"),
-        exponent=_num(form, "exponent"), roughness=_num(form, "roughness"),
-        segments=_num(form, "segments", integer=True), damping=_num(form, "damping"),
-        unsteady=bool(form.get("unsteady", True)), wall=_num(form, "wall"),
-        modes=bool(form.get("modes", False)))
-    if scenario == "varying":
-        req["changes"] = [(_num(form, "t_change"), _num(form, "u_new"), _num(form, "ramp"))]
-        if form.get("second_change"):
-            t2 = _num(form, "t_change2")
-            if t2 < req["changes"][0][0] + req["changes"][0][2]:
-                raise ValueError(f"Second change starts at = {t2:g} s: it must start after the "
-                                 f"first ramp ends ({req['changes'][0][0] + req['changes'][0][2]:g}"
-                                 " s)")
-            req["changes"].append((t2, _num(form, "u_new2"), _num(form, "ramp")))
-    elif scenario == "gust":
-        req["gust"] = {"u": _num(form, "gust_u"), "w": _num(form, "gust_w"),
-                       "length": _num(form, "gust_length"), "start": _num(form, "gust_start"),
-                       "shape": "ramp-hold" if form.get("gust_hold") else "full",
-                       "convected": not form.get("gust_uniform", False)}
-        if req["gust"]["u"] == 0 and req["gust"]["w"] == 0:
-            raise ValueError("Gust amplitudes are both 0 m/s: give a horizontal or vertical "
-                             "amplitude in [-15, 15] / [-10, 10] m/s")
-    elif scenario == "turbulence":
-        inten = form.get("intensity", "profile")
-        if inten not in INTENSITIES:
-            raise ValueError(f"Turbulence intensity = {inten!r}; valid options "
-                             f"{list(INTENSITIES)}")
-        w20 = (_num(form, "w20") if inten == "custom" else DRYDEN_W20.get(inten))
-        req["turbulence"] = {"intensity": inten, "w20": w20,
-                             "seed": _num(form, "seed", integer=True),
-                             "max_frequency": _num(form, "max_frequency"),
-                             "fade_in": _num(form, "fade_in"),
-                             "vertical": bool(form.get("vertical", True)),
-                             "spatial": bool(form.get("spatial", True))}
-    if scenario in ("gust", "turbulence") and req["speed"] < 0.5:
-        raise ValueError(f"Mean wind at the aerostat = {req['speed']:g} m/s: a gust or turbulence "
-                         "needs at least 0.5 m/s to be convected; valid range [0.5, 30] m/s")
-    return req
+        return dict(cases_state[source[6:]])
+    raise ValueError(f"Design = {source!r} is not available; choose one of the list")
 
 
-def request_key(req: Mapping[str, Any]) -> str:
-    """Canonical JSON of a request (what the session keeps; :func:`frozen_request` keys the
-    store)."""
-    return json.dumps(req, sort_keys=True, separators=(",", ":"))
+def build_request(form: Mapping[str, Any]) -> DynamicsRequest:
+    """The typed request of the form's values ({widget key: value}; number boxes as text),
+    validated once by :class:`DynamicsRequest`. Raises ``ValueError`` naming the box's label,
+    the value and the valid range."""
+    scenario = form.get(SCENARIO_BOX.key, "gust")
+    try:
+        kw = {**_given(form, "run"), **_given(form, "profile"), **_given(form, "model")}
+        if scenario == "varying":
+            first = SpeedChange(**_given(form, "varying"))
+            changes = [first]
+            if form.get(SECOND_CHANGE):
+                try:
+                    changes.append(SpeedChange(**_given(form, "varying2"), ramp=first.ramp))
+                except InputError as exc:
+                    raise InputError(str(exc), **{**_error_fields(exc),
+                                                  "label": f"{exc.label} (second change)"}) \
+                        from None
+            kw["changes"] = tuple(changes)
+        elif scenario == "gust":
+            kw["gust"] = GustSettings(**_given(form, "gust"))
+        elif scenario == "turbulence":
+            kw["turbulence"] = TurbulenceSettings(**_given(form, "turbulence"))
+        return DynamicsRequest(scenario=scenario, **kw)
+    except InputError as exc:
+        raise ValueError(error_text(exc)) from None
+
+
+def _error_fields(exc: InputError) -> dict[str, Any]:
+    return {k: getattr(exc, k) for k in ("owner", "field", "value", "lo", "hi", "lo_open",
+                                         "hi_open", "unit", "reason", "context")}
 
 
 class DynamicsKey(NamedTuple):
-    """Key of one simulation ("dynamics"): the request as frozen values."""
+    """Key of one simulation ("dynamics"): the design inputs frozen and the typed request."""
 
     requirement: Requirement | None  # resolved (:func:`app_ui.cache.frozen_inputs`); None: thesis
     configuration: Configuration | None  # None for the thesis design
-    request: Hashable  # every other part (scenario, speed, gust, ...; :func:`app_ui.cache.freeze`)
+    request: DynamicsRequest  # the run's settings, frozen and validated
 
 
 class ThesisKey(NamedTuple):
@@ -240,49 +251,47 @@ class ThesisKey(NamedTuple):
     seed: int  # seed of the turbulence scenario
 
 
-@functools.lru_cache(maxsize=64)
-def frozen_request(key: str) -> DynamicsKey:
-    """The store key of a request's JSON text (:func:`request_key`), parsed once per text: the
-    design inputs as the frozen (resolved Requirement, Configuration) of
-    :func:`app_ui.cache.frozen_inputs` (None, None for the thesis design), every other part as
-    hashable nested tuples (:func:`app_ui.cache.freeze`). Raises ``ValueError`` for bad inputs."""
-    req = json.loads(key)
-    inputs = req.get("inputs")
+def build_run(form: Mapping[str, Any], design_inputs: Mapping[str, Any] | None,
+              cases_state: Mapping[str, Any] | None) -> DynamicsKey:
+    """Validate the form (the design chosen in ``form["dyn_source"]`` and the request) and
+    return the run's store key, which the session keeps: the design inputs as the frozen
+    (resolved Requirement, Configuration) of :func:`app_ui.cache.frozen_inputs` (None, None for
+    the thesis design) and the :class:`DynamicsRequest`. No JSON on the way.
+
+    Raises ``ValueError`` naming the field, the value and its valid range.
+    """
+    inputs = _inputs_of(form.get("dyn_source", CURRENT), design_inputs, cases_state)
     frozen = None if inputs is None else cache.frozen_inputs(*inputs_from_dict(inputs))
+    dyn = build_request(form)
     req_k, cfg_k = frozen or (None, None)
-    return DynamicsKey(
-        requirement=req_k,
-        configuration=cfg_k,
-        request=cache.freeze({k: v for k, v in req.items() if k != "inputs"}),
-    )
+    return DynamicsKey(requirement=req_k, configuration=cfg_k, request=dyn)
 
 
-def run(req: Mapping[str, Any], progress: Callable[[float], None] | None = None) -> dict:
-    """Simulate a request and collect plain results (:func:`collect`)."""
-    res, d = run_request(req, progress)
-    return collect(res, req, d)
+def run(key: DynamicsKey, progress: Callable[[float], None] | None = None) -> dict:
+    """Simulate the run of ``key`` and collect plain results (:func:`collect`)."""
+    if key.requirement is None:
+        d, inputs = None, None
+    else:
+        d = cache.design_of(key.requirement, key.configuration)
+        inputs = inputs_to_dict(key.requirement, key.configuration)
+    res, d = run_request(key.request, progress, design=d)
+    return collect(res, key.request, d, inputs)
 
 
 # --- result store (no UI element inside: see the module docstring) -----------------------------
 _STORE_SIZE = 16
 
 
-def stored(key: str) -> dict | None:
-    """The stored result of a request key (JSON from :func:`request_key`), or None (also for
-    a request whose inputs no longer read: :func:`run_cached` then raises the message)."""
-    try:
-        return cache.peek("dynamics", frozen_request(key))
-    except ValueError:
-        return None
+def stored(key: DynamicsKey) -> dict | None:
+    """The stored result of a run's key (:func:`build_run`), or None."""
+    return cache.peek("dynamics", key)
 
 
-def run_cached(key: str, progress: Callable[[float], None] | None = None) -> dict:
-    """The result of the request in ``key`` (JSON from :func:`request_key`): from the store, or
-    run now (``progress`` is called with the fraction done) and stored. The caller draws any
-    progress element; nothing here touches the page."""
-    return cache.memo(
-        "dynamics", frozen_request(key), lambda: run(json.loads(key), progress), _STORE_SIZE
-    )
+def run_cached(key: DynamicsKey, progress: Callable[[float], None] | None = None) -> dict:
+    """The result of the run of ``key`` (:func:`build_run`): from the store, or run now
+    (``progress`` is called with the fraction done) and stored. The caller draws any progress
+    element; nothing here touches the page."""
+    return cache.memo("dynamics", key, lambda: run(key, progress), _STORE_SIZE)
 
 
 def kernels_ready() -> bool:
@@ -296,8 +305,9 @@ def warm() -> float:
     return warm_kernels()
 
 
-def collect(res, req: Mapping[str, Any], d=None) -> dict:
-    """Plain data of a :class:`SimulationResult` for the page (lists, floats, strings)."""
+def collect(res, dyn: DynamicsRequest, d=None, inputs: Mapping[str, Any] | None = None) -> dict:
+    """Plain data of a :class:`SimulationResult` for the page (lists, floats, strings);
+    ``inputs``: the design inputs dict the run used, for the CSV header (None: thesis)."""
     names = res.signal_names()
     sig = {k: res.signal(k).tolist() for k in names}
     t = res.t
@@ -320,8 +330,8 @@ def collect(res, req: Mapping[str, Any], d=None) -> dict:
             s["rig_x"], s["rig_z"] = rx.tolist(), rz.tolist()
         snaps.append(s)
     t_from = 0.0
-    if req.get("scenario") == "turbulence":
-        t_from = min(float(req["turbulence"]["fade_in"]), float(t[-1]) * 0.5)
+    if dyn.scenario == "turbulence":
+        t_from = min(float(dyn.turbulence.fade_in), float(t[-1]) * 0.5)
     stats = res.stats_table(t_from=t_from)
     stat_rows = []
     for k in names:
@@ -331,7 +341,7 @@ def collect(res, req: Mapping[str, Any], d=None) -> dict:
                           "rms_fluctuation": s.std, "peak_excursion": s.peak, "min": s.min,
                           "max": s.max})
     metrics = []
-    te = event_time(req)
+    te = dyn.event_time
     if te is not None and t[-1] > te + 5.0:
         final = None
         for k in ("x_C", "z_C", "theta", "vx", "tension_C"):
@@ -349,8 +359,8 @@ def collect(res, req: Mapping[str, Any], d=None) -> dict:
         "stats_from": t_from, "metrics": metrics, "event_time": te,
         "solver": {k: (float(v) if isinstance(v, float) else v) for k, v in res.stats.items()},
         "is_hull": bool(res.system.is_hull),
-        "csv": res.to_csv(header=request_header(req, res)),
-        "csv_name": f"aerostat_dynamics_{req.get('scenario', 'run')}.csv",
+        "csv": res.to_csv(header=request_header(dyn, res, inputs)),
+        "csv_name": f"aerostat_dynamics_{dyn.scenario}.csv",
         "slack_events": res.slack_events(), "limits": None,
         "equilibrium_shift_mm": (1e3 * res.equilibrium.shift if res.equilibrium else None),
         "tether_segments": res.system.tether.segments, "modes": None, "turbulence": None,
@@ -364,14 +374,14 @@ def collect(res, req: Mapping[str, Any], d=None) -> dict:
                              "clamped": bool(p.clamped), "speed": rec.speed, "seed": rec.seed,
                              "variance_fraction_u": fu, "variance_fraction_w": fw,
                              "model": rec.model, "levels": int(rec.z_levels.size),
-                             "intensity": req["turbulence"].get("intensity")}
+                             "intensity": dyn.turbulence.intensity}
     if d is not None:
         lim = limits_of(d)
         out["limits"] = limit_flags(res, lim)
         out["limit_values"] = {"fin_stall_deg": lim.fin_stall_deg,
                                "safe_working_load": lim.safe_working_load,
                                "min_height": lim.min_height}
-    if req.get("modes") and res.system.is_hull is not None:
+    if dyn.modes and res.system.is_hull is not None:
         try:
             lin = linearize(res.system, wind=res.wind, state=res.y[0])
             out["modes"] = [{k: (float(v) if isinstance(v, float) else v) for k, v in r.items()}
@@ -421,9 +431,9 @@ def thesis_comparison(seed: int = 1) -> dict:
 
 
 def _thesis_comparison(seed: int) -> dict:
-    from aerostat_core.dynamics.scenarios import default_request, design_of
+    from aerostat_core.dynamics.scenarios import design_of
 
-    d = design_of(default_request())
+    d = design_of(None)
     runs, series = {}, {}
     for sc in THESIS_CLAIMS:
         res, m, _req, _ = run_thesis_case(sc, seed=seed, design=d)

@@ -84,27 +84,27 @@ def _design(inputs: Mapping[str, Any] | None):
     return thesis_design() if inputs is None else design(*inputs_from_dict(dict(inputs)))
 
 
-def run_request6(req: Request6, inputs: Mapping[str, Any] | None = None,
+def run_request6(dyn: Request6, inputs: Mapping[str, Any] | None = None,
                  progress: Callable[[float], None] | None = None) -> dict:
     """Run (or fetch from the store) a request on the design of ``inputs`` (None: the thesis
     design); returns plain data (:func:`collect6`)."""
     import json
 
-    key = (req, json.dumps(inputs, sort_keys=True, default=str) if inputs else None)
+    key = (dyn, json.dumps(inputs, sort_keys=True, default=str) if inputs else None)
 
     def go_run():
         d = _design(inputs)
-        res, d = run6(req, d, progress)
+        res, d = run6(dyn, d, progress)
         analyses, above = lateral_sweep(d)
-        return collect6(res, req, d, analyses, above)
+        return collect6(res, dyn, d, analyses, above)
 
     return cache.memo("dynamics6", key, go_run, 8)
 
 
-def collect6(res, req: Request6, design, analyses, above) -> dict:
+def collect6(res, dyn: Request6, design, analyses, above) -> dict:
     """Plain data of a 6-DOF run for the page."""
-    m = metrics6(res, req, design, lateral=False)
-    near = min(analyses, key=lambda a: abs(a.speed - req.speed))
+    m = metrics6(res, dyn, design, lateral=False)
+    near = min(analyses, key=lambda a: abs(a.speed - dyn.speed))
     m["lateral_unstable_above_m_s"] = above
     n_nodes = res.system.tether.segments + 1
     step = max(1, len(res.t) // 200)
@@ -125,7 +125,7 @@ def collect6(res, req: Request6, design, analyses, above) -> dict:
         "metrics": m, "status": res.message, "ok": res.ok,
         "modes": [m_.row() for m_ in near.modes[:8]], "modes_speed": near.speed,
         "sweep": [{"speed_m_s": a.speed, "max_real_1_s": a.max_real} for a in analyses],
-        "csv": res.to_csv(header=req.header()), "json": res.to_json(header=req.header()),
+        "csv": res.to_csv(header=dyn.header()), "json": res.to_json(header=dyn.header()),
         "wall_time": res.stats["wall_time"],
     }
 

@@ -5,8 +5,8 @@ from __future__ import annotations
 import streamlit as st
 
 from app_ui import dynamics_view as view
-from app_ui import entry, tables, widgets
 from app_ui import sixdof_view as six
+from app_ui import tables, widgets
 
 st.title("Dynamics")
 st.caption(
@@ -25,102 +25,49 @@ if not view.kernels_ready():
 
 cases_state = st.session_state.get("cases") or {}
 sources = view.design_sources(cases_state)
-scenario = st.radio("Wind scenario", list(view.SCENARIOS), format_func=view.SCENARIOS.get,
-                    index=2, horizontal=True, key="dyn_scenario", persist_state="session")
+scenario = view.widget(view.SCENARIO_BOX, st, "gust", radio=True)
 
-def num(col, label: str, key: str, value: float, integer: bool = False, help: str | None = None):  # noqa: A002
-    """A number box read like the Design form's ("12,5" is 12.5); the text goes to the request,
-    which reads it and checks its range."""
-    return entry.number_box(label, key=key, value=value, container=col, integer=integer, help=help)
+
+def boxes(group: str, columns: int) -> None:
+    """The widgets of a form group (label, unit, help and default from the registry)."""
+    cols = st.columns(columns)
+    for k, box in enumerate(view.LAYOUT[group]):
+        form[box.key] = view.widget(box, cols[k % columns], scenario)
 
 
 with st.form("dyn_form"):
     c = st.columns(3)
-    source = c[0].selectbox("Design", sources, key="dyn_source", persist_state="session",
-                            help="The current design of the Design page, the thesis' optimised "
-                                 "aerostat, or a saved case.")
-    speed = num(c[1], view.box_label("speed"), "dyn_speed", 10.0,
-                              help="Wind at the confluence point's static height at t = 0.")
-    duration = num(c[2], view.box_label("duration"), "dyn_duration", 150.0)
-    form = {"source": source, "scenario": scenario, "speed": speed, "duration": duration}
+    form = {view.SCENARIO_BOX.key: scenario}
+    form["dyn_source"] = c[0].selectbox(
+        "Design", sources, key="dyn_source", persist_state="session",
+        help="The current design of the Design page, the thesis' optimised aerostat, or a saved "
+             "case.")
+    for k, box in enumerate(view.LAYOUT["run"]):
+        form[box.key] = view.widget(box, c[k + 1], scenario)
     if scenario == "varying":
-        v = st.columns(4)
-        form["t_change"] = num(v[0], view.box_label("t_change"), "dyn_tc", 20.0)
-        form["u_new"] = num(v[1], view.box_label("u_new"), "dyn_unew", 15.0)
-        form["ramp"] = num(v[2], view.box_label("ramp"), "dyn_ramp", 5.0,
-                                         help="With the unsteady-wind inertia on, a short ramp "
-                                              "gives a much harsher transient.")
-        form["second_change"] = v[3].checkbox("Second change", key="dyn_second",
-                                              persist_state="session")
-        v2 = st.columns(4)
-        form["t_change2"] = num(v2[0], view.box_label("t_change2"), "dyn_tc2", 80.0)
-        form["u_new2"] = num(v2[1], view.box_label("u_new2"), "dyn_unew2", 7.0)
+        boxes("varying", 4)
+        form[view.SECOND_CHANGE] = st.checkbox(
+            "Second change (same ramp time)", key=view.SECOND_CHANGE, persist_state="session")
+        boxes("varying2", 4)
     elif scenario == "gust":
-        g = st.columns(5)
-        form["gust_u"] = num(g[0], view.box_label("gust_u"), "dyn_gu", 5.0)
-        form["gust_w"] = num(g[1], view.box_label("gust_w"), "dyn_gw", 0.0)
-        form["gust_length"] = num(g[2], view.box_label("gust_length"), "dyn_gl", 60.0,
-                                                help="Rise time = d_m / mean wind.")
-        form["gust_start"] = num(g[3], view.box_label("gust_start"), "dyn_gs", 20.0)
-        form["gust_hold"] = g[4].checkbox("Ramp and hold", key="dyn_ghold",
-                                          persist_state="session",
-                                          help="Off: the full 1 − cos gust returns to zero.")
-        form["gust_uniform"] = g[4].checkbox(
-            "Uniform in space", key="dyn_guni", persist_state="session",
-            help="Off (default): a frozen gust travelling with the mean wind (it reaches the "
-                 "winch, the tether and the hull in turn; the air carrying it does not "
-                 "accelerate, so no Froude–Krylov force). On: the whole air mass changes at once.")
+        boxes("gust", 3)
     elif scenario == "turbulence":
-        tb = st.columns(5)
-        form["intensity"] = tb[0].selectbox("Intensity", list(view.INTENSITIES), index=0,
-                                            format_func=view.INTENSITIES.get, key="dyn_int",
-                                            persist_state="session")
-        form["w20"] = num(tb[1], view.box_label("w20"), "dyn_w20", 15.4,
-                                         help="Used with 'Custom W20' only. σ_w = 0.1 W20.")
-        form["seed"] = num(tb[2], view.box_label("seed"), "dyn_seed", 1, integer=True)
-        form["fade_in"] = num(tb[3], view.box_label("fade_in"), "dyn_fade", 20.0,
-                                             help="Statistics skip the fade-in.")
-        form["max_frequency"] = num(tb[4], view.box_label("max_frequency"), "dyn_fmax", 1.0)
-        tc = st.columns(2)
-        form["vertical"] = tc[0].checkbox("Vertical turbulence w′", value=True, key="dyn_vert",
-                                          persist_state="session")
-        form["spatial"] = tc[1].checkbox(
-            "Varies along the tether and over the hull", value=True, key="dyn_spatial",
-            persist_state="session",
-            help="A frozen field convected with the mean wind, on height levels with IEC "
-                 "61400-1 coherence. Off: one record, the same everywhere.")
+        boxes("turbulence", 4)
     with st.expander("Wind profile and model options"):
-        p = st.columns(3)
-        form["profile"] = p[0].selectbox("Wind profile", list(view.PROFILES),
-                                         format_func=view.PROFILES.get, key="dyn_profile",
-                                         persist_state="session")
-        form["exponent"] = num(p[1], view.box_label("exponent"), "dyn_exp", 1 / 7)
-        form["roughness"] = num(p[2], view.box_label("roughness"), "dyn_z0", 0.03)
-        m = st.columns(4)
-        form["body"] = m[0].radio("Body model", list(view.BODIES), format_func=view.BODIES.get,
-                                  key="dyn_body", persist_state="session")
-        form["segments"] = num(m[1], view.box_label("segments"), "dyn_nseg", 20, integer=True)
-        form["damping"] = num(m[2], view.box_label("damping"), "dyn_zeta", 1.0)
-        form["wall"] = num(m[3], view.box_label("wall"), "dyn_wall", 60.0)
-        form["unsteady"] = st.checkbox(
-            "Unsteady-wind inertia (added mass × fluid acceleration + Froude–Krylov)", value=True,
-            key="dyn_unsteady", persist_state="session",
-            help="Driven by the acceleration of the air itself (the material derivative): it acts "
-                 "in a uniform speed change and is zero for frozen convected gusts and turbulence.")
-        form["modes"] = st.checkbox("Linearised modes about the initial equilibrium",
-                                    value=False, key="dyn_modes", persist_state="session")
+        boxes("profile", 3)
+        boxes("model", 4)
     submitted = st.form_submit_button("Run simulation", type="primary", key="dyn_run",
                                       icon=":material/play_arrow:")
 
 if submitted:
     try:
-        req = view.build_request(form, view.current_inputs_or_none(st.session_state),
+        run_key = view.build_run(form, view.current_inputs_or_none(st.session_state),
                                  cases_state)
     except ValueError as exc:
         st.error(widgets.plain(f"Cannot run: {exc}"), icon=":material/error:")
         st.session_state.pop("dyn_request", None)
     else:
-        st.session_state["dyn_request"] = view.request_key(req)
+        st.session_state["dyn_request"] = run_key
 
 def thesis_section() -> None:
     """The thesis comparison (its own button; independent of the run above)."""
@@ -181,7 +128,7 @@ def sixdof_section() -> None:
         else:
             values[f["name"]] = col.number_input(f["label"], value=float(f["default"]),
                                                  key=f"dyn6_{sc6}_{f['name']}", help=f["help"])
-    req6, problem = six.build_request6(sc6, values)
+    dyn6, problem = six.build_request6(sc6, values)
     if problem:
         st.error(problem)
         return
@@ -189,7 +136,7 @@ def sixdof_section() -> None:
         bar = st.progress(0.0, text="Simulating…")
         try:
             st.session_state["dyn6_out"] = six.run_request6(
-                req6, view.current_inputs_or_none(st.session_state),
+                dyn6, view.current_inputs_or_none(st.session_state),
                 progress=lambda f: bar.progress(min(f, 1.0), text="Simulating…"))
         except (ValueError, RuntimeError) as exc:
             st.error(f"The 6-DOF run could not start: {exc}")
@@ -232,6 +179,8 @@ with st.expander("Six degrees of freedom: roll and yaw (kiting), crosswind, veer
     sixdof_section()
 
 key = st.session_state.get("dyn_request")
+if not isinstance(key, view.DynamicsKey):  # none yet (or a request kept by an older release)
+    key = None
 if key is None:
     st.info("Choose the design and the wind, then press **Run simulation**.",
             icon=":material/info:")

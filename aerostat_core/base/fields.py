@@ -1,7 +1,8 @@
 """The field registry: every input's label, unit, valid range, display hints and help, once.
 
 Each input dataclass declares its fields with :func:`number`, :func:`integer`, :func:`choice`,
-:func:`text` or :func:`part`, which put a :class:`FieldSpec` in the ``dataclasses.field``
+:func:`flag`, :func:`text` or :func:`part` (or :func:`like`, a field standing for another
+class' field with a narrower range), which put a :class:`FieldSpec` in the ``dataclasses.field``
 metadata. Everything else reads it from there:
 
 * validation: :func:`validate` checks every numeric and choice field of an instance against its
@@ -28,7 +29,13 @@ from dataclasses import dataclass
 from types import ModuleType
 from typing import Any
 
-from aerostat_core.base.validation import check_choice, check_int, check_number
+from aerostat_core.base.validation import (
+    InputError,
+    check_choice,
+    check_int,
+    check_number,
+    shown_value,
+)
 
 #: Key of the spec in ``dataclasses.Field.metadata``.
 SPEC_KEY = "aerostat_spec"
@@ -70,8 +77,9 @@ class FieldSpec:
     ----------
     label : str
         Readable name, without unit ("Payload mass").
-    kind : {"number", "integer", "choice", "text", "part"}
-        ``"part"`` is a nested input dataclass (its fields carry their own specs).
+    kind : {"number", "integer", "choice", "flag", "text", "part"}
+        ``"part"`` is a nested input dataclass (its fields carry their own specs); ``"flag"``
+        a yes/no value (``bool``).
     unit : str
         SI unit of the value and of the range, as in messages ("kg", "m3", "degC"); "" for a
         dimensionless value.
@@ -218,6 +226,44 @@ def text(default: str, label: str, **kw: Any) -> Any:
     return _spec_field(default, FieldSpec(label, "text", checked=False, **kw))
 
 
+def flag(default: bool, label: str, **kw: Any) -> Any:
+    """A yes/no dataclass field (stored as ``bool``; :func:`validate` refuses anything else,
+    numpy booleans are stored back as ``bool``). Use as ``vertical: bool = flag(True,
+    "Vertical turbulence w'")``."""
+    return _spec_field(bool(default), FieldSpec(label, "flag", **kw))
+
+
+def like(owner: type, name: str, default: Any, *, lo: float | None = None,
+         hi: float | None = None, **kw: Any) -> Any:
+    """A field that stands for field ``name`` of input dataclass ``owner`` (its label, unit,
+    display and help), with a narrower range ``lo``/``hi`` where a request accepts less than
+    the model (a run from the app or the command line keeps its compute small). A range that
+    leaves the model's fails at import.
+
+    >>> from aerostat_core.atmosphere.gas import LiftingGas
+    >>> from dataclasses import dataclass
+    >>> @dataclass(frozen=True)
+    ... class Gas:
+    ...     purity: float = like(LiftingGas, "purity", 0.98, lo=0.9)
+    >>> s = field_spec(Gas, "purity")
+    >>> s.label, s.lo, s.hi, s.lo_open
+    ('Gas purity', 0.9, 1, False)
+    """
+    base = field_spec(owner, name)
+    changes: dict[str, Any] = dict(kw)
+    if lo is not None:
+        if base.lo is not None and (lo < base.lo or (lo == base.lo and base.lo_open)):
+            raise ValueError(f"like({owner.__name__}.{name}): lo = {lo:g} leaves the model's "
+                             f"range {base.si_range_text()}")
+        changes.update(lo=lo, lo_open=kw.get("lo_open", False))
+    if hi is not None:
+        if base.hi is not None and (hi > base.hi or (hi == base.hi and base.hi_open)):
+            raise ValueError(f"like({owner.__name__}.{name}): hi = {hi:g} leaves the model's "
+                             f"range {base.si_range_text()}")
+        changes.update(hi=hi, hi_open=kw.get("hi_open", False))
+    return _spec_field(default, dataclasses.replace(base, **changes))
+
+
 def part(factory: type, label: str, *, prefix: bool = False, **kw: Any) -> Any:
     """A nested input dataclass; ``prefix`` puts ``label`` before its fields' labels."""
     spec = FieldSpec(label, "part", checked=False, prefix=prefix, **kw)
@@ -290,6 +336,8 @@ def _check(
     owner = type(obj).__name__
     if spec.kind == "choice":
         return check_choice(owner, name, value, spec.choices, label=spec.label)
+    if spec.kind == "flag":
+        return _check_flag(obj, owner, name, spec, value)
     if spec.allow_inf and isinstance(value, (int, float)) and value == math.inf:
         return value
     lo = spec.lo if lo is None else lo
@@ -314,12 +362,24 @@ def _check(
     return v
 
 
+def _check_flag(obj: object, owner: str, name: str, spec: FieldSpec, value: Any) -> bool:
+    # bool or numpy.bool_ only: 1, "yes" or "False" are refused, never read as a truth value
+    if type(value) is bool:
+        return value
+    if type(value).__module__ == "numpy" and type(value).__name__ in ("bool", "bool_"):
+        object.__setattr__(obj, name, bool(value))
+        return bool(value)
+    reason = "is not yes or no (True or False)"
+    raise InputError(f"{owner}.{name} = {shown_value(value)} {reason}", owner=owner,
+                     field=name, value=value, reason=reason, label=spec.label)
+
+
 def validate(obj: object) -> None:
-    """Check every numeric and choice field of dataclass ``obj`` that has a spec (``None`` is
+    """Check every numeric, choice and flag field of dataclass ``obj`` that has a spec (``None`` is
     accepted where the spec is optional); converted numbers are stored back as ``float``
     (``int`` for integers). Raises :class:`~aerostat_core.base.validation.InputError`."""
     for name, spec in _specs(type(obj)):
-        if not spec.checked or spec.kind not in ("number", "integer", "choice"):
+        if not spec.checked or spec.kind not in ("number", "integer", "choice", "flag"):
             continue
         value = getattr(obj, name)
         if value is None and spec.optional:

@@ -16,8 +16,9 @@ Dryden field with IEC 61400-1 coherence), :mod:`.tether` (lumped-mass line), :mo
 (point aerostat, rigid hull), :mod:`.kernel` (equations of motion), :mod:`.system` (assembly),
 :mod:`.solver` (TR-BDF2, banded Jacobian), :mod:`.simulate` (equilibrium, runs), :mod:`.results`
 (time histories, statistics, events, limits), :mod:`.linearize` (modes), :mod:`.cases`
-(reference cases R1-R4), :mod:`.thesis` (the thesis comparison), :mod:`.scenarios` (runs from
-plain settings: the app and the CLI), :mod:`.moordyn_check` (live MoorDyn cross-check).
+(reference cases R1-R4), :mod:`.thesis` (the thesis comparison), :mod:`.request` (the typed run
+request, ``DynamicsRequest``: docs/dynamics.md §2.5), :mod:`.scenarios` (runs of a request: the
+app and the CLI), :mod:`.moordyn_check` (live MoorDyn cross-check).
 
 ``simulate`` and ``linearize`` are the functions, also once their modules (of the same names) are
 imported: the package keeps the function under the name and the module stays in ``sys.modules``
@@ -42,6 +43,8 @@ _EXPORTS = {
     "SIGNALS": "results", "SimulationResult": "results", "response_metrics": "results",
     "signal_stats": "results", "Limits": "results", "limit_flags": "results",
     "SolverOptions": "options",
+    "DynamicsRequest": "request", "GustSettings": "request", "SpeedChange": "request",
+    "TurbulenceSettings": "request", "run_request": "scenarios",
     "engine_guess": "simulate", "equilibrium": "simulate", "simulate": "simulate",
     "straight_guess": "simulate", "straight_state": "simulate", "warm_kernels": "simulate",
     "Atmosphere": "system", "DynamicSystem": "system", "system_from_design": "system",

@@ -27,10 +27,40 @@ import sys
 from pathlib import Path
 
 from aerostat_core.base.cli_input import OptionError, decimal, whole
-from aerostat_core.dynamics.scenarios6 import SCENARIOS6
+from aerostat_core.base.fields import FieldSpec
+from aerostat_core.base.validation import InputError, range_text
+from aerostat_core.dynamics.request import DynamicsRequest, TurbulenceSettings, error_text
+from aerostat_core.dynamics.scenarios6 import SCENARIOS6, Request6
 
 #: Largest design file read [bytes].
 MAX_DESIGN_BYTES = 1_000_000
+#: Options of the run settings: option -> the field of the 3-DOF request (dotted path) and of
+#: the 6-DOF one. Their label, unit and range in --help come from the field registry.
+RUN_OPTIONS = {"--duration": ("duration", "duration"), "--seed": ("turbulence.seed", "seed")}
+
+
+def _valid(s: FieldSpec) -> str:
+    if s.kind == "integer":
+        return f"[{int(s.lo)}, {int(s.hi)}]"
+    return range_text(s.lo, s.hi, "", s.lo_open, s.hi_open)
+
+
+def spec_help(option: str, default: str) -> str:
+    """``--help`` of a run option: the registry's label, SI unit and valid range (the 6-DOF
+    range too when it differs) and the default."""
+    path3, name6 = RUN_OPTIONS[option]
+    s3, s6 = DynamicsRequest.spec_at(path3), Request6.spec_at(name6)
+    text = f"{s3.label} [{s3.unit or '-'}], valid {_valid(s3)}"
+    if _valid(s6) != _valid(s3):
+        text += f" ({_valid(s6)} with --dof 6)"
+    return f"{text} (default {default})".replace("%", "%%")
+
+
+def option_error(exc: InputError) -> OptionError:
+    """The one-line error of a run setting out of its range, naming the option."""
+    option = next((o for o, paths in RUN_OPTIONS.items()
+                   if exc.field in (paths[0].rsplit(".", 1)[-1], paths[1])), "input")
+    return OptionError(option, error_text(exc))
 
 
 def add_parser(subparsers) -> argparse.ArgumentParser:
@@ -54,10 +84,9 @@ def add_parser(subparsers) -> argparse.ArgumentParser:
         "crosswind-gust)",
     )
     p.add_argument("--design", type=Path, help="JSON design file (default: thesis optimised)")
-    p.add_argument("--duration", type=decimal,
-                   help="simulated time [s], valid (0, 3600] (default per scenario)")
-    p.add_argument("--seed", type=whole, default=1,
-                   help="turbulence seed [-], valid [0, 4294967295] (default 1)")
+    p.add_argument("--duration", type=decimal, metavar="VALUE",
+                   help=spec_help("--duration", "per scenario"))
+    p.add_argument("--seed", type=whole, default=1, metavar="N", help=spec_help("--seed", "1"))
     p.add_argument("--csv", type=Path, help="write the time histories here")
     p.add_argument("--json", action="store_true", help="print the metrics as JSON")
     p.set_defaults(handler=run)
@@ -90,31 +119,36 @@ def run(args: argparse.Namespace) -> int:
     if args.scenario in SCENARIOS6:
         print(f"error: --scenario {args.scenario} needs --dof 6", file=sys.stderr)
         return 2
+    design = None
     try:
-        if args.duration is not None and not 0 < args.duration <= 3600:
-            raise OptionError(
-                "--duration", f"{args.duration:g} s is outside the valid range (0, 3600] s"
-            )
-        if not 0 <= args.seed <= 2**32 - 1:
-            raise OptionError("--seed", f"{args.seed} is outside the valid range [0, 4294967295]")
-        req = thesis_request(args.scenario, args.seed, args.duration)
+        try:
+            TurbulenceSettings(seed=args.seed)  # checked in every scenario, used in turbulence
+            dyn = thesis_request(args.scenario, args.seed, args.duration)
+        except InputError as exc:
+            raise option_error(exc) from None
         if args.design is not None:
-            req["inputs"] = _read_design(args.design)
-        res, d = run_request(req)
+            from aerostat_core.model.design import design as build
+            from aerostat_core.model.io import inputs_from_dict
+
+            inputs = _read_design(args.design)
+            design = build(*inputs_from_dict(inputs))
+        else:
+            inputs = None
+        res, d = run_request(dyn, design=design)
     except (ValueError, RuntimeError) as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2
-    m = metrics(res, req)
+    m = metrics(res, dyn)
     m["scenario"] = args.scenario
     # the settings actually used: the seed and duration given, not the thesis defaults
     m["settings"] = thesis_settings_text(args.seed, args.duration).get(
-        args.scenario, f"steady wind, 10 m/s, {req['duration']:g} s"
+        args.scenario, f"steady wind, {dyn.speed:g} m/s, {dyn.duration:g} s"
     )
     m["limits"] = limit_flags(res, limits_of(d))
     m["wall_time_s"] = res.stats["wall_time"]
     if args.csv is not None:
         try:
-            write_output("--csv", args.csv, res.to_csv(header=request_header(req, res)))
+            write_output("--csv", args.csv, res.to_csv(header=request_header(dyn, res, inputs)))
         except OptionError as exc:
             print(f"error: {exc}", file=sys.stderr)
             return 2
@@ -127,8 +161,7 @@ def run(args: argparse.Namespace) -> int:
 
 def run_6dof(args: argparse.Namespace) -> int:
     """``simulate --dof 6``: a 6-DOF scenario (:mod:`.scenarios6`); same exit codes."""
-    from aerostat_core.base.validation import InputError
-    from aerostat_core.dynamics.scenarios6 import Request6, metrics6, run6
+    from aerostat_core.dynamics.scenarios6 import metrics6, run6
 
     scenario = args.scenario or "crosswind-gust"
     try:
@@ -139,11 +172,9 @@ def run_6dof(args: argparse.Namespace) -> int:
         if args.duration is not None:
             kw["duration"] = args.duration
         try:
-            req = Request6.for_scenario(scenario, **kw)
+            dyn6 = Request6.for_scenario(scenario, **kw)
         except InputError as exc:
-            opt = {"duration": "--duration", "seed": "--seed"}.get(exc.field, exc.field)
-            raise ValueError(f"{opt} = {exc.value} is outside the valid range "
-                             f"[{exc.lo:g}, {exc.hi:g}] {exc.unit}".rstrip()) from None
+            raise option_error(exc) from None
         design = None
         if args.design is not None:
             from aerostat_core.model.design import design as build
@@ -153,18 +184,18 @@ def run_6dof(args: argparse.Namespace) -> int:
                 design = build(*inputs_from_dict(_read_design(args.design)))
             except OSError as exc:
                 raise ValueError(f"--design {args.design}: {exc.strerror}") from None
-        res, d = run6(req, design)
-        m = metrics6(res, req, d)
+        res, d = run6(dyn6, design)
+        m = metrics6(res, dyn6, d)
     except (ValueError, RuntimeError) as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2
     m["scenario"] = scenario
     m["dof"] = 6
-    m["settings"] = "; ".join(f"{k} = {v}" for k, v in req.header().items())
+    m["settings"] = "; ".join(f"{k} = {v}" for k, v in dyn6.header().items())
     m["wall_time_s"] = res.stats["wall_time"]
     if args.csv is not None:
         try:
-            args.csv.write_text(res.to_csv(header=req.header()))
+            args.csv.write_text(res.to_csv(header=dyn6.header()))
         except OSError as exc:
             print(f"error: --csv {args.csv}: {exc.strerror}", file=sys.stderr)
             return 2

@@ -1,18 +1,18 @@
-"""Runs from plain settings: the one place where the app's Dynamics page and the ``simulate`` CLI
-turn a request (a JSON-able dict) into a system, a wind and a simulation.
+"""Runs from a typed request: the one place where the app's Dynamics page, the ``simulate`` CLI
+and the thesis comparison turn a :class:`~aerostat_core.dynamics.request.DynamicsRequest` and a
+design into a system, a wind and a simulation.
 
-A request holds: ``inputs`` (design inputs dict, or None for the thesis optimised design),
-``scenario`` ({"steady", "varying", "gust", "turbulence"}), ``profile``, ``exponent``,
-``roughness``, ``body`` ({"hull", "point"}), ``speed`` (mean wind at the aerostat [m/s]),
-``duration`` [s], ``segments``, ``damping``, ``unsteady`` (unsteady-wind inertia), ``wall`` [s],
-and per scenario ``changes`` [(t [s], speed [m/s], ramp [s])], ``gust`` {u, w, length, start,
-shape, convected} or ``turbulence`` {intensity, w20, seed, max_frequency, fade_in, vertical,
-spatial}. :func:`default_request` fills every key.
+The request holds the run's settings (every field in the field registry, validated once when it
+is built: :mod:`.request`); the design is given beside it (None: the thesis optimised design).
+The functions here once took the untyped request dict; they still accept one for a release,
+with a ``DeprecationWarning`` (docs/architecture.md §7), and :func:`default_request` still
+returns one.
 """
 
 from __future__ import annotations
 
 import json
+import warnings
 from collections.abc import Callable, Mapping
 from typing import Any
 
@@ -20,136 +20,91 @@ import numpy as np
 
 from .bodies import point_from_design
 from .options import SolverOptions
+from .request import INTENSITIES, SCENARIOS, DynamicsRequest
 from .results import Limits, SimulationResult
 from .simulate import engine_guess, simulate
 from .system import Atmosphere, DynamicSystem, system_from_design
 from .tether import TetherModel
-from .turbulence import DRYDEN_W20
-from .wind import DrydenTurbulence, Gust, MeanProfile, SpeedSchedule, WindScenario
+from .wind import MeanProfile, SpeedSchedule, WindScenario
 
-SCENARIOS = ("steady", "varying", "gust", "turbulence")
-#: Turbulence intensities: "profile" = W20 from the run's mean profile; the others MIL-HDBK-1797.
-INTENSITIES = ("profile", "light", "moderate", "severe", "custom")
+__all__ = ["INTENSITIES", "SCENARIOS", "DynamicsRequest", "default_request", "design_of",
+           "event_time", "limits_of", "request_header", "run_request", "system_of", "wind_of"]
+
+
+def _typed(dyn: DynamicsRequest | Mapping[str, Any], caller: str) -> DynamicsRequest:
+    """``dyn`` itself, or the typed request of an untyped dict (deprecated: one release)."""
+    if isinstance(dyn, DynamicsRequest):
+        return dyn
+    if isinstance(dyn, Mapping):
+        warnings.warn(f"{caller}() of a request dict is deprecated; pass a DynamicsRequest "
+                      "(DynamicsRequest.from_dict converts one)", DeprecationWarning,
+                      stacklevel=3)
+        return DynamicsRequest.from_dict(dyn)
+    raise TypeError(f"{caller}() takes a DynamicsRequest, not {type(dyn).__name__}")
 
 
 def default_request(scenario: str = "gust", **changes: Any) -> dict:
-    """A complete request with the page's defaults for ``scenario`` (``changes`` override keys)."""
-    if scenario not in SCENARIOS:
-        raise ValueError(f"scenario = {scenario!r}; valid options {SCENARIOS}")
-    req = {
-        "source": "thesis",
-        "inputs": None,
-        "scenario": scenario,
-        "profile": "uniform",
-        "exponent": 1.0 / 7.0,
-        "roughness": 0.03,
-        "body": "hull",
-        "speed": 10.0,
-        "duration": 150.0,
-        "segments": 20,
-        "damping": 1.0,
-        "unsteady": True,
-        "wall": 60.0,
-        "modes": False,
-    }
-    if scenario == "varying":
-        req["changes"] = [(20.0, 15.0, 5.0)]
-    elif scenario == "gust":
-        req["gust"] = {
-            "u": 5.0,
-            "w": 0.0,
-            "length": 60.0,
-            "start": 20.0,
-            "shape": "full",
-            "convected": True,
-        }
-    elif scenario == "turbulence":
-        req["turbulence"] = {
-            "intensity": "profile",
-            "w20": None,
-            "seed": 1,
-            "max_frequency": 1.0,
-            "fade_in": 20.0,
-            "vertical": True,
-            "spatial": True,
-        }
-    req.update(changes)
-    return req
+    """Deprecated: the untyped request dict of ``scenario`` with ``changes``; build
+    ``DynamicsRequest.for_scenario(scenario, ...)`` instead (kept one release)."""
+    warnings.warn("default_request() is deprecated; use DynamicsRequest.for_scenario()",
+                  DeprecationWarning, stacklevel=2)
+    data = {"source": "thesis", "inputs": None, **DynamicsRequest.for_scenario(scenario).to_dict()}
+    data.update(changes)
+    return data
 
 
-def design_of(req: Mapping[str, Any]):
-    """The static-engine design of a request (the thesis optimised design when no inputs)."""
+def design_of(inputs: Mapping[str, Any] | None = None):
+    """The static-engine design of design ``inputs`` (a design file's dict; None: the thesis
+    optimised design). An untyped request dict (deprecated) gives the design of its
+    ``inputs``."""
     from aerostat_core.model.design import design
     from aerostat_core.model.io import inputs_from_dict
     from aerostat_core.model.presets import thesis_optimized
 
-    if req.get("inputs") is None:
+    if inputs is not None and "scenario" in inputs:  # an untyped request (deprecated)
+        warnings.warn("design_of() of a request dict is deprecated; pass the design inputs",
+                      DeprecationWarning, stacklevel=2)
+        inputs = inputs.get("inputs")
+    if inputs is None:
         return design(*thesis_optimized())
-    return design(*inputs_from_dict(req["inputs"]))
+    return design(*inputs_from_dict(inputs))
 
 
-def wind_of(req: Mapping[str, Any], top_height: float) -> WindScenario:
+def wind_of(dyn: DynamicsRequest, top_height: float) -> WindScenario:
     """The wind scenario of a request; ``top_height`` [m] is the profile's reference height (the
     static height of the confluence point, so ``speed`` is the wind at the aerostat)."""
-    profile = MeanProfile(req["profile"], max(top_height, 1.0), req["exponent"], req["roughness"])
-    u0 = req["speed"]
-    gust = turb = None
+    dyn = _typed(dyn, "wind_of")
+    profile = MeanProfile(dyn.profile, max(top_height, 1.0), dyn.exponent, dyn.roughness)
     sched = (
-        SpeedSchedule.ramps(u0, req["changes"])
-        if req["scenario"] == "varying"
-        else SpeedSchedule.constant(u0)
+        SpeedSchedule.ramps(dyn.speed, [c.as_tuple() for c in dyn.changes])
+        if dyn.scenario == "varying"
+        else SpeedSchedule.constant(dyn.speed)
     )
-    if req["scenario"] == "gust":
-        g = req["gust"]
-        gust = Gust(
-            g["u"],
-            g["w"],
-            g["length"],
-            g["start"],
-            g.get("shape", "full"),
-            g.get("convected", True),
-        )
-    if req["scenario"] == "turbulence":
-        t = req["turbulence"]
-        inten = t.get("intensity", "custom")
-        w20 = (
-            None if inten == "profile" else (DRYDEN_W20[inten] if inten in DRYDEN_W20 else t["w20"])
-        )
-        turb = DrydenTurbulence(
-            w20=w20,
-            seed=t["seed"],
-            max_frequency=t["max_frequency"],
-            fade_in=t["fade_in"],
-            vertical=t["vertical"],
-            spatial=t.get("spatial", True),
-        )
+    gust = dyn.gust.gust() if dyn.scenario == "gust" else None
+    turb = dyn.turbulence.turbulence() if dyn.scenario == "turbulence" else None
     return WindScenario(sched, profile, gust, turb)
 
 
-def event_time(req: Mapping[str, Any]) -> float | None:
+def event_time(dyn: DynamicsRequest) -> float | None:
     """Time of the scenario's event [s] (first ramp start or gust start), None otherwise."""
-    if req["scenario"] == "varying":
-        return float(req["changes"][0][0])
-    if req["scenario"] == "gust":
-        return float(req["gust"]["start"])
-    return None
+    return _typed(dyn, "event_time").event_time
 
 
-def system_of(req: Mapping[str, Any], d) -> DynamicSystem:
+def system_of(dyn: DynamicsRequest, d) -> DynamicSystem:
     """The dynamic system of a request: the design's hull (3 DOF) or a point aerostat with the
     design's mass, volume and drag area (:func:`.bodies.point_from_design`)."""
-    if req["body"] == "hull":
+    dyn = _typed(dyn, "system_of")
+    if dyn.body == "hull":
         return system_from_design(
             d,
-            segments=req["segments"],
-            damping_ratio=req["damping"],
-            unsteady_wind_inertia=req["unsteady"],
+            segments=dyn.segments,
+            damping_ratio=dyn.damping,
+            unsteady_wind_inertia=dyn.unsteady,
         )
     af = d.airframe
-    teth = TetherModel.from_spec(
-        d.configuration.tether, af.tether_length, req["segments"], req["damping"]
-    )
-    point = point_from_design(d, req["speed"], unsteady_wind_inertia=req["unsteady"])
+    teth = TetherModel.from_spec(d.configuration.tether, af.tether_length, dyn.segments,
+                                 dyn.damping)
+    point = point_from_design(d, dyn.speed, unsteady_wind_inertia=dyn.unsteady)
     return DynamicSystem(
         point,
         teth,
@@ -159,26 +114,36 @@ def system_of(req: Mapping[str, Any], d) -> DynamicSystem:
 
 
 def run_request(
-    req: Mapping[str, Any], progress: Callable[[float], None] | None = None, design=None
+    dyn: DynamicsRequest, progress: Callable[[float], None] | None = None, design=None
 ) -> tuple[SimulationResult, Any]:
-    """Build and simulate a request; returns (result, design)."""
-    d = design if design is not None else design_of(req)
-    system = system_of(req, d)
-    guess = engine_guess(system, d, req["speed"])
+    """Build and simulate a request on ``design`` (None: the thesis optimised design); returns
+    (result, design). An untyped request dict (deprecated) runs on the design of its
+    ``inputs``."""
+    if isinstance(dyn, Mapping) and design is None:
+        design = design_of(dyn.get("inputs"))
+    dyn = _typed(dyn, "run_request")
+    d = design if design is not None else design_of(None)
+    system = system_of(dyn, d)
+    guess = engine_guess(system, d, dyn.speed)
     top_height = float(system.nodes(guess)[0][-1, 1])
-    wind = wind_of(req, top_height)
+    wind = wind_of(dyn, top_height)
     opt = SolverOptions(
-        wall_time_limit=req["wall"], output_interval=0.1 if req["duration"] <= 900 else 0.5
+        wall_time_limit=dyn.wall, output_interval=0.1 if dyn.duration <= 900 else 0.5
     )
-    return simulate(system, wind, req["duration"], opt, guess=guess, progress=progress), d
+    return simulate(system, wind, dyn.duration, opt, guess=guess, progress=progress), d
 
 
-def request_header(req: Mapping[str, Any], res: SimulationResult) -> dict:
-    """Scenario and every parameter of a run, as plain text (the CSV header)."""
+def request_header(dyn: DynamicsRequest, res: SimulationResult,
+                   inputs: Mapping[str, Any] | None = None) -> dict:
+    """Scenario and every parameter of a run, as plain text (the CSV header); ``inputs``: the
+    design inputs dict the run used (None: the thesis optimised design)."""
+    if isinstance(dyn, Mapping) and inputs is None:
+        inputs = dyn.get("inputs")
+    plain = _typed(dyn, "request_header").to_dict()
     h = {
-        "scenario": req["scenario"],
+        "scenario": plain["scenario"],
         "design": "thesis optimised (presets.thesis_optimized)"
-        if req.get("inputs") is None
+        if inputs is None
         else "given inputs",
     }
     for k in (
@@ -192,10 +157,10 @@ def request_header(req: Mapping[str, Any], res: SimulationResult) -> dict:
         "damping",
         "unsteady",
     ):
-        h[k] = req[k]
+        h[k] = plain[k]
     for k in ("changes", "gust", "turbulence"):
-        if k in req:
-            h[k] = req[k]
+        if k in plain:
+            h[k] = plain[k]
     rec = res.wind.turbulence
     if rec is not None:
         p = rec.params
@@ -211,8 +176,8 @@ def request_header(req: Mapping[str, Any], res: SimulationResult) -> dict:
         f"{o.method}, rtol {o.rtol:g}, output_interval {o.output_interval:g} s, "
         f"wall_time_limit {o.wall_time_limit:g} s"
     )
-    if req.get("inputs") is not None:
-        h["design_inputs"] = json.dumps(req["inputs"], sort_keys=True, separators=(",", ":"))
+    if inputs is not None:
+        h["design_inputs"] = json.dumps(inputs, sort_keys=True, separators=(",", ":"))
     return h
 
 

@@ -14,8 +14,9 @@ from typing import Any
 
 import numpy as np
 
-from aerostat_core.base.fields import choice, integer, number, validate
+from aerostat_core.base.fields import choice, integer, number
 from aerostat_core.dynamics.options import SolverOptions
+from aerostat_core.dynamics.request import RunRequest
 from aerostat_core.dynamics.results import motion_figures, response_metrics
 from aerostat_core.dynamics.sixdof import Events6, Wind3D, simulate6, system6_from_design
 from aerostat_core.dynamics.turbulence import DRYDEN_W20
@@ -27,9 +28,10 @@ INTENSITIES6 = ("light", "moderate", "severe")
 
 
 @dataclass(frozen=True)
-class Request6:
-    """Settings of one 6-DOF run (every field in the registry; defaults per scenario from
-    :meth:`for_scenario`)."""
+class Request6(RunRequest):
+    """Settings of one 6-DOF run (every field in the registry, validated once when it is built,
+    like the 3-DOF :class:`~aerostat_core.dynamics.request.DynamicsRequest`; defaults per
+    scenario from :meth:`for_scenario`)."""
 
     scenario: str = choice("crosswind-gust", "6-DOF scenario", SCENARIOS6)
     speed: float = number(10.0, "Mean wind at the aerostat", "m/s", 0.5, 40.0)
@@ -48,9 +50,6 @@ class Request6:
     reel_speed: float = number(0.3048, "Winch reel speed", "m/s", 0.01, 5.0,
                                source="thesis §2.2.4 (60 ft/min)")
     reel_duration: float = number(30.0, "Reel duration", "s", 0.0, 3600.0)
-
-    def __post_init__(self) -> None:
-        validate(self)
 
     @classmethod
     def for_scenario(cls, scenario: str, **changes: Any) -> Request6:
@@ -93,30 +92,24 @@ class Request6:
 
     def header(self) -> dict:
         """``key = value`` lines for the CSV header (every setting, with units)."""
-        from aerostat_core.base.fields import specs
-
-        out = {}
-        for name, spec in specs(type(self)).items():
-            unit = f" [{spec.unit}]" if spec.unit else ""
-            out[f"{spec.label}{unit}"] = getattr(self, name)
-        return out
+        return self.labelled()
 
 
-def run6(req: Request6, design=None, progress=None):
+def run6(dyn: Request6, design=None, progress=None):
     """Run a request on ``design`` (default: the thesis optimised design); returns
     (Result6, design)."""
     if design is None:
         from aerostat_core.dynamics.cases import thesis_design
 
         design = thesis_design()
-    system = system6_from_design(design, segments=req.segments, events=req.events())
-    wind3 = req.wind3(float(design.airframe.tether_length))
-    if req.scenario == "veer":
+    system = system6_from_design(design, segments=dyn.segments, events=dyn.events())
+    wind3 = dyn.wind3(float(design.airframe.tether_length))
+    if dyn.scenario == "veer":
         # the profile turns about the aerostat's height: chi = chi_0 there
-        wind3 = replace(wind3, veer_height=_top_height(design, req.speed))
-    opts = SolverOptions(output_interval=0.1 if req.duration <= 600 else 0.5,
+        wind3 = replace(wind3, veer_height=_top_height(design, dyn.speed))
+    opts = SolverOptions(output_interval=0.1 if dyn.duration <= 600 else 0.5,
                          wall_time_limit=120.0)
-    res = simulate6(system, wind3, req.duration, opts, design=design, progress=progress)
+    res = simulate6(system, wind3, dyn.duration, opts, design=design, progress=progress)
     return res, design
 
 
@@ -126,26 +119,26 @@ def _top_height(design, speed: float) -> float:
     return float(row["flying_height_m"])
 
 
-def metrics6(res, req: Request6, design, lateral: bool = True) -> dict:
+def metrics6(res, dyn: Request6, design, lateral: bool = True) -> dict:
     """The CLI's figures: the 3-DOF run's keys (status, window, settling time, pitch range and
     peak, hull velocity peaks, RMS, tension range) plus roll_peak_deg, yaw_peak_deg,
     lateral_peak_m, lateral_unstable_above_m_s (None when stable to the survival wind), the
     static lateral derivatives and, for reel and break runs, the tension peak and the ascent."""
     t = res.t
-    t0 = min(req.event_time if req.scenario != "turbulence-3d" else 20.0, float(t[-1]))
+    t0 = min(dyn.event_time if dyn.scenario != "turbulence-3d" else 20.0, float(t[-1]))
     sel = t >= t0
     out: dict[str, Any] = {"status": res.message, "ok": bool(res.ok), "window_start_s": t0,
                            "window_end_s": float(t[-1])}
     settle = None
-    if req.scenario not in ("turbulence-3d", "tether-break") and t[-1] > req.event_time + 5.0:
-        settle = response_metrics(t, res.signal("x_C"), req.event_time, 0.05).settling_time
+    if dyn.scenario not in ("turbulence-3d", "tether-break") and t[-1] > dyn.event_time + 5.0:
+        settle = response_metrics(t, res.signal("x_C"), dyn.event_time, 0.05).settling_time
     out["settling_time_s"] = settle
     out.update(motion_figures(*(res.signal(k)[sel] for k in ("pitch", "vx", "vz", "tension_top"))))
     out.update(res.peaks(t0))
     out["tension_winch_peak_N"] = float(np.max(res.signal("tension_winch")))
     out["tether_length_range_m"] = [float(np.min(res.signal("tether_length"))),
                                     float(np.max(res.signal("tether_length")))]
-    if req.scenario == "tether-break":
+    if dyn.scenario == "tether-break":
         z = res.signal("z_C")
         out["ascent_m"] = float(z[-1] - z[0])
         out["drift_m"] = float(math.hypot(res.signal("x_C")[-1] - res.signal("x_C")[0],
@@ -159,14 +152,14 @@ def metrics6(res, req: Request6, design, lateral: bool = True) -> dict:
         analyses, above = lateral_sweep(design)
         out["lateral_unstable_above_m_s"] = above
         out["lateral_speeds_m_s"] = [a.speed for a in analyses]  # speeds with an equilibrium
-        near = min(analyses, key=lambda a: abs(a.speed - req.speed))
+        near = min(analyses, key=lambda a: abs(a.speed - dyn.speed))
         out["lateral_modes"] = [m.row() for m in near.modes[:6]]
         out["lateral_modes_speed_m_s"] = near.speed
         s8 = system6_from_design(design, segments=8)
         out["static_derivatives"] = {
-            "C_m_alpha_cv_per_rad": _cm_alpha_cv(design, req.speed),
-            **static_lateral_derivatives(s8, req.speed, design, state=near.state
-                                         if near.speed == req.speed else None)}
+            "C_m_alpha_cv_per_rad": _cm_alpha_cv(design, dyn.speed),
+            **static_lateral_derivatives(s8, dyn.speed, design, state=near.state
+                                         if near.speed == dyn.speed else None)}
     return out
 
 

@@ -25,12 +25,14 @@ turbulence). Each is compared with the claim; within a factor of 1.5 is a match.
 from __future__ import annotations
 
 from collections.abc import Mapping
+from dataclasses import replace
 from typing import Any
 
 import numpy as np
 
+from .request import DynamicsRequest, TurbulenceSettings
 from .results import SimulationResult, response_metrics
-from .scenarios import default_request, event_time, run_request
+from .scenarios import run_request
 
 #: The thesis' claims per scenario: metric -> value.
 THESIS_CLAIMS = {
@@ -58,40 +60,48 @@ WHY_NOT = (
 )
 
 
-def thesis_request(scenario: str, seed: int = 1, duration: float | None = None) -> dict:
-    """The request of one thesis scenario (module docstring); ``duration`` [s] overrides."""
+def thesis_request(scenario: str, seed: int = 1, duration: float | None = None,
+                   ) -> DynamicsRequest:
+    """The request of one thesis scenario (module docstring); ``duration`` [s] overrides.
+
+    Raises :class:`~aerostat_core.base.validation.InputError` naming the field (the seed or the
+    duration out of its range) and ``ValueError`` for an unknown scenario.
+
+    >>> thesis_request("turbulence", seed=7).turbulence.seed
+    7
+    """
     if scenario == "varying":
-        req = default_request("varying", changes=[(20.0, 15.0, 5.0)], duration=150.0)
+        dyn = DynamicsRequest.for_scenario("varying", duration=150.0, wall=120.0)
     elif scenario == "gust":
-        req = default_request("gust", duration=150.0)
+        dyn = DynamicsRequest.for_scenario("gust", duration=150.0, wall=120.0)
     elif scenario == "turbulence":
-        req = default_request("turbulence", speed=15.0, profile="power", duration=600.0)
-        req["turbulence"] = dict(req["turbulence"], seed=int(seed), intensity="profile")
+        dyn = DynamicsRequest.for_scenario(
+            "turbulence", speed=15.0, profile="power", duration=600.0, wall=120.0,
+            turbulence=TurbulenceSettings(intensity="profile", seed=seed))
     elif scenario == "steady":
-        req = default_request("steady", duration=60.0)
+        dyn = DynamicsRequest.for_scenario("steady", duration=60.0, wall=120.0)
     else:
         raise ValueError(
             f"scenario = {scenario!r}; valid options ('steady', 'varying', 'gust', 'turbulence')"
         )
     if duration is not None:
-        req["duration"] = float(duration)
-    req["wall"] = 120.0
-    return req
+        dyn = replace(dyn, duration=duration)
+    return dyn
 
 
-def window_start(req: Mapping[str, Any]) -> float:
+def window_start(dyn: DynamicsRequest) -> float:
     """Start of the metrics window [s]: the event, or the fade-in + 40 s in turbulence."""
-    te = event_time(req)
+    te = dyn.event_time
     if te is not None:
         return te
-    if req["scenario"] == "turbulence":
-        return float(req["turbulence"]["fade_in"]) + TURBULENCE_SETTLE
+    if dyn.scenario == "turbulence":
+        return float(dyn.turbulence.fade_in) + TURBULENCE_SETTLE
     return 0.0
 
 
-def metrics(res: SimulationResult, req: Mapping[str, Any]) -> dict:
+def metrics(res: SimulationResult, dyn: DynamicsRequest) -> dict:
     """The CLI's and the comparison's figures of one run (module docstring), plain numbers."""
-    t0 = min(window_start(req), float(res.t[-1]))
+    t0 = min(window_start(dyn), float(res.t[-1]))
     sel = res.t >= t0
     out: dict[str, Any] = {
         "status": res.message,
@@ -99,7 +109,7 @@ def metrics(res: SimulationResult, req: Mapping[str, Any]) -> dict:
         "window_start_s": t0,
         "window_end_s": float(res.t[-1]),
     }
-    te = event_time(req)
+    te = dyn.event_time
     settle = None
     if te is not None and res.t[-1] > te + 5.0:
         settle = response_metrics(res.t, res.signal("x_C"), te, 0.05).settling_time
@@ -122,9 +132,9 @@ def metrics(res: SimulationResult, req: Mapping[str, Any]) -> dict:
 
 def run_thesis_case(scenario: str, seed: int = 1, design=None, duration: float | None = None):
     """Simulate one thesis scenario; returns (result, metrics, request, design)."""
-    req = thesis_request(scenario, seed, duration)
-    res, d = run_request(req, design=design)
-    return res, metrics(res, req), req, d
+    dyn = thesis_request(scenario, seed, duration)
+    res, d = run_request(dyn, design=design)
+    return res, metrics(res, dyn), dyn, d
 
 
 def comparison_rows(runs: Mapping[str, Mapping[str, Any]]) -> list[dict]:

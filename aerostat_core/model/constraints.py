@@ -237,7 +237,8 @@ def _lower(value, limit):
     return 1.0 - value / limit, value - limit
 
 
-def wind_quantities(req: Requirement, cfg: Configuration, ev: Evaluation) -> dict:
+def wind_quantities(req: Requirement, cfg: Configuration, ev: Evaluation,
+                    structure: dict | None = None) -> dict:
     """Value, limit and g of every wind-dependent constraint for an evaluation at any speed(s).
 
     Parameters
@@ -247,6 +248,9 @@ def wind_quantities(req: Requirement, cfg: Configuration, ev: Evaluation) -> dic
     cfg : Configuration
     ev : Evaluation
         Trim and tether solution (arrays broadcast over designs and speeds).
+    structure : dict, optional
+        :func:`aerostat_core.model.mission.structure_quantities` of ``ev`` when the caller
+        has them already (computed here otherwise).
 
     Returns
     -------
@@ -290,7 +294,7 @@ def wind_quantities(req: Requirement, cfg: Configuration, ev: Evaluation) -> dic
     lim = -float(req.weathervane_margin)
     wv_g = np.where(np.isfinite(cma_aero), cma_aero - lim, -1.0)
     out["weathervane"] = (np.where(np.isfinite(cma_aero), cma_aero, 0.0), lim * one, wv_g, -wv_g)
-    st = structure_quantities(req, cfg, ev)
+    st = structure_quantities(req, cfg, ev) if structure is None else structure
     need, fab = st["strength_required"] * one, st["strength"] * one
     out["envelope_stress"] = (need, fab, need / fab - 1.0, fab - need)
     mb, mw = st["moment_at_governing"] * one, st["wrinkling_moment_allowable"] * one
@@ -475,15 +479,16 @@ def constraint_state(req: Requirement, cfg: Configuration, af: Airframe,
 
 
 def wind_flags(req: Requirement, cfg: Configuration, ev: Evaluation,
-               state: ConstraintState | None = None) -> dict:
+               state: ConstraintState | None = None, structure: dict | None = None) -> dict:
     """Per-speed flags for a wind sweep: constraint name -> bool array, True where the row
     breaks that constraint of the table (limits of the design wind applied at every speed; the
     survival check is the constraint table's, not a per-speed flag).
 
     ``state``: the constraint table of the same airframe (one design), whose static rows are
-    then read instead of recomputed (the same numbers)."""
+    then read instead of recomputed (the same numbers). ``structure``: the envelope's
+    :func:`aerostat_core.model.mission.structure_quantities` of ``ev`` if known."""
     req = req.resolved()
-    wq = wind_quantities(req, cfg, ev)
+    wq = wind_quantities(req, cfg, ev, structure)
     sq = static_quantities(req, ev.airframe, cfg) if state is None else None
     shape = np.shape(wq["blow_by"][0])
     flags = {}

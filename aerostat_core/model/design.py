@@ -21,9 +21,9 @@ from aerostat_core.model.constraints import (
 )
 from aerostat_core.model.cost import gas_fill_cost
 from aerostat_core.model.inputs import Configuration, Requirement
+from aerostat_core.model.mission import structure_quantities
 from aerostat_core.model.mission_report import MissionReport, mission_report
 from aerostat_core.model.performance import (
-    Evaluation,
     PerformanceTable,
     cm_curve,
     evaluate,
@@ -31,7 +31,7 @@ from aerostat_core.model.performance import (
     wind_speeds,
 )
 from aerostat_core.model.presets import rules_configuration
-from aerostat_core.model.sizing import SizingResult, map_arrays, size_volume
+from aerostat_core.model.sizing import SizingResult, size_volume
 from aerostat_core.structures.mass import ITEM_NAMES
 from aerostat_core.tether.statics import interpolated_heights
 
@@ -420,24 +420,6 @@ class Design:
         return self.constraints.rows()
 
 
-def _append_speed(ev: Evaluation, other: Evaluation) -> Evaluation:
-    """``ev`` (one design over speeds: the speed axis last) with the first speed of ``other``
-    appended (leaves without a speed axis, as the airframe, are shared)."""
-    n = np.size(ev.speed)
-
-    def cat(a, b):
-        if a is b or a.ndim == 0 or a.shape[-1] != n:
-            return a
-        return np.concatenate([a, b[..., :1]], axis=-1)
-
-    if ev.airframe is not other.airframe:
-        return map_arrays(cat, ev, other)
-    # one airframe (design() solves both on it): share it rather than walk its whole tree
-    names = [f.name for f in fields(Evaluation) if f.name != "airframe"]
-    parts = map_arrays(cat, *(tuple(getattr(e, k) for k in names) for e in (ev, other)))
-    return Evaluation(airframe=ev.airframe, **dict(zip(names, parts)))
-
-
 def design(req: Requirement | None = None, cfg: Configuration | None = None) -> Design:
     """Size (if no volume is given), trim and evaluate an aerostat.
 
@@ -494,7 +476,9 @@ def design(req: Requirement | None = None, cfg: Configuration | None = None) -> 
         hint = functools.partial(interpolated_heights, elevation=el, z=zk,
                                  length=af.tether_length, vertical=True)
     ev = evaluate(req, cfg, af, speeds, heights_hint=hint)
-    table = performance_table(ev, wind_flags(req, cfg, ev, state))
+    # the sweep's envelope loads, for its flags and for the mission's reel-in wind
+    sweep_structure = structure_quantities(req, cfg, ev)
+    table = performance_table(ev, wind_flags(req, cfg, ev, state, sweep_structure))
     at_winds = state.evaluation  # [design, survival] wind: the design point is its first row
     # its flags are the table's own design-wind rows (only that first row is kept)
     flags = {k: np.array([v, False]) for k, v in state_flags(state).items()}
@@ -512,7 +496,7 @@ def design(req: Requirement | None = None, cfg: Configuration | None = None) -> 
     if selection is not None:
         violations += selection.messages()
     # the mission's sweep includes the design wind (its reel-in wind may be that speed)
-    mission = mission_report(req, cfg, af, state, _append_speed(ev, at_winds), cfg.gas_price_value)
+    mission = mission_report(req, cfg, af, state, ev, cfg.gas_price_value, sweep_structure)
     return Design(
         requirement=req,
         configuration=cfg,

@@ -154,7 +154,8 @@ class MissionReport:
         return [{"group": g, "quantity": q, "value": float(v), "unit": u} for g, q, v, u in out]
 
 
-def mission_report(req, cfg, af, state, sweep_ev, gas_price: float) -> MissionReport:
+def mission_report(req, cfg, af, state, sweep_ev, gas_price: float,
+                   sweep_structure: dict | None = None) -> MissionReport:
     """Mission outputs of one sized design.
 
     Parameters
@@ -165,9 +166,12 @@ def mission_report(req, cfg, af, state, sweep_ev, gas_price: float) -> MissionRe
     state : ConstraintState
         The table at the design (its evaluation is at [design, survival] wind).
     sweep_ev : Evaluation
-        The wind sweep (any speeds).
+        The wind sweep (any speeds); the design wind of ``state`` is checked with it (its
+        reel-in wind may be that speed).
     gas_price : float
         [USD/m3].
+    sweep_structure : dict, optional
+        :func:`aerostat_core.model.mission.structure_quantities` of ``sweep_ev`` if known.
     """
     k, own = tether_conductors(req, cfg)
     tether = effective_tether(req, cfg)
@@ -204,12 +208,18 @@ def mission_report(req, cfg, af, state, sweep_ev, gas_price: float) -> MissionRe
     sf_s, sf_req = float(val[i_sf]), float(lim[i_sf])
     met = np.asarray(state.met).reshape(-1)
     stay = bool(met[i_s] and met[i_sf])
-    # the lowest sweep speed at which the tether or the envelope gives out
-    sw = structure_quantities(req, cfg, sweep_ev)
-    sf_sweep = np.asarray(sweep_ev.safety_factor, float).reshape(-1)
-    ok_p = np.asarray(sw["pressure_allowable"] >= sw["pressure_required"]).reshape(-1)
+    # the lowest speed of the sweep and the design wind (the table's first wind) at which the
+    # tether or the envelope gives out
+    sw = structure_quantities(req, cfg, sweep_ev) if sweep_structure is None else sweep_structure
+
+    def with_design(sweep, at_winds):
+        return np.concatenate([np.asarray(sweep).reshape(-1), np.asarray(at_winds).reshape(-1)[:1]])
+
+    sf_sweep = with_design(np.asarray(sweep_ev.safety_factor, float), ev2.safety_factor)
+    ok_p = with_design(sw["pressure_allowable"] >= sw["pressure_required"],
+                       sq["pressure_allowable"] >= sq["pressure_required"])
     bad = (sf_sweep < req.survival_safety_factor) | ~ok_p
-    speeds = np.asarray(sweep_ev.speed, float).reshape(-1)
+    speeds = with_design(np.asarray(sweep_ev.speed, float), np.asarray(ev2.speed, float))
     reel = float(speeds[bad].min()) if bad.any() else None
     pulls = [np.max(sweep_ev.tether.tension_winch), np.max(ev2.tether.tension_winch)]
     pull = float(max(pulls))

@@ -32,6 +32,7 @@ so that a fuller structural model (bending, wrinkling) can replace it in one pla
 
 from __future__ import annotations
 
+import copy
 from dataclasses import dataclass, replace
 
 import numpy as np
@@ -176,7 +177,12 @@ def needs_of(req, cfg, af, state) -> Needs:
 
 def _flown(req, cfg, tether: TetherSpec) -> TetherSpec:
     """The tether as flown (conductors bundled in where power goes through it)."""
-    return effective_tether(req, replace(cfg, tether=tether))
+    # ``cfg`` with the catalogue tether, copied without re-validating the whole configuration
+    # (a validated configuration and a validated catalogue entry: ``replace`` would check
+    # every field again for each entry compared)
+    c = copy.copy(cfg)
+    object.__setattr__(c, "tether", tether)
+    return effective_tether(req, c)
 
 
 def choose(req, cfg, needs: Needs) -> tuple[tuple[int, int, int], tuple[Shortfall, ...]]:
@@ -240,14 +246,18 @@ def _table(req, cfg, af):
     return constraint_state(req, cfg, af)
 
 
-def _evaluate(req, cfg):
-    """(sizing or None, airframe, state) of ``cfg`` (sized when its volume is None)."""
+def _evaluate(req, cfg, explain=None):
+    """(sizing or None, airframe, state) of ``cfg`` (sized when its volume is None).
+
+    ``explain=False``: an infeasible sizing skips the refinement of every constraint's
+    boundaries that only its message and intervals need (volume, state and feasibility are the
+    same); for the sizings whose result is read for its loads only and then dropped."""
     from aerostat_core.model.airframe import build_airframe
     from aerostat_core.model.constraints import constraint_state
     from aerostat_core.model.sizing import size_volume
 
     if cfg.hull.volume is None:
-        s = size_volume(req, cfg)
+        s = size_volume(req, cfg, explain=explain)
         return s, s.state.evaluation.airframe, s.state
     af = build_airframe(req, cfg, float(cfg.hull.volume))
     return None, af, constraint_state(req, cfg, af)
@@ -281,7 +291,8 @@ def select_materials(req, cfg) -> Selection:
     idx = (0, 0, 0)  # the catalogues are sorted lightest first
     runs = 0
     c = with_items(cfg, idx)
-    sizing, af, state = _evaluate(req, c)
+    # returned only when feasible: an infeasible first sizing is read for its loads only
+    sizing, af, state = _evaluate(req, c, explain=False)
     runs += 1
     needs = needs_of(req, c, af, state)
     new, short = choose(req, c, needs)
@@ -291,7 +302,8 @@ def select_materials(req, cfg) -> Selection:
     # the fixed point on the items' masses, strengths held out of the table
     for _ in range(MAX_ROUNDS):
         idx = tuple(max(a, b) for a, b in zip(idx, new))
-        s_r, af_r, st_r = _evaluate(req, with_items(cfg, idx, relaxed=True))
+        # read for its loads, and returned only when feasible
+        s_r, af_r, st_r = _evaluate(req, with_items(cfg, idx, relaxed=True), explain=False)
         runs += 1
         cr = with_items(cfg, idx)
         # the loads with the real tether's strength (the table's factors were the relaxed one's)

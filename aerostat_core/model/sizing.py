@@ -15,7 +15,8 @@ in volume and intersects them:
 3. in it, the boundary of every constraint that changes between the two ends, found by a
    bracketing root finder (a safeguarded secant in log volume on log(1 + g), where a power law
    is a straight line, with a bisection point each round) to a relative width of
-   :data:`RTOL` in volume;
+   :data:`RTOL` in volume (a round whose brackets are all rows that need no wind, as free lift
+   and endurance, evaluates those rows alone: the same numbers for a third of the cost);
 4. the intersection: the largest lower boundary L and the smallest upper boundary U of that
    interval. Where L <= U the answer is the evaluated point just above L (every row of the
    table is checked there, so the answer is feasible by evaluation, not by inference);
@@ -34,6 +35,7 @@ No scipy root-finder is involved, so nothing raises on an infeasible case.
 from __future__ import annotations
 
 import dataclasses
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -47,6 +49,7 @@ from aerostat_core.model.constraints import (
     NAMES,
     ConstraintState,
     constraint_state,
+    static_quantities,
 )
 from aerostat_core.model.inputs import Configuration, Requirement
 
@@ -107,6 +110,39 @@ class SizingResult:
 def _state(req, cfg, volume, f, dsf, pos, heights_hint=None) -> ConstraintState:
     return constraint_state(req, cfg, build_airframe(req, cfg, volume, f, dsf, pos),
                             heights_hint)
+
+
+#: Rows of the table that need no wind (the airframe alone: free lift, fins on the hull,
+#: endurance).
+_STATIC = np.array([c.at == "static" for c in CONSTRAINTS])
+
+
+class _StaticRows:
+    """The table's rows that need no wind at a flat batch of points, the others NaN: what a
+    round of the root finder reads when all its brackets are such rows (the airframe and
+    :func:`static_quantities`, about a third of a whole evaluation). The numbers are those of
+    the whole table (:func:`constraint_state` takes these rows from the same functions on the
+    same airframe); :func:`_complete` evaluates the whole table at the same points, in the same
+    batch, where it is read."""
+
+    def __init__(self, req, cfg, volume, f, dsf, pos):
+        self.args = (req, cfg, volume, f, dsf, pos)
+        sq = static_quantities(req, build_airframe(req, cfg, volume, f, dsf, pos), cfg)
+        self.g = np.full((np.size(volume), len(NAMES)), np.nan)
+        for k in np.nonzero(_STATIC)[0]:
+            self.g[:, k] = sq[NAMES[k]][2]
+
+
+def _complete(states, src) -> np.ndarray:
+    """The whole table's g row at ``src`` = (state id, index), a state of static rows replaced
+    by its whole evaluation first (the same points in the same batch, so the same numbers as a
+    round that evaluated it all)."""
+    sid, i = int(src[0]), int(src[1])
+    st, npts = states[sid]
+    if isinstance(st, _StaticRows):
+        st = _state(*st.args)
+        states[sid] = (st, npts)
+    return np.broadcast_to(st.g, (npts, len(NAMES)))[i]
 
 
 #: Field names of each dataclass met by :func:`map_arrays` (``dataclasses.fields`` is slow).
@@ -256,15 +292,43 @@ def _cubic_guess(grid, gg, d_idx, k, j):
     u = np.arange(4, dtype=float)
     coef = np.linalg.solve(np.vander(u, 4, increasing=True)[None], h[..., None])[..., 0]
     a, b = (j - i0).astype(float), (j - i0 + 1).astype(float)
-    fa = ((coef[:, 3] * a + coef[:, 2]) * a + coef[:, 1]) * a + coef[:, 0]
-    for _ in range(30):
-        m = 0.5 * (a + b)
-        fm = ((coef[:, 3] * m + coef[:, 2]) * m + coef[:, 1]) * m + coef[:, 0]
-        same = np.sign(fm) == np.sign(fa)
-        a, fa = np.where(same, m, a), np.where(same, fm, fa)
-        b = np.where(same, b, m)
+    if a.size <= _FEW:
+        # a few brackets: the same bisection on Python floats (the same IEEE operations, so the
+        # same numbers, without ~300 numpy calls on arrays of a few elements)
+        a, b = _bisect_cubics(coef.tolist(), a.tolist(), b.tolist())
+    else:
+        fa = ((coef[:, 3] * a + coef[:, 2]) * a + coef[:, 1]) * a + coef[:, 0]
+        for _ in range(30):
+            m = 0.5 * (a + b)
+            fm = ((coef[:, 3] * m + coef[:, 2]) * m + coef[:, 1]) * m + coef[:, 0]
+            same = np.sign(fm) == np.sign(fa)
+            a, fa = np.where(same, m, a), np.where(same, fm, fa)
+            b = np.where(same, b, m)
     xg = np.log(grid)
     return xg[i0] + 0.5 * (a + b) * (xg[1] - xg[0])
+
+
+def _sign(x: float) -> float:
+    """np.sign of a float (NaN for NaN, so that it equals no sign)."""
+    return 1.0 if x > 0.0 else -1.0 if x < 0.0 else 0.0 if x == 0.0 else math.nan
+
+
+def _bisect_cubics(coef, a, b):
+    """The 30 bisection steps of :func:`_cubic_guess` on lists of floats (one cubic per
+    bracket): the bracket ends (a, b) as arrays."""
+    out_a, out_b = [], []
+    for (c0, c1, c2, c3), lo, hi in zip(coef, a, b):
+        f_lo = ((c3 * lo + c2) * lo + c1) * lo + c0
+        for _ in range(30):
+            m = 0.5 * (lo + hi)
+            fm = ((c3 * m + c2) * m + c1) * m + c0
+            if _sign(fm) == _sign(f_lo):
+                lo, f_lo = m, fm
+            else:
+                hi = m
+        out_a.append(lo)
+        out_b.append(hi)
+    return np.array(out_a), np.array(out_b)
 
 
 def _prune(open_, x_lo, x_hi, group, up):
@@ -285,7 +349,7 @@ def _prune(open_, x_lo, x_hi, group, up):
 
 
 def _refine(req, cfg, f, dsf, pos, k, x_lo, x_hi, r_lo, r_hi, s_lo, s_hi, states, guess=None,
-            ladder=False, group=None, up=None):
+            ladder=False, group=None, up=None, static_rounds=False):
     """Shrink brackets of constraint boundaries to a width of :data:`RTOL` in volume.
 
     A flat set of M brackets: bracket m has constraint ``k[m]`` met at one end of
@@ -299,7 +363,11 @@ def _refine(req, cfg, f, dsf, pos, k, x_lo, x_hi, r_lo, r_hi, s_lo, s_hi, states
     differ. ``ladder``: the first round also evaluates +-3d and +-9d (a few designs, where a
     call costs more than its points). ``group`` (design of each bracket) and ``up`` (a lower
     boundary): brackets that cannot decide the smallest feasible volume stop early
-    (:func:`_prune`). Returns the updated arrays.
+    (:func:`_prune`). ``static_rounds``: a round whose open brackets are all rows that need no
+    wind, and that is unlikely to be the last (its inner step wider than the final one),
+    evaluates those rows alone (:class:`_StaticRows`; the same numbers, a third of the cost);
+    the caller completes such a state where its whole table is read (:func:`_complete`).
+    Returns the updated arrays.
     """
     n = len(NAMES)
     x_lo, x_hi, r_lo, r_hi, s_lo, s_hi = (np.array(a) for a in (x_lo, x_hi, r_lo, r_hi,
@@ -335,7 +403,11 @@ def _refine(req, cfg, f, dsf, pos, k, x_lo, x_hi, r_lo, r_hi, s_lo, s_hi, states
         npts = pts.size
         n_in = pts.shape[1]
         f3, dsf3, pos3 = (np.repeat(a[act], n_in) for a in (f, dsf, pos))
-        st = _state(req, cfg, np.exp(pts).reshape(-1), f3, dsf3, pos3)
+        args = (np.exp(pts).reshape(-1), f3, dsf3, pos3)
+        if static_rounds and _STATIC[kk].all() and bool((d > 0.4 * _LOG_RTOL).any()):
+            st = _StaticRows(req, cfg, *args)
+        else:
+            st = _state(req, cfg, *args)
         sid = len(states)
         states.append((st, npts))
         g = np.broadcast_to(st.g, (npts, n)).reshape(ma, n_in, n)
@@ -571,12 +643,14 @@ def size_volume(req: Requirement, cfg: Configuration, fineness_ratio=None, area_
             req, cfg, fb[d_idx], db[d_idx], pb[d_idx], k,
             *_grid_brackets(grid, gg, d_idx, k, jj), states,
             guess=_cubic_guess(grid, gg, d_idx, k, jj), ladder=nb <= _FEW, group=d_idx,
-            up=met[jj + 1, d_idx, k])
+            up=met[jj + 1, d_idx, k], static_rounds=True)
         up = met[jj + 1, d_idx, k]  # met at the upper end: a lower boundary of the window
         for pos_b, b in enumerate(bsel):
             mine = np.nonzero((bi == pos_b) & up)[0]
             if mine.size:
                 m = mine[np.argmax(x_hi[mine])]  # the largest lower boundary
+                if s_hi[m][0] > 0:  # a point of the root finder: its whole table
+                    r_hi[m] = _complete(states, s_hi[m])
                 if bool((r_hi[m] <= _TOL).all()):  # the whole table met at that point
                     found[b], volume[b], src[b] = True, float(np.exp(x_hi[m])), s_hi[m]
                     binding[b] = NAMES[k[m]]

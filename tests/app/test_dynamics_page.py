@@ -170,11 +170,9 @@ def test_a_decimal_comma_is_a_decimal_point_never_ten_times(dyn):
     _set(dyn, "dyn_duration", "2,5e1")
     at = _run(dyn)
     assert not messages(at, "error")
-    assert at.session_state["dyn_request"]
-    import json as _json
-
-    request = _json.loads(at.session_state["dyn_request"])
-    assert (request["speed"], request["duration"]) == (4.5, 25.0)
+    run_key = at.session_state["dyn_request"]
+    assert isinstance(run_key, view.DynamicsKey)  # the typed request, no JSON on the way
+    assert (run_key.request.speed, run_key.request.duration) == (4.5, 25.0)
     _set(at, "dyn_speed", "4.5,0")
     at = _run(at)
     assert any("Mean wind at the aerostat" in m and "ambiguous" in m for m in messages(at, "error"))
@@ -261,21 +259,21 @@ def test_modes_table(dyn):
 
 
 def test_csv_of_the_time_histories():
-    form = dict(
-        source=view.THESIS,
-        scenario="steady",
-        speed=8.0,
-        duration=12.0,
-        exponent=1 / 7,
-        roughness=0.03,
-        body="hull",
-        segments=10,
-        damping=1.0,
-        wall=60.0,
-        unsteady=True,
-        profile="uniform",
-    )
-    out = view.run(view.build_request(form, None, {}))
+    form = {
+        "dyn_source": view.THESIS,
+        "dyn_scenario": "steady",
+        "dyn_speed": "8",
+        "dyn_duration": "12",
+        "dyn_exp": 1 / 7,
+        "dyn_z0": "0,03",
+        "dyn_body": "hull",
+        "dyn_nseg": "10",
+        "dyn_zeta": 1.0,
+        "dyn_wall": "60",
+        "dyn_unsteady": True,
+        "dyn_profile": "uniform",
+    }
+    out = view.run(view.build_run(form, None, {}))
     assert out["csv_name"] == "aerostat_dynamics_steady.csv"
     meta = [ln for ln in out["csv"].splitlines() if ln.startswith("# ")]
     assert "# scenario = steady" in meta and "# speed = 8.0" in meta
@@ -289,3 +287,64 @@ def test_csv_of_the_time_histories():
     assert row["t_s"] == pytest.approx(12.0)
     assert row["wind_x_m_s"] == pytest.approx(8.0)
     assert math.isfinite(row["theta_deg"])
+
+
+def test_the_form_shows_every_field_of_the_request_from_the_registry():
+    """Every field of the typed request (and of each scenario's part) has a box, and each box's
+    label, unit and help are the registry's (nothing typed in the page)."""
+    import dataclasses
+
+    from aerostat_core.base.fields import specs
+    from aerostat_core.dynamics.request import DynamicsRequest
+
+    shown = {b.path for b in view.BOXES.values()}
+    want = set()
+    for name, spec in specs(DynamicsRequest).items():
+        if spec.kind != "part":
+            want.add(name)
+            continue
+        part = DynamicsRequest.PARTS[name]
+        prefix = f"{name}.0" if name == "changes" else name
+        want |= {f"{prefix}.{f.name}" for f in dataclasses.fields(part)}
+    assert want <= shown, sorted(want - shown)
+    for box in view.BOXES.values():
+        s = DynamicsRequest.spec_at(box.path)
+        assert box.label.startswith(s.label) and box.help == (s.help or None)
+        if s.kind in ("number", "integer"):
+            assert box.label.endswith(f"[{s.shown_unit}]")
+
+
+def test_the_page_draws_the_registry_labels(dyn):
+    from aerostat_core.base.fields import field_spec
+    from aerostat_core.dynamics.request import DynamicsRequest, GustSettings, TurbulenceSettings
+
+    def label(kind, key):
+        return next(el.label for el in getattr(dyn, kind) if el.key == key)
+
+    s = field_spec(DynamicsRequest, "speed")
+    assert label("text_input", "dyn_speed") == f"{s.label} [m/s]"
+    assert label("text_input", "dyn_gu") == f"{field_spec(GustSettings, 'amplitude_u').label} [m/s]"
+    assert label("checkbox", "dyn_gconv") == field_spec(GustSettings, "convected").label
+    assert label("radio", "dyn_scenario") == field_spec(DynamicsRequest, "scenario").label
+    _set(dyn, "dyn_scenario", "turbulence")
+    dyn.run()
+    assert label("selectbox", "dyn_int") == field_spec(TurbulenceSettings, "intensity").label
+    assert label("text_input", "dyn_seed") == "Random seed [-]"
+
+
+def test_a_second_ramp_before_the_first_ends_is_refused_by_the_request(dyn):
+    _set(dyn, "dyn_scenario", "varying")
+    dyn.run()
+    _set(dyn, "dyn_second", True)
+    _set(dyn, "dyn_tc2", 22.0)  # the first ramp runs 20-25 s
+    at = _run(dyn)
+    msg = " ".join(messages(at, "error"))
+    assert "Change starts at (change 2) = 22 s" in msg and "[25, 3600] s" in msg
+    assert "dyn_request" not in at.session_state and len(at.get("plotly_chart")) == 0
+
+
+def test_a_gust_without_amplitude_is_refused_by_the_request(dyn):
+    _set(dyn, "dyn_gu", 0.0)
+    at = _run(dyn)
+    msg = " ".join(messages(at, "error"))
+    assert "Gust amplitude, horizontal = 0 m/s" in msg and "both 0 m/s" in msg

@@ -12,6 +12,7 @@ from dataclasses import replace
 import pytest
 
 from aerostat_core import Configuration, Requirement, thesis_baseline
+from aerostat_core.dynamics.request import DynamicsRequest
 from aerostat_core.model.io import inputs_from_dict, inputs_to_dict
 from app_ui import cache, dynamics_view, envelope_view, optimize_jobs, shapes_view
 from app_ui.state import inputs_key
@@ -158,33 +159,24 @@ class _Rows:
 
 
 def test_dynamics_store_key_is_the_frozen_request():
+    """The Dynamics form's run key: the frozen design inputs and the typed request, equal for
+    equal values however they were typed ("5" or 5.0, inputs rebuilt from JSON)."""
     req, cfg = _inputs(11.53)
-    a = {
-        "source": "Current design",
-        "inputs": inputs_to_dict(req, cfg),
-        "speed": 10.0,
-        "gust": {"u": 5.0, "w": 0.0},
-    }
-    b = {
-        "gust": {"w": 0, "u": 5},
-        "speed": 10,
-        "inputs": json.loads(json.dumps(a["inputs"])),
-        "source": "Current design",
-    }
-    ka, kb = dynamics_view.request_key(a), dynamics_view.request_key(b)
-    assert ka != kb  # different texts of the same request
-    frozen = dynamics_view.frozen_request(ka)
-    assert frozen == dynamics_view.frozen_request(kb) and hash(frozen) == hash(
-        dynamics_view.frozen_request(kb)
-    )
-    assert isinstance(frozen, dynamics_view.DynamicsKey)
-    assert (frozen.requirement, frozen.configuration) == cache.frozen_inputs(req, cfg)
-    request = cache.thaw(frozen.request)
-    assert request["speed"] == 10.0 and request["gust"] == {"u": 5, "w": 0}
-    assert "inputs" not in request  # the inputs are the frozen fields, not JSON in the request
-    thesis = dynamics_view.frozen_request(dynamics_view.request_key({**a, "inputs": None}))
+    inputs = inputs_to_dict(req, cfg)
+    a = {"dyn_source": "Current design", "dyn_speed": "10", "dyn_gu": "5", "dyn_gw": "0"}
+    b = {"dyn_gw": 0.0, "dyn_gu": 5.0, "dyn_speed": "10,0", "dyn_source": "Current design"}
+    ka = dynamics_view.build_run(a, inputs, {})
+    kb = dynamics_view.build_run(b, json.loads(json.dumps(inputs)), {})
+    assert ka == kb and hash(ka) == hash(kb)
+    assert isinstance(ka, dynamics_view.DynamicsKey)
+    assert (ka.requirement, ka.configuration) == cache.frozen_inputs(req, cfg)
+    assert type(ka.request) is DynamicsRequest  # typed, validated once, never JSON
+    assert ka.request.speed == 10.0 and ka.request.gust.amplitude_u == 5.0
+    thesis = dynamics_view.build_run({**a, "dyn_source": dynamics_view.THESIS}, inputs, {})
     assert thesis.requirement is None and thesis.configuration is None
-    assert thesis.request == frozen.request and thesis != frozen
+    assert thesis.request == ka.request and thesis != ka
+    other = dynamics_view.build_run({**a, "dyn_gu": "5.5"}, inputs, {})
+    assert other.request != ka.request and other != ka
 
 
 def test_freeze_makes_plain_data_hashable_and_keeps_kinds_apart():
@@ -251,13 +243,11 @@ def test_a_waiter_computes_for_itself_when_the_first_compute_fails():
     assert cache.memo_keys("test_wait_fail") == [1]
 
 
-def test_a_dynamics_request_whose_inputs_no_longer_read_is_not_stored_and_says_why():
+def test_a_dynamics_request_whose_inputs_no_longer_read_is_refused_and_says_why():
     bad = inputs_to_dict(*_inputs(11.59))
     bad["requirement"]["payload_mass"] = -1.0
-    key = dynamics_view.request_key({"source": "Current design", "inputs": bad, "speed": 10.0})
-    assert dynamics_view.stored(key) is None
     with pytest.raises(ValueError, match="payload_mass"):
-        dynamics_view.run_cached(key)
+        dynamics_view.build_run({"dyn_source": "Current design", "dyn_speed": "10"}, bad, {})
 
 
 # --- every study key of the Sensitivity and Optimise pages is a NamedTuple read by name ---------
@@ -491,7 +481,7 @@ def _run_page_studies(monkeypatch, payload: float) -> dict[str, dict]:
     for name in ("design_stl", "gore_dxf", "gore_svg"):
         monkeypatch.setattr(s, name, lambda p: b"")
     monkeypatch.setattr(s, "gore_csv", lambda p: "")
-    monkeypatch.setattr(d, "run", lambda req, progress=None: record("dynamics", req=req))
+    monkeypatch.setattr(d, "run", lambda key, progress=None: record("dynamics", key=key))
     monkeypatch.setattr(d, "_thesis_comparison", lambda seed: record("dynamics_thesis", seed=seed))
 
     req, cfg = _inputs(payload)
@@ -506,8 +496,8 @@ def _run_page_studies(monkeypatch, payload: float) -> dict[str, dict]:
     s.cached_shape_study(text, "volume")
     s.cached_sweeps(text, 11)
     s.cached_exports(text, 14, 25.0)
-    request = {"source": "Current design", "inputs": inputs_to_dict(req, cfg), "speed": 9.0}
-    d.run_cached(d.request_key(request))
+    d.run_cached(d.build_run({"dyn_source": "Current design", "dyn_speed": "9"},
+                             inputs_to_dict(req, cfg), {}))
     d.thesis_comparison(round(100 * payload))
     return seen
 
@@ -622,11 +612,8 @@ def test_each_page_study_key_is_a_named_tuple_whose_values_reach_the_engine_by_n
     assert seen["shape_study"] == {"req": req.resolved(), "cfg": cfg, "objective": "volume"}
     assert seen["shape_sweeps"] == {"req": req.resolved(), "cfg": cfg, "n_points": 11}
     assert seen["exports"] == {"d": resolved_design, "n_gores": 14, "seam_allowance": 0.025}
-    assert seen["dynamics"]["req"]["speed"] == 9.0
-    assert cache.thaw(_page_key("dynamics", 11.73).request) == {
-        "source": "Current design",
-        "speed": 9.0,
-    }
+    assert seen["dynamics"]["key"].request.speed == 9.0
+    assert _page_key("dynamics", 11.73).request == DynamicsRequest(speed=9.0)
     assert seen["dynamics_thesis"] == {"seed": 1173}
 
 
@@ -638,6 +625,8 @@ def _other(value):
         return value + 1
     if isinstance(value, str):
         return value + "x"
+    if isinstance(value, DynamicsRequest):  # another run
+        return replace(value, duration=value.duration + 1.0)
     if isinstance(value, Configuration):  # another hull
         return replace(
             value, hull=replace(value.hull, fineness_ratio=value.hull.fineness_ratio + 0.1)

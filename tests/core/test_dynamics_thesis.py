@@ -9,7 +9,7 @@ import pytest
 from aerostat_core import design, thesis_baseline, thesis_optimized
 from aerostat_core.cli.entry import main
 from aerostat_core.dynamics import cases
-from aerostat_core.dynamics.scenarios import default_request, design_of
+from aerostat_core.dynamics.scenarios import design_of
 from aerostat_core.dynamics.thesis import (
     MATCH_FACTOR,
     THESIS_CLAIMS,
@@ -41,7 +41,7 @@ def test_one_thesis_optimised_design_matches_the_optimiser():
         assert r.x[k] == pytest.approx(v, abs=0.1 * np.ptp(DEFAULT_BOUNDS[k]))
     d = design(*thesis_optimized())
     assert float(d.volume) == pytest.approx(r.design["volume_m3"], rel=0.01)
-    for other in (cases.thesis_design(), design_of(default_request())):
+    for other in (cases.thesis_design(), design_of()):
         assert float(other.volume) == pytest.approx(float(d.volume))
         assert float(
             np.asarray(other.airframe.hull.fineness_ratio).reshape(-1)[0]
