@@ -369,6 +369,25 @@ def _results_body() -> None:
             show.feedback(fb[0], fb[1])
         saving.choice_panel()  # a taken name or a case changed elsewhere: asks, never guesses
 
+    _tabs()
+
+
+@st.fragment
+def _tabs() -> None:
+    # A fragment of its own inside the results: a tab switch reruns the open tab alone, not the
+    # verdict, the headline numbers, the constraint table and the case form above it (a third
+    # of the messages and elements of a results rerun). It reads the current inputs itself:
+    # a rerun of this fragment alone must not draw the inputs of an older run.
+    try:
+        _tabs_body()
+    except Exception as exc:  # noqa: BLE001 - never a traceback; a reference id, logged
+        report_unexpected(exc)
+
+
+def _tabs_body() -> None:
+    show.apply_unit_choice()  # a fragment rerun does not run app.py
+    frozen = cache.current_inputs()
+    rep = cache.report_of(*frozen)  # a cache hit: the results above computed it
     # Lazy tabs: only the open tab runs and is sent to the browser (a rerun draws 1-5 charts
     # instead of 10, which keeps "click Update design -> result" well under a second).
     tabs = dict(zip(TABS, st.tabs(TABS, key=TAB_KEY, on_change="rerun", default=TABS[0])))
@@ -378,7 +397,7 @@ def _results_body() -> None:
             _geometry_tab(rep)
     with tabs["3-D view"]:
         if tabs["3-D view"].open:
-            st.plotly_chart(plots.hull_3d_figure(rep), key="hull_3d")
+            st.plotly_chart(plots.hull_3d_figure(rep), key="hull_3d", config=plots.GL_CONFIG)
             st.caption(
                 "Drag to rotate, scroll to zoom. Fins in orange; confluence lines are "
                 "schematic (the engine models only the confluence point)."
