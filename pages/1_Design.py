@@ -71,6 +71,8 @@ TABS = ("Geometry", "3-D view", "Mass", "Performance", "Tether profiles", "Missi
 TAB_KEY = "design_tab"
 #: Session-state key of the Geometry tab's export section (open: True).
 EXPORTS_KEY = "design_exports"
+#: Session-state key of the constraint table's section (open: True).
+CONSTRAINTS_KEY = "design_constraints"
 
 
 def _geometry_tab(rep: DesignReport) -> None:
@@ -314,12 +316,19 @@ def _results_body() -> None:
     # below the headline numbers: the verdict and the key numbers stay above the fold at 1024 px
     st.caption(text.plain(class_caption(rep.inputs["requirement"]["payload_mass"],
                                         rep.inputs["requirement"]["altitude"])))
-    with st.expander(
-        "Constraint table: every limit, its margin and where it is checked", icon=":material/rule:"
-    ):
-        # static, cells that wrap: a data grid here loaded 1 MB of JavaScript before the first
-        # result, and scrolled sideways at 1024 px
-        st.table(constraint_styler(pd.DataFrame(text.constraint_table_rows(rep.constraints))))
+    # Lazy: drawn once opened (a rerun of the results), not on every rerun while closed (its
+    # styled table was a tenth of a rerun's script time and its largest message).
+    constraints = st.expander(
+        "Constraint table: every limit, its margin and where it is checked",
+        icon=":material/rule:",
+        key=CONSTRAINTS_KEY,
+        on_change="rerun",
+    )
+    if constraints.open:
+        with constraints:
+            # static, cells that wrap: a data grid here loaded 1 MB of JavaScript before the
+            # first result, and scrolled sideways at 1024 px
+            st.table(constraint_styler(pd.DataFrame(text.constraint_table_rows(rep.constraints))))
     if not rep.feasible:  # the verdict above says it; the table's reasons in full here
         st.error(
             "**Requirements not met:**\n" + "\n".join(f"- {v}" for v in rep.violations),
