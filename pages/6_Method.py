@@ -359,11 +359,14 @@ with tab_val:
 
     st.markdown(
         "**Fielded aerostats, all three classes (thesis Table 2.3).** Each system sized from "
-        "its payload and altitude, with its class' published endurance (and the strategic "
-        "class' 36 m/s survival wind), by the default *practice* rule set, fabrics and tether "
-        "chosen by load, against its published hull length and volume. The fineness ratio and "
-        "the hull-systems mass law were fitted on the systems marked *fit* (declared before "
-        "fitting); the others are predictions (docs/validation.md §7)."
+        "its published requirement: payload and altitude, its endurance and wind rating where "
+        "published, else its class' (thesis §2.3: 5/7/30 days; operating wind 20 m/s "
+        "tactical, 26 m/s operational; 36 m/s strategic survival), and the vendor's l/d where "
+        "it publishes length and diameter; by the default *practice* rule set, fabrics and "
+        "tether chosen by load, against its published hull length and volume. The fineness "
+        "ratio and the hull-systems mass law were fitted on the systems marked *fit* (declared "
+        "before fitting); the others are predictions. Where a published figure is ambiguous, "
+        "the *Readings* column gives both readings and the one used (docs/validation.md §7)."
     )
     try:
         stats, rows = _fielded_rows()
@@ -391,6 +394,7 @@ with tab_val:
                 "Predicted volume [m³]": r["predicted_volume_m3"],
                 "Volume error [%]": r["volume_error_pct"],
                 "Sized by": r["sized_by"], "Source": r["source"],
+                "Readings": r["readings"],
             } for r in rows]),
             hide_index=True, width="stretch", key="fielded_table",
             column_config={

@@ -4,6 +4,7 @@ issue 8 item 5, issue 23 items 3-4)."""
 from __future__ import annotations
 
 import json
+from dataclasses import replace
 
 import numpy as np
 import pytest
@@ -19,6 +20,7 @@ from aerostat_core.studies.fielded import (
     FIELDED,
     aerostat_class,
     class_figures,
+    fielded_case,
     fit_rms,
     validate_fielded,
 )
@@ -41,20 +43,66 @@ def test_the_harness_spans_every_class_with_a_declared_third_fitted() -> None:
         assert (s.length or 0) > 0 or (s.volume or 0) > 0
 
 
+#: Systems whose published figures could not be reconciled with their class (docs/validation.md
+#: §7, FieldedSystem.readings): the issue's 15 % bound is not met on them, and the test says so.
+OUTLIERS = {"Aeroscraft AEROS 3200", "Raven TIF-1600"}
+
+
 def test_every_fielded_system_sizes_near_its_published_length(harness) -> None:
     assert len(harness.rows) == len(FIELDED) >= 13
     st = harness.statistics()
-    # measured on this branch: length median 7.9 %, worst 32.8 % (AEROS 3200: 300 kg on a 39 m
-    # hull, where TCOM 28M carries 570 kg on 28 m); volume median 9.7 % (5 published). The
-    # issue's length targets (median 6 %, none worse than 15 %) are NOT met; the volume one is.
-    assert st["all_median"] <= 0.08
-    assert st["all_worst"] <= 0.35
+    # measured on this branch: length median 2.95 % (fit 2.45 %, held out 5.8 %), worst 32.4 %
+    # (AEROS 3200); volume median 9.7 % (5 published). Issue 23 item 3: median <= 6 % (met),
+    # volume median <= 12 % (met), none worse than 15 % (NOT met: AEROS 3200 and TIF-1600,
+    # see test_no_system_is_worse_than_15_percent).
+    assert st["all_median"] <= 0.06
+    assert st["fit_median"] <= 0.06 and st["held_out_median"] <= 0.06
     assert st["volume_median"] <= 0.12
+    assert st["all_worst"] <= 0.33
     assert all(r.feasible for r in harness.rows)
     for cls in CLASSES:  # every class is sized within 10 % in the median
         e = [abs(r.length_error) for r in harness.rows
              if r.system.aerostat_class == cls and r.length_error is not None]
         assert np.median(e) <= 0.10, cls
+    for r in harness.rows:  # every other system within the issue's 15 %
+        if r.system.name not in OUTLIERS and r.length_error is not None:
+            assert abs(r.length_error) <= 0.15, r.system.name
+    for name in OUTLIERS:  # each outlier carries its readings and why it is off
+        assert next(s for s in FIELDED if s.name == name).readings
+
+
+@pytest.mark.xfail(strict=True, reason="issue 23 item 3 worst case not met: AEROS 3200 (-32 %) "
+                   "and TIF-1600 (+29 %), docs/validation.md §7")
+def test_no_system_is_worse_than_15_percent(harness) -> None:
+    assert harness.statistics()["all_worst"] <= 0.15
+
+
+def test_a_published_shape_is_flown(harness) -> None:
+    """Where the vendor publishes length and diameter, the hull is sized at that l/d, so the
+    length error is the volume error seen through the published shape."""
+    shaped = [r for r in harness.rows if r.system.diameter and r.system.length]
+    assert {r.system.name for r in shaped} == {"Raven TIF-1600", "Top Vision T.A.S",
+                                                "Raven TIF-25K"}
+    for r in shaped:
+        assert r.length / r.diameter == pytest.approx(r.system.length / r.system.diameter,
+                                                      rel=1e-6)
+        assert r.length_error == pytest.approx(r.diameter_error, abs=1e-9)
+
+
+def test_each_system_flies_its_published_or_class_wind_and_endurance() -> None:
+    """Thesis §2.3: tactical 20 m/s and 5 days, operational 26 m/s and 7 days, strategic the
+    rule set's operating wind, 36 m/s survival and 30 days; a published figure overrides."""
+    for s in FIELDED:
+        req, _ = fielded_case(s)
+        cls = s.aerostat_class
+        assert req.design_wind == {"tactical": 20.0, "operational": 26.0}.get(cls)
+        days = s.endurance_days if s.endurance_days is not None else \
+            CLASSES[cls]["endurance_days"][0]
+        assert req.endurance_days == days
+        if s.endurance_days is not None:  # a published endurance names its source
+            assert "aloft" in s.source or "operational for" in s.source, s.name
+    s = replace(FIELDED[0], design_wind=12.0)
+    assert fielded_case(s)[0].design_wind == 12.0
 
 
 def test_the_systems_law_is_the_grid_minimum_of_the_declared_fit() -> None:
@@ -68,6 +116,11 @@ def test_the_systems_law_is_the_grid_minimum_of_the_declared_fit() -> None:
 def test_fit_and_held_out_are_reported_apart(harness) -> None:
     st = harness.statistics()
     assert st["fit_median"] is not None and st["held_out_median"] is not None
+    # volume apart too: the held-out volumes (74K, 420K, 74M) are predictions within 12 % in
+    # the median; the fit set's two (TIF-1600 +158 %, TIF-25K -2 %) are reported, not hidden
+    assert st["volume_held_out_median"] <= 0.12
+    assert st["volume_fit_median"] == pytest.approx(
+        np.median([abs(r.volume_error) for r in harness.fitted() if r.volume_error is not None]))
     assert {r.system.name for r in harness.held_out()} == {
         s.name for s in FIELDED if not s.fit}
     for row in harness.table():
