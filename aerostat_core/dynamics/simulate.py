@@ -381,7 +381,10 @@ def integrate(data, y0: np.ndarray, out_t: np.ndarray, duration: float, opt: Sol
             status = 9
             break
         o[O_MAXSTEPS] = min(chunk, remaining)
-        t_stop = min(duration, fs[F_T] + t_chunk)
+        # Stops on a fixed grid of t_chunk: a call cut short by its step budget (which follows
+        # the wall clock) resumes towards the same stop, so the step sequence, and the result,
+        # do not depend on the machine's speed or load.
+        t_stop = min(duration, (np.floor(fs[F_T] / t_chunk + 1e-9) + 1.0) * t_chunk)
         steps0 = int(stats[S_STEPS])
         tc = time.perf_counter()
         code = integrate_chunk(fs, y, f, t_stop, data, o, atol, stops, out_t, out_y, out_d,

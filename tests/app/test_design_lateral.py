@@ -27,6 +27,8 @@ def test_performance_tab_shows_the_lateral_derivatives_beside_c_m(at):
     for raw in ("None", "nan", "inf"):
         assert raw not in text
     # the row of the constraint table, checked over the sweep to the survival wind
+    at.session_state["design_constraints"] = True  # the table is drawn once its section opens
+    at.run()
     rows = shown_table(at, "Constraint")
     lat = rows[rows["Constraint"].str.startswith("Lateral stability")]
     assert list(lat["Constraint"]) == ["Lateral stability, at 2-20 m/s"]
@@ -34,6 +36,8 @@ def test_performance_tab_shows_the_lateral_derivatives_beside_c_m(at):
 
 
 def test_thesis_rule_set_leaves_the_row_out(thesis_at):
+    thesis_at.session_state["design_constraints"] = True
+    thesis_at.run()
     rows = shown_table(thesis_at, "Constraint")
     assert not rows["Constraint"].str.startswith("Lateral stability").any()
     show_tab(thesis_at, "Performance")
