@@ -190,16 +190,22 @@ def march(
     rho = np.asarray(air_density, float)
     kn = 0.5 * rho * spec.diameter * spec.normal_drag_coefficient
     kt = 0.5 * rho * np.pi * spec.diameter * spec.tangential_drag_coefficient
-    u = np.broadcast_to(wind(heights), full).reshape(segments + 1, n)
+    u = wind(heights)
     out = _heun_march()(
-        np.ascontiguousarray(np.broadcast_to(tx0, shape).reshape(n)),
-        np.ascontiguousarray(np.broadcast_to(tz0, shape).reshape(n)),
-        np.ascontiguousarray(u, dtype=float),
-        np.ascontiguousarray(np.broadcast_to(kn, shape).reshape(n), dtype=float),
-        np.ascontiguousarray(np.broadcast_to(kt, shape).reshape(n), dtype=float),
+        _flat(tx0, shape, n), _flat(tz0, shape, n), _flat(u, full, (segments + 1, n)),
+        _flat(kn, shape, n), _flat(kt, shape, n),
         float(weight_per_length), float(1.0 / spec.axial_stiffness), float(length / segments),
     )
-    return tuple(a.reshape(full) for a in out)
+    return out[0].reshape(full), out[1].reshape(full), out[2].reshape(full), out[3].reshape(full)
+
+
+def _flat(a, shape, flat):
+    """``a`` broadcast to ``shape`` as a C-contiguous float64 array of shape ``flat`` (the
+    kernel's argument types; no copy when it already is one)."""
+    a = np.asarray(a, float)
+    if a.shape != shape or not a.flags.c_contiguous:
+        a = np.ascontiguousarray(np.broadcast_to(a, shape))
+    return a.reshape(flat)
 
 
 def _heun_march():
