@@ -178,40 +178,51 @@ def _grid_triangles(n_rows: int, n_cols: int) -> tuple[list[int], list[int], lis
     )
 
 
+#: ``st.plotly_chart`` config of a WebGL (3-D) figure: plotly.js draws a 3-D scene at twice the
+#: screen resolution by default, four times the pixels; in software WebGL (no GPU) that cost a
+#: third of the 3-D view's time (benchmarks/bench_app.py, CPU time of chromium's GPU process).
+GL_CONFIG = {"plotGlPixelRatio": 1}
+
+
 def hull_3d_figure(rep: DesignReport) -> go.Figure:
     """Interactive 3-D view: NPL hull (surface of revolution), fins, CB/CG/confluence point.
 
     Three WebGL traces only: the hull and the fins are one mesh (face colours), the three points
-    one marker trace, the confluence lines one line trace. In a browser without a GPU (software
-    WebGL, SwiftShader) the time goes into setting up each trace, not into the vertices
-    (benchmarks/bench_app.py: a 16x coarser surface saved little; 9 traces -> 3 about halved it).
+    one marker trace, the confluence lines one line trace. In a browser without a GPU (software WebGL, SwiftShader) the time goes into setting up each
+    trace and into rasterising the canvas, not into the vertices (benchmarks/bench_app.py: a 16x
+    coarser surface saved little; 9 traces -> 3 about halved it; draw it with
+    :data:`GL_CONFIG`). The mesh is sent as typed arrays (half the bytes of JSON lists).
     """
     h = rep.hull
     x, y, z = (np.asarray(a, float) for a in hull_surface(h.a1, h.a2, h.b, shape=rep.shape))
     n_rows, n_cols = x.shape
-    vx, vy, vz = x.ravel().tolist(), y.ravel().tolist(), z.ravel().tolist()
-    ii, jj, kk = _grid_triangles(n_rows, n_cols)
-    colours = ["#a9bfdc"] * len(ii)
+    vx, vy, vz = [x.ravel()], [y.ravel()], [z.ravel()]
+    ii, jj, kk = (np.asarray(a) for a in _grid_triangles(n_rows, n_cols))
+    fi, fj, fk = [ii], [jj], [kk]
+    o = x.size
     for outline in rep.fins.outlines:
-        p = np.asarray(outline)[:4]
-        o = len(vx)
-        vx += _l(p[:, 0])
-        vy += _l(p[:, 1])
-        vz += _l(p[:, 2])
-        ii += [o, o]
-        jj += [o + 1, o + 2]
-        kk += [o + 2, o + 3]
-        colours += ["#e69f00", "#e69f00"]
+        p = np.asarray(outline, float)[:4]
+        vx.append(p[:, 0])
+        vy.append(p[:, 1])
+        vz.append(p[:, 2])
+        fi.append(np.array([o, o]))
+        fj.append(np.array([o + 1, o + 2]))
+        fk.append(np.array([o + 2, o + 3]))
+        o += 4
+    n_fin = 2 * len(rep.fins.outlines)
+    index = np.uint16 if o < 2**16 else np.uint32
     traces: list[dict] = [
         dict(
             type="mesh3d",
-            x=vx,
-            y=vy,
-            z=vz,
-            i=ii,
-            j=jj,
-            k=kk,
-            facecolor=colours,
+            # numpy arrays go to the browser as typed arrays (base64), not as JSON lists: the
+            # message is half the size; float32 is finer than 0.1 mm on a 100 m hull
+            x=np.concatenate(vx).astype(np.float32),
+            y=np.concatenate(vy).astype(np.float32),
+            z=np.concatenate(vz).astype(np.float32),
+            i=np.concatenate(fi).astype(index),
+            j=np.concatenate(fj).astype(index),
+            k=np.concatenate(fk).astype(index),
+            facecolor=["#a9bfdc"] * ii.size + ["#e69f00"] * n_fin,
             name="hull (blue) and fins (orange)",
             showlegend=True,
             hoverinfo="skip",

@@ -30,8 +30,10 @@ def bundle_urls() -> tuple[str, ...]:
 
 
 def warm_bundles() -> None:
-    """Place at the end of the first page: once the browser is idle after drawing it, import
-    the chart and grid bundles (at most once per browser tab)."""
+    """Place at the end of the first page: once its first result is drawn and the browser is
+    idle, import the chart and grid bundles (at most once per browser tab; after 20 s at the
+    latest, for a page that shows no result). ``window.__aerostatWarmed`` is true once they
+    are loaded (benchmarks/bench_app.py reads it)."""
     urls = bundle_urls()
     if not urls:
         return
@@ -41,11 +43,20 @@ def warm_bundles() -> None:
         f"const urls = {json.dumps(list(urls))};"
         # one after the other (the chart bundle first): two at once made both late
         "const go = () => urls.reduce((p, u) => p.then(() => import("
-        "new URL(u, document.baseURI).href)).catch(() => {}), Promise.resolve());"
-        # a second after the first result (not during the first click on Update design),
-        # then when idle
-        "setTimeout(() => (window.requestIdleCallback || ((f) => setTimeout(f, 0)))"
-        "(go, {timeout: 300}), 800);"
+        "new URL(u, document.baseURI).href)).catch(() => {}), Promise.resolve())"
+        ".then(() => { window.__aerostatWarmed = true; });"
+        # Only once the first result is on screen and the script has finished: this element
+        # is drawn before the browser has loaded the code of the elements above it, and the
+        # chart bundle's 4.7 MB evaluated then held the first result back (by seconds on 2
+        # busy cores); then when the browser is idle.
+        "const ready = () => document.querySelector('[data-testid=\"stMetric\"]') && "
+        "document.querySelector('[data-test-script-state=\"notRunning\"]') && "
+        "!document.querySelector('[data-testid=\"stSkeleton\"]');"
+        "const idle = window.requestIdleCallback || ((f) => setTimeout(f, 0));"
+        "const t0 = Date.now();"
+        "const wait = () => (ready() || Date.now() - t0 > 20000) "
+        "? setTimeout(() => idle(go, {timeout: 2000}), 500) : setTimeout(wait, 200);"
+        "wait();"
         "})();</script>"
     )
     st.html(script, unsafe_allow_javascript=True)

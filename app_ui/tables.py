@@ -115,20 +115,32 @@ _SHOWN_UNIT = {formats.unit(u): u for u in ("m3", "m2")}
 
 def geometry_styler(df: pd.DataFrame) -> Styler:
     """The geometry table with each value at the decimals of its kind (counts as integers,
-    "4" not "4.000"; the hull volume as the headline metric; lengths as the metrics)."""
-    rows: dict[str, list] = {}  # kind -> row labels: one format call per kind, not per row
-    for i, q, u in zip(df.index, df["Quantity"], df["Unit"]):
-        rows.setdefault(formats.kind_of_unit(_SHOWN_UNIT.get(str(u), str(u)), str(q)), []).append(i)
-    styler = df.style.set_table_styles(WRAP)
+    "4" not "4.000"; the hull volume as the headline metric; lengths as the metrics), and the
+    unit of the chosen system (ft for m, ...) next to the converted value."""
+    kinds = [
+        formats.kind_of_unit(_SHOWN_UNIT.get(str(u), str(u)), str(q))
+        for q, u in zip(df["Quantity"], df["Unit"])
+    ]
+    units = [
+        formats.cell_unit(formats.unit_of(k)) if formats.KINDS[k].si else u
+        for k, u in zip(kinds, df["Unit"])
+    ]
+    styler = df.assign(Unit=units).style.set_table_styles(WRAP)
+    fmts = {k: formats.shown_formatter(k) for k in set(kinds)}
+    funcs = getattr(styler, "_display_funcs", None)
+    if isinstance(funcs, dict):
+        # One formatter per cell, set where pandas keeps them: a ``format(subset=...)`` call
+        # per kind of row cost ~25 ms of every rerun of the Design page (a .loc lookup each),
+        # more than the rest of the geometry tab; the table renders the same.
+        col = df.columns.get_loc("Value")
+        for row, kind in enumerate(kinds):
+            funcs[(row, col)] = fmts[kind]
+        return styler
+    rows: dict[str, list] = {}  # kind -> row labels (a pandas without that attribute)
+    for i, kind in zip(df.index, kinds):
+        rows.setdefault(kind, []).append(i)
     for kind, idx in rows.items():
-        styler = styler.format(formats.shown_formatter(kind), subset=pd.IndexSlice[idx, ["Value"]])
-        # the unit of the chosen system (ft for m, ...) next to the converted value
-        styler = styler.format(
-            lambda u, kind=kind: (
-                formats.cell_unit(formats.unit_of(kind)) if formats.KINDS[kind].si else u
-            ),
-            subset=pd.IndexSlice[idx, ["Unit"]],
-        )
+        styler = styler.format(fmts[kind], subset=pd.IndexSlice[idx, ["Value"]])
     return styler
 
 

@@ -172,6 +172,7 @@ def sixdof_bench(args) -> None:
           f"{res.stats['steps']} steps, {res.message}; roll peak "
           f"{np.max(np.abs(res.signal('roll'))):.2f} deg, lateral peak "
           f"{np.max(np.abs(res.signal('y_C'))):.2f} m")
+    lateral_row_bench(args)
     if args.no_moordyn or not moordyn_available():
         return
     top0 = (0.0, 0.0, 319.5)
@@ -191,6 +192,29 @@ def sixdof_bench(args) -> None:
           f"MoorDyn {md['wall_time']:.2f} s wall ({md_cpu:.2f} s CPU), 6-DOF {t:.3f} s wall "
           f"({CPU['last']:.3f} s CPU): {md_cpu / CPU['last']:.1f}x (CPU); max position "
           f"difference {err * 1e3:.2f} mm")
+
+
+def lateral_row_bench(args) -> None:
+    """Issue 25 item 3: the cost of the constraint row "laterally stable up to the survival
+    wind" for the default practice design (2-20 m/s, 8 segments; the design itself apart), the
+    first call (kernels loaded) and a computed one (not the per-inputs cache)."""
+    from aerostat_core import Requirement, design
+    from aerostat_core.dynamics import lateral_constraint as lc
+
+    d = design(Requirement())
+
+    def fresh():
+        lc.clear_cache()  # the benchmark times the computation, not the cache
+        return lc.lateral_stability(d)
+
+    c0 = time.process_time()
+    fresh()
+    first = time.process_time() - c0
+    t, lat = timed(fresh, args.repeats)
+    print(f"lateral row (6-DOF linearised at 19 wind speeds, 8 segments): first call "
+          f"{first:.2f} s CPU (kernels loaded), then median {t:.3f} s wall, "
+          f"{CPU['last']:.3f} s CPU; cached per frozen inputs: repeat calls cost nothing; "
+          f"unstable above {lat.unstable_above} m/s")
 
 
 def thesis_comparison() -> None:

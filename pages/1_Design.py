@@ -16,6 +16,7 @@ from app_ui import (
     form,
     form_model,
     formats,
+    lateral_view,
     mission_view,
     plots,
     preload,
@@ -71,6 +72,8 @@ TABS = ("Geometry", "3-D view", "Mass", "Performance", "Tether profiles", "Missi
 TAB_KEY = "design_tab"
 #: Session-state key of the Geometry tab's export section (open: True).
 EXPORTS_KEY = "design_exports"
+#: Session-state key of the constraint table's section (open: True).
+CONSTRAINTS_KEY = "design_constraints"
 
 
 def _geometry_tab(rep: DesignReport) -> None:
@@ -163,6 +166,8 @@ def _performance_tab(rep: DesignReport) -> None:
         "C_m is the pitching moment about the confluence point over q V^(2/3) l. The trim "
         "is stable where C_m falls as α rises (negative slope at the green point)."
     )
+    with r3[1]:
+        lateral_view.render(rep)  # the lateral derivatives beside the longitudinal C_m
 
 
 def _tether_tab(rep: DesignReport) -> None:
@@ -314,12 +319,19 @@ def _results_body() -> None:
     # below the headline numbers: the verdict and the key numbers stay above the fold at 1024 px
     st.caption(text.plain(class_caption(rep.inputs["requirement"]["payload_mass"],
                                         rep.inputs["requirement"]["altitude"])))
-    with st.expander(
-        "Constraint table: every limit, its margin and where it is checked", icon=":material/rule:"
-    ):
-        # static, cells that wrap: a data grid here loaded 1 MB of JavaScript before the first
-        # result, and scrolled sideways at 1024 px
-        st.table(constraint_styler(pd.DataFrame(text.constraint_table_rows(rep.constraints))))
+    # Lazy: drawn once opened (a rerun of the results), not on every rerun while closed (its
+    # styled table was a tenth of a rerun's script time and its largest message).
+    constraints = st.expander(
+        "Constraint table: every limit, its margin and where it is checked",
+        icon=":material/rule:",
+        key=CONSTRAINTS_KEY,
+        on_change="rerun",
+    )
+    if constraints.open:
+        with constraints:
+            # static, cells that wrap: a data grid here loaded 1 MB of JavaScript before the
+            # first result, and scrolled sideways at 1024 px
+            st.table(constraint_styler(pd.DataFrame(text.constraint_table_rows(rep.constraints))))
     if not rep.feasible:  # the verdict above says it; the table's reasons in full here
         st.error(
             "**Requirements not met:**\n" + "\n".join(f"- {v}" for v in rep.violations),
@@ -369,6 +381,25 @@ def _results_body() -> None:
             show.feedback(fb[0], fb[1])
         saving.choice_panel()  # a taken name or a case changed elsewhere: asks, never guesses
 
+    _tabs()
+
+
+@st.fragment
+def _tabs() -> None:
+    # A fragment of its own inside the results: a tab switch reruns the open tab alone, not the
+    # verdict, the headline numbers, the constraint table and the case form above it (a third
+    # of the messages and elements of a results rerun). It reads the current inputs itself:
+    # a rerun of this fragment alone must not draw the inputs of an older run.
+    try:
+        _tabs_body()
+    except Exception as exc:  # noqa: BLE001 - never a traceback; a reference id, logged
+        report_unexpected(exc)
+
+
+def _tabs_body() -> None:
+    show.apply_unit_choice()  # a fragment rerun does not run app.py
+    frozen = cache.current_inputs()
+    rep = cache.report_of(*frozen)  # a cache hit: the results above computed it
     # Lazy tabs: only the open tab runs and is sent to the browser (a rerun draws 1-5 charts
     # instead of 10, which keeps "click Update design -> result" well under a second).
     tabs = dict(zip(TABS, st.tabs(TABS, key=TAB_KEY, on_change="rerun", default=TABS[0])))
@@ -378,7 +409,7 @@ def _results_body() -> None:
             _geometry_tab(rep)
     with tabs["3-D view"]:
         if tabs["3-D view"].open:
-            st.plotly_chart(plots.hull_3d_figure(rep), key="hull_3d")
+            st.plotly_chart(plots.hull_3d_figure(rep), key="hull_3d", config=plots.GL_CONFIG)
             st.caption(
                 "Drag to rotate, scroll to zoom. Fins in orange; confluence lines are "
                 "schematic (the engine models only the confluence point)."

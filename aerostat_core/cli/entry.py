@@ -98,6 +98,7 @@ def format_summary(d: Design, verdict=None) -> str:
         f"{s.bending_moment_Nm:.0f} N m (wrinkles at {s.wrinkling_moment_Nm:.0f} N m)",
         f"  gas fill cost     {s.gas_cost_USD:9.0f} USD",
         f"  rules             {s.rules} (sizing set by: {s.binding_constraint})",
+        *_lateral_lines(s.lateral),
         "  mass breakdown:",
     ]
     lines += [f"    {r['item']:<15s}{r['mass_kg']:8.2f} kg" for r in d.mass_rows()]
@@ -107,6 +108,24 @@ def format_summary(d: Design, verdict=None) -> str:
         lines.append("  NOT FEASIBLE:")
         lines += [f"    - {v}" for v in d.violations]
     return "\n".join(lines)
+
+
+def _lateral_lines(lat) -> list[str]:
+    """The lateral-stability lines of the readable summary (none before the 6-DOF check)."""
+    if lat is None:
+        return []
+    if not lat.lateral_stability_checked:
+        head = "not checked by the rule set"
+    elif lat.lateral_unstable_above_m_s is None:
+        head = f"stable up to the survival wind {lat.lateral_checked_up_to_m_s:g} m/s"
+    else:
+        head = f"a lateral mode goes unstable from {lat.lateral_unstable_above_m_s:.1f} m/s"
+    out = [f"  lateral stability {head}"]
+    if lat.C_n_beta_per_rad is not None:
+        out.append(f"    at {lat.lateral_derivatives_wind_m_s:g} m/s: C_Y_beta "
+                   f"{lat.C_Y_beta_per_rad:+.3f}, C_n_beta {lat.C_n_beta_per_rad:+.3f}, C_l_beta "
+                   f"{lat.C_l_beta_per_rad:+.3f} /rad")
+    return out
 
 
 class ArgumentParser(argparse.ArgumentParser):

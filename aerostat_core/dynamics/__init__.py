@@ -55,7 +55,8 @@ _EXPORTS = {
     "Events6": "sixdof", "Hull6": "sixdof", "System6": "sixdof", "Wind3D": "sixdof",
     "simulate6": "sixdof", "system6_from_design": "sixdof", "Result6": "sixdof_results",
     "lateral_modes": "lateral", "lateral_sweep": "lateral",
-    "static_lateral_derivatives": "lateral", "Request6": "scenarios6", "run6": "scenarios6",
+    "static_lateral_derivatives": "lateral", "assess_lateral": "lateral_constraint",
+    "lateral_stability": "lateral_constraint", "Request6": "scenarios6", "run6": "scenarios6",
 }
 
 

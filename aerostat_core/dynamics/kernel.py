@@ -47,6 +47,9 @@ from numba import njit
 from aerostat_core.dynamics.sixdof_kernel import check6_kernel, rhs6_kernel
 
 from .layout import (
+    DIAG_NAMES,
+    N_STATIONS,
+    ND,
     P_AERO_AX,
     P_AERO_CF,
     P_AERO_FIN,
@@ -92,37 +95,10 @@ from .layout import (
     T_FIN_L,
     T_M_INV,
     T_N_INV,
+    table_lookup,
 )
 from .tether import air_density, tether_loads
 from .wind import NT, W_GUST_CONV, W_GUST_ON, W_TURB_ON, wind_point, wind_time_terms
-
-#: Diagnostic outputs written by the right-hand side.
-DIAG_NAMES = (
-    "alpha",  # angle of attack at O [rad] (point: 0)
-    "airspeed",  # relative airspeed at O [m/s]
-    "wind_x",  # wind at O (or the point) [m/s]
-    "wind_z",
-    "tension_top_x",  # force the body exerts on the tether at its top (C) [N]
-    "tension_top_z",
-    "tension_winch_x",  # force the tether exerts on the winch [N]
-    "tension_winch_z",
-    "tension_max",  # largest segment tension [N]
-    "x_top",  # confluence point (or point aerostat) position [m]
-    "z_top",
-    "vx_top",  # its velocity [m/s]
-    "vz_top",
-    "vx_body",  # velocity of O (hull) or of the point [m/s]
-    "vz_body",
-    "alpha_fin",  # local angle of attack at the fins [rad]
-    "fin_lift",  # fin lift [N]
-    "aero_moment",  # aerodynamic pitching moment about O, nose-up [N m]
-    "tension_min",  # smallest segment tension [N] (0: a slack segment)
-    "wind_accel_x",  # fluid acceleration DU_x/Dt at O [m/s2]
-    "tension_min_segment",  # segment with the smallest tension, 1 = at the winch [-]
-)
-ND = len(DIAG_NAMES)
-#: Stations along the hull where the cross-flow strips sample a spatially varying wind [-].
-N_STATIONS = 6
 
 
 @njit(cache=True)
@@ -157,20 +133,6 @@ def nodes_kernel(y, prm, pos, vel):  # pragma: no cover - numba
         wb = y[b + 4] - y[b + 5] * xc
         vel[n, 0] = -c * ub - s * wb
         vel[n, 1] = s * ub - c * wb
-
-
-@njit(cache=True)
-def table_lookup(tab, row, x, x0, dx):  # pragma: no cover - numba
-    """Linear interpolation in row ``row`` of a uniform table (clamped at the ends)."""
-    m = tab.shape[1]
-    s = (x - x0) / dx
-    if s <= 0.0:
-        return tab[row, 0]
-    if s >= m - 1:
-        return tab[row, m - 1]
-    k = int(s)
-    f = s - k
-    return tab[row, k] * (1.0 - f) + tab[row, k + 1] * f
 
 
 @njit(cache=True)
@@ -443,3 +405,8 @@ def check_kernel(t, y, data, diag):  # pragma: no cover - numba
     elif y[b + 1] < 0.0:
         return 5
     return 0
+
+
+#: The kernels, and the diagnostics they write (defined once in :mod:`.layout`, shared with the
+#: 6-DOF kernel; re-exported here, where the 3-DOF code has always read them).
+__all__ = ["DIAG_NAMES", "ND", "check_kernel", "nodes_kernel", "rhs_kernel"]

@@ -132,19 +132,21 @@ def lateral_modes(system: System6, speed: float, design=None) -> LateralAnalysis
     return LateralAnalysis(float(speed), tuple(modes), float(np.max(lam.real)), y)
 
 
-def lateral_sweep(design, speeds=None, segments: int = 8):
+def lateral_sweep(design, speeds=None, segments: int = 8, system: System6 | None = None):
     """Lateral stability over wind speeds (default 2 m/s to the survival wind in 1 m/s steps).
 
     Returns (analyses, unstable_above [m/s] or None): the speed where the largest real part of
     the lateral eigenvalues crosses zero (linear interpolation between the bracketing speeds),
     None when every lateral mode is stable up to the survival wind. A speed without an
-    equilibrium (a line too slack to converge) is left out of ``analyses``."""
+    equilibrium (a line too slack to converge) is left out of ``analyses``. ``system``: the
+    design's 6-DOF system when already built (``segments`` is then its own)."""
     if speeds is None:
         top = float(design.requirement.survival_wind)
         speeds = np.arange(2.0, top + 1e-9, 1.0)
         if speeds[-1] < top:
             speeds = np.append(speeds, top)
-    system = system6_from_design(design, segments=segments)
+    if system is None:
+        system = system6_from_design(design, segments=segments)
     out = []
     for v in speeds:
         try:

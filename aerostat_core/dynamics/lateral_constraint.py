@@ -1,47 +1,96 @@
-"""The constraint row "laterally stable up to the survival wind" (docs/dynamics.md §7.5).
+"""The constraint row "laterally stable up to the survival wind" (docs/dynamics.md §7.5): the
+6-DOF lateral-stability result of a sized design, which fills its row of the one constraint
+table (:mod:`aerostat_core.model.constraints`, row ``lateral_stability``).
 
-A minimal hook beside the static constraint table (``aerostat_core.model.constraints``): the row
-needs a 6-DOF linearisation per design (about a second per wind speed), so it is evaluated for a
-finished design, not inside the optimiser's vectorised table. :data:`LATERAL_ROW_RULES` says in
-which rule sets it is on (off in the thesis preset, whose survival wind is none); the integrator
-may move that flag into the rule sets.
+The row needs the 6-DOF model linearised at each wind speed of the sweep (about 0.2 s of CPU
+for a design once the compiled kernels are loaded), so the static engine's vectorised table,
+which sizing and the optimiser evaluate thousands of times, leaves it "not evaluated", and
+:func:`assess_lateral` fills it for the finished design. The CLI, the report and the app show
+assessed designs. Whether the row is checked is the rule set's
+(``RuleSet.check_lateral_stability``: on in the practice rules, off in the thesis rules); the
+static lateral derivatives at the design wind are given for every rule set.
 """
 
 from __future__ import annotations
 
-#: Rule sets in which the row is checked.
-LATERAL_ROW_RULES = {"practice": True, "thesis": False}
-#: The row's name, label, unit and meaning (the static table's vocabulary).
-NAME = "lateral_stability"
-LABEL = "Lateral stability"
-UNIT = "m/s"
-TEXT = "laterally stable up to the survival wind (every lateral-directional mode decays)"
+from collections import OrderedDict
+from threading import Lock
+
+from aerostat_core.dynamics.lateral import lateral_modes, lateral_sweep, static_lateral_derivatives
+from aerostat_core.dynamics.sixdof import system6_from_design
+from aerostat_core.model.constraints import LateralStability, lateral_applies
+
+#: Results kept per frozen inputs (requirement, configuration, volume) in a process.
+CACHE_SIZE = 64
+_cache: OrderedDict = OrderedDict()
+_lock = Lock()
 
 
-def lateral_row_enabled(requirement) -> bool:
-    """True when the requirement's rule set checks the row and names a survival wind."""
-    return bool(LATERAL_ROW_RULES.get(getattr(requirement, "rules", ""), False)
-                and getattr(requirement, "survival_wind", None))
+def _key(d) -> str:
+    # the exact repr of the frozen inputs and the volume (the app's cache key, docs/architecture.md §2.2)
+    return repr((d.requirement, d.configuration, float(d.volume)))
 
 
-def lateral_constraint_row(design, analyses=None, unstable_above=None) -> dict | None:
-    """The row for a design, in the format of ``ConstraintState.rows()`` (constraint, label,
-    checked_at, value, limit, margin, unit, met, g), or None when the rule set does not check it.
+def lateral_stability(d) -> LateralStability:
+    """The lateral-directional stability of design ``d`` (docs/dynamics.md §7.5).
 
-    value: the wind speed where the first lateral mode goes unstable, or the survival wind when
-    every lateral mode is stable up to it; limit: the survival wind; g = 1 - value/limit (<= 0
-    met). ``analyses``/``unstable_above`` reuse a :func:`~.lateral.lateral_sweep`."""
-    req = design.requirement
-    if not lateral_row_enabled(req):
-        return None
+    When the rule set checks the row: the 6-DOF model linearised at 2 m/s to the survival wind
+    in 1 m/s steps (:func:`aerostat_core.dynamics.lateral.lateral_sweep`, 8 segments), the wind
+    speed at which the first lateral mode goes unstable, and the static lateral derivatives at
+    the design wind (:func:`~aerostat_core.dynamics.lateral.static_lateral_derivatives`) from
+    the sweep's equilibrium there. Otherwise only the derivatives. A hull that sinks has no
+    equilibrium in the wind: no numbers, and a note that says so. Results are cached per frozen
+    inputs."""
+    key = _key(d)
+    with _lock:
+        if key in _cache:
+            _cache.move_to_end(key)
+            return _cache[key]
+    out = _compute(d)
+    with _lock:
+        _cache[key] = out
+        while len(_cache) > CACHE_SIZE:
+            _cache.popitem(last=False)
+    return out
+
+
+def _compute(d) -> LateralStability:
+    req = d.requirement
+    checked = lateral_applies(req)
     vs = float(req.survival_wind)
-    if analyses is None:
-        from aerostat_core.dynamics.lateral import lateral_sweep
+    vd = float(req.design_wind)
+    if d.sinks or vd <= 0:
+        why = ("the hull cannot lift its weight: no equilibrium in the wind" if d.sinks
+               else "no design wind: no equilibrium in a wind to linearise about")
+        return LateralStability(checked, None, vs, None, None, None, None, None, note=why)
+    system = system6_from_design(d, segments=8)
+    above = None
+    state = None
+    try:
+        if checked:
+            analyses, above = lateral_sweep(d, system=system)
+            state = next((a.state for a in analyses if a.speed == vd), None)
+        if state is None:
+            state = lateral_modes(system, vd, d).state
+        der = static_lateral_derivatives(system, vd, d, state=state)
+    except RuntimeError as exc:  # no equilibrium found: say so rather than guess
+        return LateralStability(checked, above, vs, None, None, None, None, None,
+                                note=f"no 6-DOF equilibrium: {exc}")
+    return LateralStability(
+        checked=checked, unstable_above=above, top_speed=vs, derivative_speed=vd,
+        C_Y_beta=der["C_Y_beta_per_rad"], C_n_beta=der["C_n_beta_per_rad"],
+        C_l_beta=der["C_l_beta_per_rad"], C_n_beta_confluence=der["C_n_beta_confluence_per_rad"])
 
-        analyses, unstable_above = lateral_sweep(design)
-    value = vs if unstable_above is None else min(float(unstable_above), vs)
-    g = 1.0 - value / vs
-    met = unstable_above is None or unstable_above >= vs
-    return {"constraint": NAME, "label": LABEL, "checked_at": f"2-{vs:g} m/s", "value": value,
-            "limit": vs, "margin": value - vs, "unit": UNIT, "met": bool(met),
-            "g": float(0.0 if met else max(g, 1e-9)), "text": TEXT}
+
+def clear_cache() -> None:
+    """Forget the cached results (a benchmark times the computation itself)."""
+    with _lock:
+        _cache.clear()
+
+
+def assess_lateral(d):
+    """Design ``d`` with its ``lateral_stability`` row filled (:meth:`Design.with_lateral` of
+    :func:`lateral_stability`); a design already assessed is returned as it is."""
+    if d.constraints.lateral is not None:
+        return d
+    return d.with_lateral(lateral_stability(d))

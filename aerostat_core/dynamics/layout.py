@@ -1,8 +1,12 @@
 """Index layout of the flat parameter vector ``prm`` shared by the numba kernels.
 
 Module-level integers are compile-time constants for numba. Keep this file in sync with
-:class:`aerostat_core.dynamics.system.DynamicSystem` (which fills ``prm``).
+:class:`aerostat_core.dynamics.system.DynamicSystem` (which fills ``prm``). The diagnostics both
+kernels write (:data:`DIAG_NAMES`), the hull's wind stations and the reader of the aerodynamic
+tables (:func:`table_lookup`) are here too, once for the 3- and the 6-DOF kernels.
 """
+
+from numba import njit
 
 # --- general ---------------------------------------------------------------------------------
 P_MODE = 0  # 0 = point aerostat, 1 = rigid hull (3 DOF), 2 = 6-DOF hull (:mod:`.sixdof_kernel`)
@@ -68,3 +72,46 @@ T_A_AX = 3  # axial drag / (q * C_DV ratio) [m2]
 T_FIN_L = 4  # fin lift / q [m2]
 T_FIN_D = 5  # fin drag / q [m2]
 T_ROWS = 6
+
+#: Diagnostic outputs of the 3-DOF right-hand side (the 6-DOF kernel writes them first, with the
+#: same meanings, then its own: :data:`.sixdof_kernel.DIAG6_NAMES`).
+DIAG_NAMES = (
+    "alpha",  # angle of attack at O [rad] (point: 0)
+    "airspeed",  # relative airspeed at O [m/s]
+    "wind_x",  # wind at O (or the point) [m/s]
+    "wind_z",
+    "tension_top_x",  # force the body exerts on the tether at its top (C) [N]
+    "tension_top_z",
+    "tension_winch_x",  # force the tether exerts on the winch [N]
+    "tension_winch_z",
+    "tension_max",  # largest segment tension [N]
+    "x_top",  # confluence point (or point aerostat) position [m]
+    "z_top",
+    "vx_top",  # its velocity [m/s]
+    "vz_top",
+    "vx_body",  # velocity of O (hull) or of the point [m/s]
+    "vz_body",
+    "alpha_fin",  # local angle of attack at the fins [rad]
+    "fin_lift",  # fin lift [N]
+    "aero_moment",  # aerodynamic pitching moment about O, nose-up [N m]
+    "tension_min",  # smallest segment tension [N] (0: a slack segment)
+    "wind_accel_x",  # fluid acceleration DU_x/Dt at O [m/s2]
+    "tension_min_segment",  # segment with the smallest tension, 1 = at the winch [-]
+)
+ND = len(DIAG_NAMES)
+#: Stations along the hull where the cross-flow strips sample a spatially varying wind [-].
+N_STATIONS = 6
+
+
+@njit(cache=True)
+def table_lookup(tab, row, x, x0, dx):  # pragma: no cover - numba
+    """Linear interpolation in row ``row`` of a uniform table (clamped at the ends)."""
+    m = tab.shape[1]
+    s = (x - x0) / dx
+    if s <= 0.0:
+        return tab[row, 0]
+    if s >= m - 1:
+        return tab[row, m - 1]
+    k = int(s)
+    f = s - k
+    return tab[row, k] * (1.0 - f) + tab[row, k + 1] * f

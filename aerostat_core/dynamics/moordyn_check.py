@@ -35,21 +35,21 @@ def moordyn_available() -> bool:
     return True
 
 
-def write_case(folder, point: PointAerostat, tether: TetherModel, schedule: SpeedSchedule,
-               profile: MeanProfile, top0, rho: float, g: float, dtm: float,
-               dz: float = 5.0) -> Path:
-    """Write MoorDyn's input file and current table for a point-aerostat case; returns the file.
+#: MoorDyn's ``Currents`` options used here: 1 a steady profile (``current_profile.txt``), 2 a
+#: time table on a height grid (``current_profile_dynamic.txt``).
+CURRENTS = {1: "steady current profile", 2: "dynamic current table"}
 
-    The schedule must use linear ramps (MoorDyn interpolates its current table linearly in time).
-    """
-    if schedule.shape != "linear":
-        raise ValueError("MoorDyn interpolates the current table linearly: use linear ramps")
-    folder = Path(folder)
-    folder.mkdir(parents=True, exist_ok=True)
+
+def input_file(title: str, point: PointAerostat, tether: TetherModel, top, rho: float, g: float,
+               dtm: float, currents: int) -> str:
+    """MoorDyn's input file of a point aerostat on the tether (module docstring): the line from
+    the winch to the point at ``top`` = (x, y, z) above the winch [m], air of density ``rho``
+    [kg/m3] as its water, gravity ``g`` [m/s2], time step ``dtm`` [s] and the wind as the
+    current option ``currents`` (:data:`CURRENTS`). The 2-D and the 3-D cross-checks share it."""
     t = tether
     zeta = -1.0 * t.damping_ratio
-    inp = f"""--------------------- MoorDyn Input File ------------------------------------
-Tethered point aerostat in air (aerostat_core.dynamics cross-check)
+    return f"""--------------------- MoorDyn Input File ------------------------------------
+{title}
 ----------------------- LINE TYPES ------------------------------------------
 TypeName   Diam    Mass/m     EA         BA/-zeta    EI    Cd     Ca     CdAx    CaAx
 (name)     (m)     (kg/m)     (N)        (N-s/-)     (N-m^2) (-)  (-)    (-)     (-)
@@ -58,7 +58,7 @@ tether     {t.diameter:.6g}  {t.linear_density:.6g}  {t.stiffness:.6g}  {zeta:.6
 ID    Type      X       Y       Z       Mass   Volume  CdA    Ca
 (#)   (-)       (m)     (m)     (m)     (kg)   (m^3)   (m^2)  (-)
 1     Fixed     0       0       {-Z_OFFSET:.6f}   0      0       0      0
-2     Free      {top0[0]:.6f}  0   {top0[1] - Z_OFFSET:.6f}  {point.mass:.6g}  {point.volume:.6g}  {point.drag_area:.6g}  {point.added_mass_coefficient:.6g}
+2     Free      {top[0]:.6f}  {top[1]:.6f}   {top[2] - Z_OFFSET:.6f}  {point.mass:.6g}  {point.volume:.6g}  {point.drag_area:.6g}  {point.added_mass_coefficient:.6g}
 -------------------------- LINES -------------------------------------------------
 ID   LineType AttachA  AttachB  UnstrLen  NumSegs  Outputs
 (#)   (name)   (#)      (#)      (m)       (-)      (-)
@@ -71,14 +71,36 @@ ID   LineType AttachA  AttachB  UnstrLen  NumSegs  Outputs
 {Z_OFFSET + 1.0:.1f}    WtrDpth      - depth
 0         kBot         - no seabed
 0         cBot         - no seabed
-2         Currents     - dynamic current table
+{currents}         Currents     - {CURRENTS[currents]}
 1         disableOutTime - quiet
 ------------------------- need this line -------------------------------------
 """
+
+
+def current_heights(length: float, dz: float) -> np.ndarray:
+    """Heights of MoorDyn's current grid above the winch [m]: from 1 m below it to MoorDyn's
+    free surface (``Z_OFFSET`` above it) in steps of ``dz`` [m]; ``length`` is the tether's [m]."""
+    z = np.arange(-1.0, Z_OFFSET + length + dz, dz)
+    return z[z <= Z_OFFSET]
+
+
+def write_case(folder, point: PointAerostat, tether: TetherModel, schedule: SpeedSchedule,
+               profile: MeanProfile, top0, rho: float, g: float, dtm: float,
+               dz: float = 5.0) -> Path:
+    """Write MoorDyn's input file and current table for a point-aerostat case; returns the file.
+
+    The schedule must use linear ramps (MoorDyn interpolates its current table linearly in time).
+    """
+    if schedule.shape != "linear":
+        raise ValueError("MoorDyn interpolates the current table linearly: use linear ramps")
+    folder = Path(folder)
+    folder.mkdir(parents=True, exist_ok=True)
+    t = tether
+    inp = input_file("Tethered point aerostat in air (aerostat_core.dynamics cross-check)", point,
+                     t, (top0[0], 0.0, top0[1]), rho, g, dtm, currents=2)
     path = folder / "aerostat.txt"
     path.write_text(inp)
-    z = np.arange(-1.0, Z_OFFSET + t.length + dz, dz)
-    z = z[z <= Z_OFFSET]
+    z = current_heights(t.length, dz)
     zw = z - Z_OFFSET
     pf = profile.factor(np.maximum(z, 0.0))
     lines = ["--------------------- MoorDyn dynamic currents File ---------------",

@@ -21,7 +21,7 @@ from pathlib import Path
 import numpy as np
 
 from aerostat_core.dynamics.bodies import PointAerostat, ellipsoid_hull
-from aerostat_core.dynamics.moordyn_check import Z_OFFSET
+from aerostat_core.dynamics.moordyn_check import Z_OFFSET, current_heights, input_file
 from aerostat_core.dynamics.sixdof import Hull6, System6, Wind3D
 from aerostat_core.dynamics.system import Atmosphere
 from aerostat_core.dynamics.tether import TetherModel
@@ -77,37 +77,11 @@ def run_point_case3d(point: PointAerostat, tether: TetherModel, speed: float,
     t = tether
     with tempfile.TemporaryDirectory() as tmp:
         base = Path(tmp)
-        inp = f"""--------------------- MoorDyn Input File ------------------------------------
-Tethered point aerostat in a veering wind (aerostat_core.dynamics 6-DOF cross-check)
------------------------ LINE TYPES ------------------------------------------
-TypeName   Diam    Mass/m     EA         BA/-zeta    EI    Cd     Ca     CdAx    CaAx
-(name)     (m)     (kg/m)     (N)        (N-s/-)     (N-m^2) (-)  (-)    (-)     (-)
-tether     {t.diameter:.6g}  {t.linear_density:.6g}  {t.stiffness:.6g}  {-t.damping_ratio:.6g}  0  {t.normal_drag_coefficient:.6g}  1.0  {t.tangential_drag_coefficient:.6g}  0.0
----------------------- POINTS --------------------------------
-ID    Type      X       Y       Z       Mass   Volume  CdA    Ca
-(#)   (-)       (m)     (m)     (m)     (kg)   (m^3)   (m^2)  (-)
-1     Fixed     0       0       {-Z_OFFSET:.6f}   0      0       0      0
-2     Free      {top0[0]:.6f}  {top0[1]:.6f}   {top0[2] - Z_OFFSET:.6f}  {point.mass:.6g}  {point.volume:.6g}  {point.drag_area:.6g}  {point.added_mass_coefficient:.6g}
--------------------------- LINES -------------------------------------------------
-ID   LineType AttachA  AttachB  UnstrLen  NumSegs  Outputs
-(#)   (name)   (#)      (#)      (m)       (-)      (-)
-1     tether   1        2        {t.length:.6f}  {t.segments}    -
--------------------------- OPTIONS -----------------------------------------------
-0         writeLog     - no log file
-{dtm:.6g}    dtM          - time step
-{rho:.6g}     rho          - fluid density
-{g:.6g}      g            - gravity
-{Z_OFFSET + 1.0:.1f}    WtrDpth      - depth
-0         kBot         - no seabed
-0         cBot         - no seabed
-1         Currents     - steady current profile
-1         disableOutTime - quiet
-------------------------- need this line -------------------------------------
-"""
+        inp = input_file("Tethered point aerostat in a veering wind (aerostat_core.dynamics 6-DOF "
+                         "cross-check)", point, t, top0, rho, g, dtm, currents=1)
         path = base / "aerostat.txt"
         path.write_text(inp)
-        z = np.arange(-1.0, Z_OFFSET + t.length + dz, dz)
-        z = z[z <= Z_OFFSET]
+        z = current_heights(t.length, dz)
         h = np.maximum(z, 0.0)
         chi = np.radians(veer_deg_per_100m) / 100.0 * h
         rows = [f"{zi - Z_OFFSET:.4f} {speed * math.cos(c):.8f} {speed * math.sin(c):.8f} 0.0"

@@ -92,6 +92,22 @@ def signal_stats(x: np.ndarray) -> SignalStats:
                        float(np.max(x)), float(np.max(np.abs(x - m))), float(x[0]), float(x[-1]))
 
 
+def motion_figures(pitch_deg, vx, vz, tension) -> dict:
+    """The response figures of a run's window, one definition for the 3- and 6-DOF summaries:
+    pitch range and peak deviation from its mean [deg], hull velocity peaks about their means
+    u_peak_mps, w_peak_mps [m/s], the RMS of pitch and velocities, and the range of the tension
+    at the confluence point [N]. Arguments: the signals over the window (arrays of one length)."""
+    th, vx, vz, ten = (np.asarray(a, float) for a in (pitch_deg, vx, vz, tension))
+    return {"pitch_range_deg": [float(th.min()), float(th.max())],
+            "pitch_peak_deg": float(np.max(np.abs(th - th.mean()))),
+            "u_peak_mps": float(np.max(np.abs(vx - vx.mean()))),
+            "w_peak_mps": float(np.max(np.abs(vz - vz.mean()))),
+            "pitch_rms_deg": float(np.std(th)),
+            "u_rms_mps": float(np.std(vx)),
+            "w_rms_mps": float(np.std(vz)),
+            "tension_range_N": [float(ten.min()), float(ten.max())]}
+
+
 def response_metrics(t, x, t_event: float, fraction: float = 0.05, final: float | None = None,
                      min_band: float = 0.0) -> ResponseMetrics:
     """Settling time and overshoot of ``x(t)`` after ``t_event`` [s].

@@ -17,7 +17,7 @@ import numpy as np
 from aerostat_core.base.fields import choice, integer, number
 from aerostat_core.dynamics.options import SolverOptions
 from aerostat_core.dynamics.request import RunRequest
-from aerostat_core.dynamics.results import response_metrics
+from aerostat_core.dynamics.results import motion_figures, response_metrics
 from aerostat_core.dynamics.sixdof import Events6, Wind3D, simulate6, system6_from_design
 from aerostat_core.dynamics.turbulence import DRYDEN_W20
 from aerostat_core.dynamics.wind import DrydenTurbulence, SpeedSchedule, WindScenario
@@ -133,18 +133,7 @@ def metrics6(res, dyn: Request6, design, lateral: bool = True) -> dict:
     if dyn.scenario not in ("turbulence-3d", "tether-break") and t[-1] > dyn.event_time + 5.0:
         settle = response_metrics(t, res.signal("x_C"), dyn.event_time, 0.05).settling_time
     out["settling_time_s"] = settle
-    th = res.signal("pitch")[sel]
-    vx = res.signal("vx")[sel]
-    vz = res.signal("vz")[sel]
-    ten = res.signal("tension_top")[sel]
-    out["pitch_range_deg"] = [float(th.min()), float(th.max())]
-    out["pitch_peak_deg"] = float(np.max(np.abs(th - th.mean())))
-    out["u_peak_mps"] = float(np.max(np.abs(vx - vx.mean())))
-    out["w_peak_mps"] = float(np.max(np.abs(vz - vz.mean())))
-    out["pitch_rms_deg"] = float(np.std(th))
-    out["u_rms_mps"] = float(np.std(vx))
-    out["w_rms_mps"] = float(np.std(vz))
-    out["tension_range_N"] = [float(ten.min()), float(ten.max())]
+    out.update(motion_figures(*(res.signal(k)[sel] for k in ("pitch", "vx", "vz", "tension_top"))))
     out.update(res.peaks(t0))
     out["tension_winch_peak_N"] = float(np.max(res.signal("tension_winch")))
     out["tether_length_range_m"] = [float(np.min(res.signal("tether_length"))),

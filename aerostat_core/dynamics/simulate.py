@@ -58,7 +58,8 @@ from .wind import WindField, WindScenario
 
 __all__ = ["METHODS", "SIGNALS", "STATUS_DRIVER", "EquilibriumInfo", "ResponseMetrics",
            "SignalStats", "SimulationResult", "SolverOptions", "engine_guess", "equilibrium",
-           "index_sets", "response_metrics", "signal_stats", "simulate", "straight_guess",
+           "index_sets", "integrate", "output_times", "response_metrics", "signal_stats",
+           "simulate", "straight_guess",
            "straight_state", "kernels_warm", "warm_kernels"]
 
 
@@ -259,17 +260,7 @@ def simulate(
         its history up to there; ``.stats["wall_time"]`` excludes the kernels' compilation.
     """
     opt = options or SolverOptions()
-    if not (isinstance(duration, (int, float)) and math.isfinite(duration)
-            and 0 < duration <= 1e5):
-        raise ValueError(f"duration = {duration!r} s is outside the valid range (0, 100000] s")
-    n_out = int(math.floor(duration / opt.output_interval + 1e-9)) + 2
-    need = n_out * (system.n_state + ND) * 8
-    if need > MAX_OUTPUT_BYTES:
-        raise ValueError(
-            f"the output grid of duration = {duration:g} s at output_interval = "
-            f"{opt.output_interval:g} s needs {need / 2**20:.0f} MiB (limit "
-            f"{MAX_OUTPUT_BYTES / 2**20:.0f} MiB): shorten duration or lengthen output_interval "
-            f"(at least {duration * (system.n_state + ND) * 8 / MAX_OUTPUT_BYTES:.3g} s)")
+    out_t = output_times(duration, opt, system.n_state + ND)
     warm_kernels()
     t_wall0 = time.perf_counter()
     info = None
@@ -289,14 +280,73 @@ def simulate(
         y0 = np.array(initial_state, float)
         if y0.shape != (system.n_state,):
             raise ValueError(f"initial_state has shape {y0.shape}; expected ({system.n_state},)")
-    out_t = np.arange(n_out - 1) * opt.output_interval
-    if out_t[-1] < duration - 1e-9:
-        out_t = np.append(out_t, duration)
     if opt.method != "trbdf2":
         return _simulate_scipy(system, field_, duration, opt, y0, out_t, info, t_wall0)
     data = system.data(field_)
-    n = system.n_state
-    kl, ku = system.structure()
+    stops = field_.breakpoints()
+    stops = stops[(stops > 0) & (stops < duration)]
+    run = integrate(data, y0, out_t, duration, opt, _atol(system, opt), _scale(system),
+                    stops, system.structure(), progress, t_wall0)
+    out_y, out_d, stats, fs, status, wall = run
+    m = int(stats[S_IOUT])
+    msg = STATUS.get(status, STATUS_DRIVER.get(status, "unknown"))
+    if status != 0:
+        msg = f"stopped at t = {fs[F_T]:.2f} s: {msg}"
+    st = {
+        "steps": int(stats[S_STEPS]), "rejected": int(stats[S_REJECT]),
+        "rhs_calls": int(stats[S_FEVAL]), "jacobians": int(stats[S_JAC]),
+        "factorisations": int(stats[S_LU]), "newton_failures": int(stats[S_NFAIL]),
+        "wall_time": wall, "t_end": float(fs[F_T]),
+    }
+    return SimulationResult(out_t[:m], out_y[:m], out_d[:m], system, field_, status, msg, st, info,
+                            opt)
+
+
+#: Wall time one integrator call aims at [s]: progress and the wall-clock budget are checked
+#: between calls, so at least every second even when the steps become small.
+CHUNK_WALL = 0.2
+
+
+def output_times(duration: float, opt: SolverOptions, columns: int) -> np.ndarray:
+    """The output times [s] of a run of ``duration`` [s], valid (0, 1e5]: the grid of
+    ``opt.output_interval`` from 0, then the end; checked to fit, with ``columns`` float
+    columns, the output budget ``MAX_OUTPUT_BYTES`` (``ValueError`` saying what to change
+    otherwise). The 3- and 6-DOF runs share it."""
+    if not (isinstance(duration, (int, float)) and math.isfinite(duration)
+            and 0 < duration <= 1e5):
+        raise ValueError(f"duration = {duration!r} s is outside the valid range (0, 100000] s")
+    n_out = int(math.floor(duration / opt.output_interval + 1e-9)) + 2
+    need = n_out * columns * 8
+    if need > MAX_OUTPUT_BYTES:
+        raise ValueError(
+            f"the output grid of duration = {duration:g} s at output_interval = "
+            f"{opt.output_interval:g} s needs {need / 2**20:.0f} MiB (limit "
+            f"{MAX_OUTPUT_BYTES / 2**20:.0f} MiB): shorten duration or lengthen output_interval "
+            f"(at least {duration * columns * 8 / MAX_OUTPUT_BYTES:.3g} s)")
+    out_t = np.arange(n_out - 1) * opt.output_interval
+    if out_t[-1] < duration - 1e-9:
+        out_t = np.append(out_t, duration)
+    return out_t
+
+
+def integrate(data, y0: np.ndarray, out_t: np.ndarray, duration: float, opt: SolverOptions,
+              atol: np.ndarray, scale: np.ndarray, stops: np.ndarray, structure: tuple,
+              progress: Callable[[float], None] | None, t_wall0: float):
+    """The compiled TR-BDF2 (docs/dynamics.md §1.8) from ``y0`` to ``duration`` [s], in chunks
+    that each last about :data:`CHUNK_WALL` seconds, so that ``progress`` runs and the step and
+    wall-clock budgets of ``opt`` are enforced between them. One driver for the 3- and 6-DOF
+    models: the compiled kernel dispatches on the mode entry of ``data``.
+
+    ``atol``, ``scale``: per-state absolute tolerance and Newton scale; ``stops``: times the
+    step must land on (wind and event breakpoints); ``structure``: the Jacobian's band (kl, ku).
+
+    Returns (out_y, out_d, stats, fs, status, wall): the states and the 3-DOF diagnostics at
+    ``out_t`` (NaN past the end), the solver's counters and float state (``fs[F_T]`` the time
+    reached), the status (0: done; 8, 9: a budget; else the kernel's) and the wall time [s]
+    since ``t_wall0``.
+    """
+    kl, ku = structure
+    n = y0.size
     out_y = np.full((out_t.size, n), np.nan)
     out_d = np.full((out_t.size, ND), np.nan)
     y = y0.copy()
@@ -319,13 +369,9 @@ def simulate(
     o[O_KAPPA] = 0.05
     o[O_JAC_EVERY] = opt.jacobian_refresh
     o[O_MAXIT] = 6
-    atol = _atol(system, opt)
-    stops = field_.breakpoints()
-    stops = stops[(stops > 0) & (stops < duration)]
     jac = np.zeros((n, n))
     wmat = np.zeros((n, band_width(kl, ku)))
     piv = np.zeros(n, np.int64)
-    scale = _scale(system)
     status = 0
     chunk = 200  # steps per call, adapted so that one call lasts about CHUNK_WALL seconds
     t_chunk = max(duration / 50.0, 1.0)
@@ -335,7 +381,10 @@ def simulate(
             status = 9
             break
         o[O_MAXSTEPS] = min(chunk, remaining)
-        t_stop = min(duration, fs[F_T] + t_chunk)
+        # Stops on a fixed grid of t_chunk: a call cut short by its step budget (which follows
+        # the wall clock) resumes towards the same stop, so the step sequence, and the result,
+        # do not depend on the machine's speed or load.
+        t_stop = min(duration, (np.floor(fs[F_T] / t_chunk + 1e-9) + 1.0) * t_chunk)
         steps0 = int(stats[S_STEPS])
         tc = time.perf_counter()
         code = integrate_chunk(fs, y, f, t_stop, data, o, atol, stops, out_t, out_y, out_d,
@@ -353,24 +402,7 @@ def simulate(
             if fs[F_T] < duration - 1e-12 * duration:
                 status = 8
             break
-    wall = time.perf_counter() - t_wall0
-    m = int(stats[S_IOUT])
-    msg = STATUS.get(status, STATUS_DRIVER.get(status, "unknown"))
-    if status != 0:
-        msg = f"stopped at t = {fs[F_T]:.2f} s: {msg}"
-    st = {
-        "steps": int(stats[S_STEPS]), "rejected": int(stats[S_REJECT]),
-        "rhs_calls": int(stats[S_FEVAL]), "jacobians": int(stats[S_JAC]),
-        "factorisations": int(stats[S_LU]), "newton_failures": int(stats[S_NFAIL]),
-        "wall_time": wall, "t_end": float(fs[F_T]),
-    }
-    return SimulationResult(out_t[:m], out_y[:m], out_d[:m], system, field_, status, msg, st, info,
-                            opt)
-
-
-#: Wall time one integrator call aims at [s]: progress and the wall-clock budget are checked
-#: between calls, so at least every second even when the steps become small.
-CHUNK_WALL = 0.2
+    return out_y, out_d, stats, fs, status, time.perf_counter() - t_wall0
 _WARM: list[bool] = []
 
 

@@ -579,40 +579,13 @@ def simulate6(system: System6, wind3: Wind3D, duration: float, options=None,
     :mod:`.solver`, from the static equilibrium (or ``initial_state``). Returns a
     :class:`~.sixdof_results.Result6`; a run that leaves the physical domain stops with its
     history up to there and the reason in ``message``."""
-    from aerostat_core.dynamics.kernel import ND, rhs_kernel
-    from aerostat_core.dynamics.options import MAX_OUTPUT_BYTES, STATUS_DRIVER, SolverOptions
-    from aerostat_core.dynamics.simulate import warm_kernels
+    from aerostat_core.dynamics.options import STATUS_DRIVER, SolverOptions
+    from aerostat_core.dynamics.simulate import integrate, output_times, warm_kernels
     from aerostat_core.dynamics.sixdof_results import Result6
-    from aerostat_core.dynamics.solver import (
-        F_ETA,
-        F_H,
-        F_SIZE,
-        F_STALE,
-        F_T,
-        O_HMAX,
-        O_HMIN,
-        O_JAC_EVERY,
-        O_KAPPA,
-        O_MAXIT,
-        O_MAXSTEPS,
-        O_RTOL,
-        O_SIZE,
-        S_IOUT,
-        S_SIZE,
-        S_STEPS,
-        STATUS,
-        band_width,
-        integrate_chunk,
-    )
+    from aerostat_core.dynamics.solver import F_T, S_FEVAL, S_IOUT, S_JAC, S_STEPS, STATUS
 
     opt = options or SolverOptions()
-    if not (isinstance(duration, (int, float)) and math.isfinite(duration)
-            and 0 < duration <= 1e5):
-        raise ValueError(f"duration = {duration!r} s is outside the valid range (0, 100000] s")
-    n_out = int(math.floor(duration / opt.output_interval + 1e-9)) + 2
-    if n_out * (system.n_state + ND6) * 8 > MAX_OUTPUT_BYTES:
-        raise ValueError(f"the output grid of duration = {duration:g} s at output_interval = "
-                         f"{opt.output_interval:g} s is too large: lengthen output_interval")
+    out_t = output_times(duration, opt, system.n_state + ND6)
     warm_kernels()
     t_wall0 = time.perf_counter()
     height = system.tether.length if initial_state is None else \
@@ -628,31 +601,7 @@ def simulate6(system: System6, wind3: Wind3D, duration: float, options=None,
         y0 = np.array(initial_state, float)
         if y0.shape != (system.n_state,):
             raise ValueError(f"initial_state has shape {y0.shape}; expected ({system.n_state},)")
-    out_t = np.arange(n_out - 1) * opt.output_interval
-    if out_t[-1] < duration - 1e-9:
-        out_t = np.append(out_t, duration)
     n = system.n_state
-    kl, ku = system.structure()
-    out_y = np.full((out_t.size, n), np.nan)
-    out_d = np.full((out_t.size, ND), np.nan)
-    y = y0.copy()
-    f = np.empty(n)
-    diag = np.empty(ND)
-    rhs_kernel(0.0, y, f, data, diag)
-    out_y[0] = y
-    stats = np.zeros(S_SIZE, np.int64)
-    stats[S_IOUT] = 1
-    fs = np.zeros(F_SIZE)
-    fs[F_H] = opt.initial_step
-    fs[F_ETA] = 1.0
-    fs[F_STALE] = 1.0
-    o = np.zeros(O_SIZE)
-    o[O_RTOL] = opt.rtol
-    o[O_HMAX] = opt.max_step
-    o[O_HMIN] = 1e-10 * max(1.0, duration)
-    o[O_KAPPA] = 0.05
-    o[O_JAC_EVERY] = opt.jacobian_refresh
-    o[O_MAXIT] = 6
     atol = np.full(n, opt.atol_position)
     for i in range(1, system.tether.segments):
         atol[6 * (i - 1) + 3:6 * i] = opt.atol_velocity
@@ -674,37 +623,8 @@ def simulate6(system: System6, wind3: Wind3D, duration: float, options=None,
     if ev.break_time is not None:
         stops.append(ev.break_time)
     stops = np.unique(np.array([s for s in stops if 0 < s < duration], float))
-    jac = np.zeros((n, n))
-    wmat = np.zeros((n, band_width(kl, ku)))
-    piv = np.zeros(n, np.int64)
-    status = 0
-    chunk = 200
-    t_chunk = max(duration / 50.0, 1.0)
-    while fs[F_T] < duration - 1e-12 * duration:
-        remaining = int(opt.max_steps - stats[S_STEPS])
-        if remaining <= 0:
-            status = 9
-            break
-        o[O_MAXSTEPS] = min(chunk, remaining)
-        t_stop = min(duration, fs[F_T] + t_chunk)
-        steps0 = int(stats[S_STEPS])
-        tc = time.perf_counter()
-        code = integrate_chunk(fs, y, f, t_stop, data, o, atol, stops, out_t, out_y, out_d,
-                               stats, jac, wmat, piv, scale, kl, ku)
-        dt_call = time.perf_counter() - tc
-        done = int(stats[S_STEPS]) - steps0
-        if done > 0 and dt_call > 0:
-            chunk = int(min(max(0.2 * done / dt_call, 20), 20000))
-        if code not in (0, 1):
-            status = int(code)
-            break
-        if progress is not None:
-            progress(min(1.0, fs[F_T] / duration))
-        if time.perf_counter() - t_wall0 > opt.wall_time_limit:
-            if fs[F_T] < duration - 1e-12 * duration:
-                status = 8
-            break
-    wall = time.perf_counter() - t_wall0
+    out_y, _, stats, fs, status, wall = integrate(data, y0, out_t, duration, opt, atol, scale,
+                                                  stops, system.structure(), progress, t_wall0)
     m = int(stats[S_IOUT])
     msg = STATUS.get(status, STATUS6.get(status, STATUS_DRIVER.get(status, "unknown")))
     if status != 0:
@@ -713,7 +633,8 @@ def simulate6(system: System6, wind3: Wind3D, duration: float, options=None,
     dy = np.empty(n)
     for i in range(m):
         rhs6_kernel(out_t[i], out_y[i], dy, data, d6[i])
-    st = {"steps": int(stats[S_STEPS]), "rhs_calls": int(stats[2]), "jacobians": int(stats[3]),
+    st = {"steps": int(stats[S_STEPS]), "rhs_calls": int(stats[S_FEVAL]),
+          "jacobians": int(stats[S_JAC]),
           "wall_time": wall, "t_end": float(fs[F_T])}
     return Result6(out_t[:m], out_y[:m], d6, system, wind3, status, msg, st)
 

@@ -38,6 +38,8 @@ import numpy as np
 from numba import njit
 
 from aerostat_core.dynamics.layout import (
+    DIAG_NAMES,
+    N_STATIONS,
     P_AERO_AX,
     P_AERO_CF,
     P_AERO_FIN,
@@ -81,6 +83,7 @@ from aerostat_core.dynamics.layout import (
     T_FIN_L,
     T_M_INV,
     T_N_INV,
+    table_lookup,
 )
 from aerostat_core.dynamics.sixdof_layout import (
     Q_AZ,
@@ -115,12 +118,7 @@ from aerostat_core.dynamics.wind import (
 
 #: Diagnostics of the 6-DOF kernel: the 3-DOF names first (same meaning, in the vertical plane of
 #: the reference wind where it applies), then the lateral ones.
-DIAG6_NAMES = (
-    "alpha", "airspeed", "wind_x", "wind_z", "tension_top_x", "tension_top_z",
-    "tension_winch_x", "tension_winch_z", "tension_max", "x_top", "z_top", "vx_top", "vz_top",
-    "vx_body", "vz_body", "alpha_fin", "fin_lift", "aero_moment", "tension_min", "wind_accel_x",
-    "tension_min_segment",
-    # 6-DOF only
+DIAG6_NAMES = DIAG_NAMES + (
     "beta",  # sideslip at O, asin(v_r/V) [rad]
     "wind_y",  # wind at O [m/s]
     "tension_top_y", "tension_winch_y",  # [N]
@@ -135,8 +133,6 @@ DIAG6_NAMES = (
     "broken",  # 1 after the tether broke
 )
 ND6 = len(DIAG6_NAMES)
-#: Stations along the hull where the strips sample a spatially varying wind (as the 3-DOF kernel).
-N_STATIONS = 6
 #: Status codes of the 6-DOF checks (beside the integrator's).
 STATUS6 = {
     11: "a tether node went below the winch level: the tether would pass through the ground",
@@ -330,19 +326,6 @@ def tether3_loads(pos, vel, t_now, l0, prm, wpar, wt, turb, rho_tab, force, tens
 
 
 @njit(cache=True)
-def _lookup(tab, row, x, x0, dx):  # pragma: no cover - numba
-    m = tab.shape[1]
-    s = (x - x0) / dx
-    if s <= 0.0:
-        return tab[row, 0]
-    if s >= m - 1:
-        return tab[row, m - 1]
-    k = int(s)
-    f = s - k
-    return tab[row, k] * (1.0 - f) + tab[row, k + 1] * f
-
-
-@njit(cache=True)
 def _cross(a0, a1, a2, b0, b1, b2):  # pragma: no cover - numba
     return a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0
 
@@ -442,11 +425,11 @@ def rhs6_kernel(t, y, dy, data, diag):  # pragma: no cover - numba
     my = 0.0
     mz = 0.0
     if prm[P_AERO_INV] > 0.0:
-        nrm = q0d * _lookup(tab, T_N_INV, alpha_t, al0, dal)
-        fx -= q0d * _lookup(tab, T_A_INV, alpha_t, al0, dal)
+        nrm = q0d * table_lookup(tab, T_N_INV, alpha_t, al0, dal)
+        fx -= q0d * table_lookup(tab, T_A_INV, alpha_t, al0, dal)
         fy -= nrm * ecy
         fz -= nrm * ecz
-        mi = q0d * _lookup(tab, T_M_INV, alpha_t, al0, dal)
+        mi = q0d * table_lookup(tab, T_M_INV, alpha_t, al0, dal)
         # moment -T_M (x_B x e_c): x_B x (0, ecy, ecz) = (0, -ecz, ecy)
         my += mi * ecz
         mz -= mi * ecy
@@ -462,7 +445,7 @@ def rhs6_kernel(t, y, dy, data, diag):  # pragma: no cover - numba
                 kv = int(sv)
                 fv = sv - kv
                 cd = cdv[kv] * (1.0 - fv) + cdv[kv + 1] * fv
-        fx -= q0d * cd * _lookup(tab, T_A_AX, alpha_t, al0, dal)
+        fx -= q0d * cd * table_lookup(tab, T_A_AX, alpha_t, al0, dal)
     # inputs that vary along the wind: the strips and the fins see their own wind (as 3-DOF)
     spatial = (wpar[W_TURB_ON] > 0.0 or (wpar[W_GUST_ON] > 0.0 and wpar[W_GUST_CONV] > 0.0)
                or prm[Q_GV_AMP] != 0.0)
@@ -522,8 +505,8 @@ def rhs6_kernel(t, y, dy, data, diag):  # pragma: no cover - numba
         # pitch plane: the 3-DOF fin tables
         af = math.atan2(wf, uf)
         qf = 0.5 * rho * (uf * uf + wf * wf)
-        fin_l = qf * _lookup(tab, T_FIN_L, af, al0, dal)
-        fin_d = qf * _lookup(tab, T_FIN_D, af, al0, dal)
+        fin_l = qf * table_lookup(tab, T_FIN_L, af, al0, dal)
+        fin_d = qf * table_lookup(tab, T_FIN_D, af, al0, dal)
         ca = math.cos(af)
         sa = math.sin(af)
         nf = fin_l * ca + fin_d * sa
@@ -534,8 +517,8 @@ def rhs6_kernel(t, y, dy, data, diag):  # pragma: no cover - numba
         bf = math.atan2(vf, uf)
         qs = 0.5 * rho * (uf * uf + vf * vf)
         ks = prm[Q_FIN_SIDE]
-        fin_s = ks * qs * _lookup(tab, T_FIN_L, bf, al0, dal)
-        fin_ds = ks * qs * (_lookup(tab, T_FIN_D, bf, al0, dal) - prm[Q_FIN_CD0])
+        fin_s = ks * qs * table_lookup(tab, T_FIN_L, bf, al0, dal)
+        fin_ds = ks * qs * (table_lookup(tab, T_FIN_D, bf, al0, dal) - prm[Q_FIN_CD0])
         cb = math.cos(bf)
         sb = math.sin(bf)
         ns = fin_s * cb + fin_ds * sb

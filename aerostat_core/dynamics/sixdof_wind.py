@@ -22,13 +22,12 @@ from aerostat_core.dynamics.sixdof_layout import (
     Q_VEER_Z,
 )
 from aerostat_core.dynamics.wind import (
-    W_TURB_DT,
-    W_TURB_DZ,
     W_TURB_NL,
     W_TURB_ON,
-    W_TURB_Z0,
     W_UC,
     W_XREF,
+    frozen_weights,
+    hermite,
     wind_point,
 )
 
@@ -51,43 +50,17 @@ def cosine_pulse(t, t0, tr, hold):  # pragma: no cover - numba
 @njit(cache=True)
 def lateral_turbulence(tau, z, wpar, turb):  # pragma: no cover - numba
     """v' [m/s] and its tau-derivative of the lateral rows appended after the 4 L rows of u', w'
-    (2 rows per level: v', dv'/dtau; cubic Hermite in tau, linear in z, unfaded)."""
-    n = turb.shape[1]
-    h = wpar[W_TURB_DT]
-    sx = tau / h
-    fl = math.floor(sx)
-    f = sx - fl
-    k0 = int(fl) % n
-    k1 = k0 + 1
-    if k1 == n:
-        k1 = 0
-    f2 = f * f
-    f3 = f2 * f
-    h00 = 2.0 * f3 - 3.0 * f2 + 1.0
-    h10 = (f3 - 2.0 * f2 + f) * h
-    h01 = -2.0 * f3 + 3.0 * f2
-    h11 = (f3 - f2) * h
-    d00 = (6.0 * f2 - 6.0 * f) / h
-    d10 = 3.0 * f2 - 4.0 * f + 1.0
-    d01 = -d00
-    d11 = 3.0 * f2 - 2.0 * f
-    nl = int(wpar[W_TURB_NL])
-    sz = (z - wpar[W_TURB_Z0]) / wpar[W_TURB_DZ]
-    if nl == 1 or sz <= 0.0:
-        la, fz = 0, 0.0
-    elif sz >= nl - 1:
-        la, fz = nl - 1, 0.0
-    else:
-        la = int(sz)
-        fz = sz - la
-    r = 4 * nl + 2 * la
-    v = h00 * turb[r, k0] + h10 * turb[r + 1, k0] + h01 * turb[r, k1] + h11 * turb[r + 1, k1]
-    dv = d00 * turb[r, k0] + d10 * turb[r + 1, k0] + d01 * turb[r, k1] + d11 * turb[r + 1, k1]
+    (2 rows per level: v', dv'/dtau; cubic Hermite in tau, linear in z, unfaded), read as
+    :func:`.wind.turbulence_at` reads u' and w'."""
+    k0, k1, h00, h10, h01, h11, d00, d10, d01, d11, la, fz = frozen_weights(
+        tau, z, wpar, turb.shape[1])
+    r = 4 * int(wpar[W_TURB_NL]) + 2 * la
+    v = hermite(turb, r, k0, k1, h00, h10, h01, h11)
+    dv = hermite(turb, r, k0, k1, d00, d10, d01, d11)
     if fz > 0.0:
         r += 2
-        v2 = h00 * turb[r, k0] + h10 * turb[r + 1, k0] + h01 * turb[r, k1] + h11 * turb[r + 1, k1]
-        dv2 = (d00 * turb[r, k0] + d10 * turb[r + 1, k0] + d01 * turb[r, k1]
-               + d11 * turb[r + 1, k1])
+        v2 = hermite(turb, r, k0, k1, h00, h10, h01, h11)
+        dv2 = hermite(turb, r, k0, k1, d00, d10, d01, d11)
         v += fz * (v2 - v)
         dv += fz * (dv2 - dv)
     return v, dv

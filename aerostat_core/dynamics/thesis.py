@@ -28,10 +28,8 @@ from collections.abc import Mapping
 from dataclasses import replace
 from typing import Any
 
-import numpy as np
-
 from .request import DynamicsRequest, TurbulenceSettings
-from .results import SimulationResult, response_metrics
+from .results import SimulationResult, motion_figures, response_metrics
 from .scenarios import run_request
 
 #: The thesis' claims per scenario: metric -> value.
@@ -118,14 +116,7 @@ def metrics(res: SimulationResult, dyn: DynamicsRequest) -> dict:
     vx = res.signal("vx")[sel]
     vz = res.signal("vz")[sel]
     ten = res.signal("tension_C")[sel]
-    out["pitch_range_deg"] = [float(th.min()), float(th.max())]
-    out["pitch_peak_deg"] = float(np.max(np.abs(th - th.mean())))
-    out["u_peak_mps"] = float(np.max(np.abs(vx - vx.mean())))
-    out["w_peak_mps"] = float(np.max(np.abs(vz - vz.mean())))
-    out["pitch_rms_deg"] = float(np.std(th))
-    out["u_rms_mps"] = float(np.std(vx))
-    out["w_rms_mps"] = float(np.std(vz))
-    out["tension_range_N"] = [float(ten.min()), float(ten.max())]
+    out.update(motion_figures(th, vx, vz, ten))
     out["slack_events"] = res.slack_events()
     return out
 

@@ -498,10 +498,12 @@ def wind_time_terms(t, wpar, sched, out):  # pragma: no cover - numba
 
 
 @njit(cache=True)
-def turbulence_at(tau, z, wpar, turb):  # pragma: no cover - numba
-    """u', w' [m/s] and their tau-derivatives [m/s2] of the frozen field at frozen time tau [s]
-    and height z [m] (cubic Hermite in tau, linear between height levels; unfaded)."""
-    n = turb.shape[1]
+def frozen_weights(tau, z, wpar, n):  # pragma: no cover - numba
+    """Where the frozen turbulence table is read at frozen time tau [s] and height z [m]: the
+    columns k0, k1 (periodic, ``n`` of them) and the cubic Hermite weights in tau of the values
+    (h00, h10, h01, h11) and of the tau-derivatives (d00, d10, d01, d11), then the lower height
+    level la and the fraction fz towards the next one (linear in z, clamped at the ends).
+    :func:`turbulence_at` (u', w') and the 6-DOF lateral component v' read the table with it."""
     h = wpar[W_TURB_DT]
     sx = tau / h
     fl = math.floor(sx)
@@ -529,19 +531,33 @@ def turbulence_at(tau, z, wpar, turb):  # pragma: no cover - numba
     else:
         la = int(sz)
         fz = sz - la
+    return k0, k1, h00, h10, h01, h11, d00, d10, d01, d11, la, fz
+
+
+@njit(cache=True)
+def hermite(turb, r, k0, k1, w00, w10, w01, w11):  # pragma: no cover - numba
+    """One cubic Hermite read of the table row pair (value row r, slope row r + 1) between
+    columns k0 and k1 with the weights of :func:`frozen_weights`."""
+    return w00 * turb[r, k0] + w10 * turb[r + 1, k0] + w01 * turb[r, k1] + w11 * turb[r + 1, k1]
+
+
+@njit(cache=True)
+def turbulence_at(tau, z, wpar, turb):  # pragma: no cover - numba
+    """u', w' [m/s] and their tau-derivatives [m/s2] of the frozen field at frozen time tau [s]
+    and height z [m] (cubic Hermite in tau, linear between height levels; unfaded)."""
+    k0, k1, h00, h10, h01, h11, d00, d10, d01, d11, la, fz = frozen_weights(
+        tau, z, wpar, turb.shape[1])
     r = 4 * la
-    u = h00 * turb[r, k0] + h10 * turb[r + 1, k0] + h01 * turb[r, k1] + h11 * turb[r + 1, k1]
-    du = d00 * turb[r, k0] + d10 * turb[r + 1, k0] + d01 * turb[r, k1] + d11 * turb[r + 1, k1]
-    w = h00 * turb[r + 2, k0] + h10 * turb[r + 3, k0] + h01 * turb[r + 2, k1] + h11 * turb[r + 3, k1]
-    dw = d00 * turb[r + 2, k0] + d10 * turb[r + 3, k0] + d01 * turb[r + 2, k1] + d11 * turb[r + 3, k1]
+    u = hermite(turb, r, k0, k1, h00, h10, h01, h11)
+    du = hermite(turb, r, k0, k1, d00, d10, d01, d11)
+    w = hermite(turb, r + 2, k0, k1, h00, h10, h01, h11)
+    dw = hermite(turb, r + 2, k0, k1, d00, d10, d01, d11)
     if fz > 0.0:
         r += 4
-        u2 = h00 * turb[r, k0] + h10 * turb[r + 1, k0] + h01 * turb[r, k1] + h11 * turb[r + 1, k1]
-        du2 = d00 * turb[r, k0] + d10 * turb[r + 1, k0] + d01 * turb[r, k1] + d11 * turb[r + 1, k1]
-        w2 = (h00 * turb[r + 2, k0] + h10 * turb[r + 3, k0] + h01 * turb[r + 2, k1]
-              + h11 * turb[r + 3, k1])
-        dw2 = (d00 * turb[r + 2, k0] + d10 * turb[r + 3, k0] + d01 * turb[r + 2, k1]
-               + d11 * turb[r + 3, k1])
+        u2 = hermite(turb, r, k0, k1, h00, h10, h01, h11)
+        du2 = hermite(turb, r, k0, k1, d00, d10, d01, d11)
+        w2 = hermite(turb, r + 2, k0, k1, h00, h10, h01, h11)
+        dw2 = hermite(turb, r + 2, k0, k1, d00, d10, d01, d11)
         u += fz * (u2 - u)
         du += fz * (du2 - du)
         w += fz * (w2 - w)

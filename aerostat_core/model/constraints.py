@@ -13,7 +13,7 @@ gross lift); the moment slopes are already coefficients per radian, g = C_m_alph
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -94,6 +94,15 @@ CONSTRAINTS: tuple[Constraint, ...] = (
                "aerodynamically unstable about the centre of volume at {wind:g} m/s (C_m_alpha "
                "{value:+.3f}/rad, needs <= {limit:+.3f}/rad): the fins lose to the Munk moment",
                "design", "larger fins, fins further aft or a lower fineness ratio"),
+    # checked after sizing by the 6-DOF linearisation (aerostat_core.dynamics.lateral_constraint;
+    # docs/dynamics.md §7.5): never binding inside the vectorised table (see LateralStability)
+    Constraint("lateral_stability", "Lateral stability", "m/s",
+               "laterally stable up to the survival wind: every lateral-directional mode (roll, "
+               "yaw, sideslip, the swing on the tether) of the 6-DOF model decays at each wind "
+               "speed up to it",
+               "a lateral-directional mode grows (kiting) from {value:.1f} m/s, below the "
+               "survival wind {limit:g} m/s", "survival",
+               "larger fins, fins further aft or a confluence point further forward"),
     Constraint("fins_on_hull", "Fins on the hull", "m", "fin trailing edge on the hull",
                "fin trailing edge {value:.2f} m from the nose lies behind the tail "
                "({limit:.2f} m)", "static", "smaller fins or fins further forward"),
@@ -132,6 +141,82 @@ CONSTRAINTS: tuple[Constraint, ...] = (
 NAMES: tuple[str, ...] = tuple(c.name for c in CONSTRAINTS)
 #: Constraint by name.
 BY_NAME: dict[str, Constraint] = {c.name: c for c in CONSTRAINTS}
+#: Rows the vectorised table evaluates: all but ``lateral_stability``, which needs the 6-DOF
+#: model per design and is filled after sizing; a Monte Carlo sample says nothing about it.
+VECTORISED_NAMES: tuple[str, ...] = tuple(n for n in NAMES if n != "lateral_stability")
+
+
+@dataclass(frozen=True)
+class LateralStability:
+    """Lateral-directional stability of one design, from the 6-DOF model linearised about its
+    equilibrium at each wind speed (computed by :mod:`aerostat_core.dynamics.lateral_constraint`,
+    docs/dynamics.md §7.5): what the ``lateral_stability`` row and the summary read.
+
+    Parameters
+    ----------
+    checked : bool
+        The wind sweep ran (the rule set checks the row); False: only the derivatives.
+    unstable_above : float or None
+        Lowest wind speed [m/s] at which a lateral mode grows (the largest real part of the
+        lateral eigenvalues crosses zero); None when every mode decays up to ``top_speed``.
+    top_speed : float
+        Highest wind speed checked [m/s] (the survival wind).
+    derivative_speed : float or None
+        Wind speed of the static derivatives [m/s] (the design wind).
+    C_Y_beta, C_n_beta, C_l_beta, C_n_beta_confluence : float or None
+        Static lateral derivatives [1/rad] (side force; yawing moment about the centre of
+        volume; rolling moment about the confluence point; yawing moment about the confluence
+        point), None when the design has no equilibrium in the wind (it sinks).
+    note : str
+        Why a number is missing (empty when none is).
+    """
+
+    checked: bool
+    unstable_above: float | None
+    top_speed: float
+    derivative_speed: float | None
+    C_Y_beta: float | None
+    C_n_beta: float | None
+    C_l_beta: float | None
+    C_n_beta_confluence: float | None
+    note: str = ""
+
+    @property
+    def stable(self) -> bool:
+        """Every lateral mode decays up to ``top_speed`` (False when not checked)."""
+        return self.checked and self.unstable_above is None
+
+
+def lateral_applies(req: Requirement) -> bool:
+    """True when the requirement's rule set checks the ``lateral_stability`` row (and the
+    requirement names a survival wind above calm)."""
+    req = req.resolved()
+    return bool(req.rule_set.check_lateral_stability and req.survival_wind
+                and req.survival_wind > 0)
+
+
+def lateral_quantities(survival_wind: float, lateral: LateralStability | None):
+    """Value, limit, g and margin of the ``lateral_stability`` row [m/s].
+
+    value: the lowest wind speed at which a lateral mode grows, or the survival wind when every
+    mode decays up to it; limit: the survival wind V_s; g = 1 - value/V_s when a mode grows
+    below V_s (> 0: broken), -1 when none does (margin unbounded within the check). Not
+    evaluated (``lateral`` None or not checked): value and margin NaN, g = -1 (the vectorised
+    table never evaluates the row: it needs a 6-DOF linearisation per design).
+
+    Examples
+    --------
+    >>> lat = LateralStability(True, 12.0, 20.0, 10.0, -2.0, 0.1, -0.5, 0.3)
+    >>> [round(x, 2) for x in lateral_quantities(20.0, lat)]
+    [12.0, 20.0, 0.4, -8.0]
+    """
+    vs = float(survival_wind)
+    if lateral is None or not lateral.checked:
+        return np.nan, vs, -1.0, np.nan
+    u = lateral.unstable_above
+    if u is None or u >= vs:
+        return vs, vs, -1.0, np.inf
+    return float(u), vs, 1.0 - float(u) / vs, float(u) - vs
 
 
 def violation_messages(g, value, limit, design_wind: float, survival_wind: float) -> list[str]:
@@ -255,6 +340,11 @@ class ConstraintState:
         Where the wind-dependent rows were checked [m/s].
     evaluation : Evaluation
         The trim + tether solution at [design, survival] wind (first axis of its arrays).
+    lateral_on : bool
+        The rule set checks the ``lateral_stability`` row (:func:`lateral_applies`); when False
+        the row is left out of :meth:`rows`.
+    lateral : LateralStability or None
+        The 6-DOF result the row was filled from (:meth:`with_lateral`); None: not evaluated.
     """
 
     g: np.ndarray
@@ -264,6 +354,8 @@ class ConstraintState:
     design_wind: float
     survival_wind: float
     evaluation: Evaluation
+    lateral_on: bool = False
+    lateral: LateralStability | None = None
 
     @property
     def met(self) -> np.ndarray:
@@ -289,6 +381,18 @@ class ConstraintState:
         return violation_messages(self.g[index], self.value[index], self.limit[index],
                                   self.design_wind, self.survival_wind)
 
+    def with_lateral(self, lateral: LateralStability) -> ConstraintState:
+        """This table (one design) with the ``lateral_stability`` row filled from ``lateral``
+        (:func:`lateral_quantities`); the other rows are unchanged."""
+        k = NAMES.index("lateral_stability")
+        cols = {n: np.array(getattr(self, n), float, copy=True) for n in
+                ("value", "limit", "g", "margin")}
+        if self.lateral_on:
+            q = lateral_quantities(self.survival_wind, lateral)
+            for n, x in zip(("value", "limit", "g", "margin"), q):
+                cols[n][..., k] = x
+        return replace(self, **cols, lateral=lateral)
+
     def rows(self, index=()) -> list[dict]:
         """The table for design ``index``: name, label, checked at, value, limit, margin, unit,
         met, g."""
@@ -297,6 +401,12 @@ class ConstraintState:
         for k, c in enumerate(CONSTRAINTS):
             at = {"static": "at rest", "design": f"{self.design_wind:g} m/s",
                   "survival": f"{self.survival_wind:g} m/s"}[c.at]
+            if c.name == "lateral_stability":
+                if not self.lateral_on:
+                    continue  # off in the rule set: not part of this design's table
+                lat = self.lateral
+                at = (f"2-{self.survival_wind:g} m/s" if lat is not None and lat.checked
+                      else "not evaluated")
             rows.append({
                 "constraint": c.name, "label": c.label, "checked_at": at,
                 "value": float(self.value[index][k]), "limit": float(self.limit[index][k]),
@@ -346,7 +456,9 @@ def constraint_state(req: Requirement, cfg: Configuration, af: Airframe,
     full = (2,) + np.broadcast_shapes(shape, np.shape(ev.tether.blow_by)[1:])
     cols = []
     for c in CONSTRAINTS:
-        if c.at == "static":
+        if c.name == "lateral_stability":
+            parts = lateral_quantities(req.survival_wind, None)
+        elif c.at == "static":
             parts = sq[c.name]
         else:
             i = 1 if c.at == "survival" else 0
@@ -362,7 +474,8 @@ def constraint_state(req: Requirement, cfg: Configuration, af: Airframe,
     value, limit, g, margin = (_columns([p[j] for p in cols], full[1:]) for j in range(4))
     return ConstraintState(g=g, margin=margin, value=value, limit=limit,
                            design_wind=float(req.design_wind),
-                           survival_wind=float(req.survival_wind), evaluation=ev)
+                           survival_wind=float(req.survival_wind), evaluation=ev,
+                           lateral_on=lateral_applies(req))
 
 
 def wind_flags(req: Requirement, cfg: Configuration, ev: Evaluation,

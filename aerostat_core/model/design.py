@@ -14,6 +14,7 @@ from aerostat_core.model.airframe import Airframe, build_airframe
 from aerostat_core.model.constraints import NAMES as CONSTRAINT_NAMES
 from aerostat_core.model.constraints import (
     ConstraintState,
+    LateralStability,
     constraint_state,
     state_flags,
     wind_flags,
@@ -82,6 +83,38 @@ class MissionSummary:
         return {f.name: getattr(self, f.name) for f in fields(self)}
 
 
+@dataclass(frozen=True)
+class LateralSummary:
+    """Lateral-directional stability keys of the summary (docs/dynamics.md §7.5; present once
+    the 6-DOF check ran, :func:`aerostat_core.dynamics.lateral_constraint.assess_lateral`):
+    whether the wind sweep ran (the rule set checks it), the wind speed at which the first
+    lateral mode goes unstable [m/s] (None: stable up to the survival wind, or not checked),
+    the highest wind checked [m/s], and the static lateral derivatives [1/rad] at the design
+    wind (None when the hull has no equilibrium in the wind)."""
+
+    lateral_stability_checked: bool
+    lateral_unstable_above_m_s: float | None
+    lateral_checked_up_to_m_s: float | None
+    lateral_derivatives_wind_m_s: float | None
+    C_Y_beta_per_rad: float | None
+    C_n_beta_per_rad: float | None
+    C_l_beta_per_rad: float | None
+    C_n_beta_confluence_per_rad: float | None
+
+    @classmethod
+    def of(cls, lat: LateralStability) -> LateralSummary:
+        return cls(
+            lateral_stability_checked=lat.checked,
+            lateral_unstable_above_m_s=lat.unstable_above if lat.checked else None,
+            lateral_checked_up_to_m_s=lat.top_speed if lat.checked else None,
+            lateral_derivatives_wind_m_s=lat.derivative_speed,
+            C_Y_beta_per_rad=lat.C_Y_beta, C_n_beta_per_rad=lat.C_n_beta,
+            C_l_beta_per_rad=lat.C_l_beta, C_n_beta_confluence_per_rad=lat.C_n_beta_confluence)
+
+    def to_dict(self) -> dict:
+        return {f.name: getattr(self, f.name) for f in fields(self)}
+
+
 @dataclass(frozen=True, eq=True)
 class DesignSummary(FrozenMapping):
     """Headline numbers of a design, SI units in the names (the CLI ``design --json`` keys).
@@ -94,7 +127,9 @@ class DesignSummary(FrozenMapping):
     ``wrinkling_moment_Nm``, ``envelope_pressure_Pa``: the envelope as a pressurised beam at the
     design wind (:func:`aerostat_core.structures.membrane.envelope_loads`: the largest bending moment,
     the wrinkling moment at the governing station, the pressure at the top of the hull);
-    ``mission``: the mission rows (None: not computed, and then absent from :meth:`to_dict`).
+    ``mission``: the mission rows (None: not computed, and then absent from :meth:`to_dict`);
+    ``lateral``: the lateral-stability keys (:class:`LateralSummary`; None until the 6-DOF
+    check ran, and then absent from :meth:`to_dict`).
     Quantities with no physical meaning are None: every wind quantity of a hull that sinks
     (free lift <= 0), and an altitude loss not smaller than the altitude. Read it as attributes
     or, as before, ``s["volume_m3"]``.
@@ -129,13 +164,18 @@ class DesignSummary(FrozenMapping):
     wrinkling_moment_Nm: float
     envelope_pressure_Pa: float
     mission: MissionSummary | None = None
+    lateral: LateralSummary | None = None
 
     def to_dict(self) -> dict:
-        """The summary as a plain dict (JSON types: violations a list), mission keys last."""
-        out = {f.name: getattr(self, f.name) for f in fields(self) if f.name != "mission"}
+        """The summary as a plain dict (JSON types: violations a list), mission keys, then the
+        lateral-stability keys, last."""
+        out = {f.name: getattr(self, f.name) for f in fields(self)
+               if f.name not in ("mission", "lateral")}
         out["violations"] = list(self.violations)
         if self.mission is not None:
             out.update(self.mission.to_dict())
+        if self.lateral is not None:
+            out.update(self.lateral.to_dict())
         return out
 
     _view = to_dict
@@ -337,7 +377,21 @@ class Design:
             wrinkling_moment_Nm=env["wrinkling_moment"],
             envelope_pressure_Pa=env["pressure"],
             mission=self._mission_summary(),
+            lateral=(None if self.constraints.lateral is None
+                     else LateralSummary.of(self.constraints.lateral)),
         )
+
+    def with_lateral(self, lateral: LateralStability) -> Design:
+        """This design with the 6-DOF lateral-stability result in its constraint table (the
+        ``lateral_stability`` row, :meth:`ConstraintState.with_lateral`), and its feasibility
+        and violations updated: the row's message joins them when it is broken. The result is
+        computed by :func:`aerostat_core.dynamics.lateral_constraint.assess_lateral`."""
+        state = self.constraints.with_lateral(lateral)
+        k = CONSTRAINT_NAMES.index("lateral_stability")
+        msg = [m for m in state.messages() if m not in self.violations]
+        broken = not bool(np.asarray(state.met).reshape(-1)[k])
+        return replace(self, constraints=state, feasible=self.feasible and not broken,
+                       violations=tuple(self.violations) + tuple(msg))
 
     def _binding(self) -> str:
         r = self.robust
@@ -434,7 +488,7 @@ def design(req: Requirement | None = None, cfg: Configuration | None = None) -> 
         g=np.asarray(state.g).reshape(-1), margin=np.asarray(state.margin).reshape(-1),
         value=np.asarray(state.value).reshape(-1), limit=np.asarray(state.limit).reshape(-1),
         design_wind=state.design_wind, survival_wind=state.survival_wind,
-        evaluation=state.evaluation)
+        evaluation=state.evaluation, lateral_on=state.lateral_on)
     violations = []
     if sizing is not None and not bool(np.asarray(sizing.feasible).reshape(-1)[0]):
         violations.append(str(np.asarray(sizing.message).reshape(-1)[0]))

@@ -127,6 +127,10 @@ class RuleSet:
     check_wrinkling : bool
         Check the envelope wrinkling row (the hull as a pressurised beam); off in the thesis
         preset, whose method has no envelope structure.
+    check_lateral_stability : bool
+        Check the row "laterally stable up to the survival wind" (every lateral-directional
+        mode of the 6-DOF model linearised at each wind speed decays; docs/dynamics.md §7.5);
+        off in the thesis preset, which has no survival wind and no lateral model.
     """
 
     name: str
@@ -143,6 +147,7 @@ class RuleSet:
     top_up_interval_days: float = 0.0
     operating: OperatingLimits | None = None
     check_wrinkling: bool = True
+    check_lateral_stability: bool = True
 
 
 #: "practice": limits for real missions.
@@ -164,6 +169,9 @@ class RuleSet:
 #: * top-up interval 7 days: the free-lift margin must hold a week after the fill - tactical
 #:   aerostats stay up 5-7 days between helium top-ups (thesis §2.3, citing TCOM and ILC
 #:   Dover), and a weekly top-up is the common field practice;
+#: * laterally stable up to the survival wind: small tethered aerostats are lost to kiting
+#:   (Skydoc and Helikite aerostats went unstable at 40-50 km/h in towed tests, issue 25); the
+#:   6-DOF linearisation checks it (docs/dynamics.md §7.5);
 #: * operating limits: :data:`PRACTICE_OPERATING` (each with its source).
 PRACTICE = RuleSet(
     name="practice",
@@ -200,6 +208,7 @@ THESIS = RuleSet(
     max_tether_angle_deg=45.0,
     weathervane_margin=0.0,
     check_wrinkling=False,
+    check_lateral_stability=False,
 )
 
 #: The rule sets by name; the first is the default.

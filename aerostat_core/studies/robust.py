@@ -173,15 +173,19 @@ def robust_size(req: Requirement, cfg: Configuration | None = None, confidence: 
 
 
 def design_with_confidence(req: Requirement | None = None, cfg: Configuration | None = None):
-    """``design(req, cfg)``, or, when ``req.confidence`` is set and the volume is sized, the
-    robust design of :func:`robust_size` (its ``robust`` attribute says how it was sized)."""
+    """The design the front ends show: ``design(req, cfg)``, or, when ``req.confidence`` is set
+    and the volume is sized, the robust design of :func:`robust_size` (its ``robust``
+    attribute says how it was sized); either with its ``lateral_stability`` row filled by the
+    6-DOF linearisation (:func:`aerostat_core.dynamics.lateral_constraint.assess_lateral`,
+    after sizing: the row never drives the volume)."""
+    from aerostat_core.dynamics.lateral_constraint import assess_lateral
     from aerostat_core.model.design import design
 
     req = Requirement() if req is None else req
     if req.confidence is None or (cfg is not None and cfg.hull.volume is not None):
-        return design(req, cfg)
+        return assess_lateral(design(req, cfg))
     d, info = robust_size(replace(req, confidence=None), cfg, req.confidence)
-    return replace(d, requirement=req.resolved(), robust=info)
+    return assess_lateral(replace(d, requirement=req.resolved(), robust=info))
 
 
 __all__ = ["VERDICTS", "Verdict", "RobustSizing", "assess", "design_with_confidence",

@@ -42,7 +42,7 @@ import numpy as np
 from aerostat_core.base.validation import check_int, check_number
 from aerostat_core.model import budget
 from aerostat_core.model.airframe import build_airframe
-from aerostat_core.model.constraints import NAMES, constraint_state
+from aerostat_core.model.constraints import NAMES, VECTORISED_NAMES, constraint_state
 from aerostat_core.model.design import Design, design
 from aerostat_core.model.inputs import RULE_FIELDS, Configuration, Requirement
 from aerostat_core.model.performance import evaluate
@@ -457,7 +457,8 @@ def monte_carlo(
         free_lift=bands["free_lift"],
         blow_by_design=bands["blow_by_design"],
         tension_design=bands["tension_design"],
-        p_met={name: float(met_count[k] / n) for k, name in enumerate(NAMES)},
+        p_met={name: float(met_count[k] / n) for k, name in enumerate(NAMES)
+               if name in VECTORISED_NAMES},
         p_feasible=feasible_count / n,
         n=n,
         seed=seed,
@@ -647,9 +648,10 @@ def limit_probabilities(d: Design, n: int = 1000, seed: int = 0, specs=None,
     return {
         "design": every["design"] / n,
         "operating": every["operating"] / n,
-        "design_by_constraint": {nm: float(met["design"][i] / n) for i, nm in enumerate(NAMES)},
+        "design_by_constraint": {nm: float(met["design"][i] / n) for i, nm in enumerate(NAMES)
+                                 if nm in VECTORISED_NAMES},
         "operating_by_constraint": {nm: float(met["operating"][i] / n)
-                                    for i, nm in enumerate(NAMES)},
+                                    for i, nm in enumerate(NAMES) if nm in VECTORISED_NAMES},
         "n": n,
         "seed": seed,
     }

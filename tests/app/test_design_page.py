@@ -64,6 +64,8 @@ def test_opens_on_the_practice_default():
     # (shown as plain text: markdown characters escaped)
     assert any(c.value.startswith("Class") and "tactical" in c.value and "TCOM 12M" in c.value
                for c in app.caption)
+    app.session_state["design_constraints"] = True  # the table is drawn once opened
+    app.run()
     rows = table(app, "Constraint")
     assert list(rows["Met"]) == ["yes"] * len(d.constraint_rows())
     assert d.feasible

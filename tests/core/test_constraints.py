@@ -48,7 +48,12 @@ def test_sized_hull_is_the_smallest_meeting_every_constraint(payload, altitude) 
     # every margin is reported in the constraint's own unit and is non-negative when met
     rows = d.constraint_rows()
     assert [r["constraint"] for r in rows] == list(NAMES)
-    assert all(r["met"] and r["margin"] >= -1e-6 * max(1.0, abs(r["limit"])) for r in rows)
+    # the lateral row needs the 6-DOF model: design() leaves it "not evaluated" (NaN value and
+    # margin, never binding); tests/core/test_lateral_constraint.py checks it filled
+    lat = rows[NAMES.index("lateral_stability")]
+    assert lat["checked_at"] == "not evaluated" and lat["met"] and lat["margin"] != lat["margin"]
+    assert all(r["met"] and r["margin"] >= -1e-6 * max(1.0, abs(r["limit"])) for r in rows
+               if r is not lat)
 
 
 def test_gui_cases_grow_plausibly_with_payload_and_altitude() -> None:

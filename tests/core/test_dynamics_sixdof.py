@@ -151,7 +151,8 @@ def test_lateral_modes_of_the_thesis_design_and_the_constraint_row(design):
         static_lateral_derivatives,
         unstable_above,
     )
-    from aerostat_core.dynamics.lateral_constraint import lateral_constraint_row
+    from aerostat_core.dynamics.lateral_constraint import assess_lateral
+    from aerostat_core.model.constraints import NAMES, LateralStability
 
     s8 = system6_from_design(design, segments=8)
     an = [lateral_modes(s8, v, design) for v in (5.0, 10.0)]
@@ -163,10 +164,18 @@ def test_lateral_modes_of_the_thesis_design_and_the_constraint_row(design):
     # yaw and pitch of a body of revolution: same sign of the moment slope about the CV
     row = {r["wind_speed_m_s"]: r for r in design.performance.rows()}[10.0]
     assert np.sign(der["C_n_beta_per_rad"]) == -np.sign(row["cm_alpha_aero_cv_per_rad"])
-    # thesis rules: the row is off
-    assert lateral_constraint_row(design, an, None) is None
-    d2 = replace(design, requirement=replace(design.requirement, rules="practice"))
-    r = lateral_constraint_row(d2, an, None)
-    assert r["met"] and r["g"] <= 0 and r["value"] == design.requirement.survival_wind
-    r = lateral_constraint_row(d2, an, 8.0)
-    assert not r["met"] and r["g"] > 0
+    # thesis rules: the row of the constraint table is off
+    assert "lateral_stability" not in [r["constraint"] for r in
+                                       assess_lateral(design).constraint_rows()]
+    # where a rule set checks it, the row is filled from the sweep: met when every mode decays,
+    # broken when a mode grows below the survival wind
+    vs = design.requirement.survival_wind
+    k = NAMES.index("lateral_stability")
+    state = replace(design.constraints, lateral_on=True)
+    lat = LateralStability(True, unstable_above(an), vs, 10.0, der["C_Y_beta_per_rad"],
+                           der["C_n_beta_per_rad"], der["C_l_beta_per_rad"],
+                           der["C_n_beta_confluence_per_rad"])
+    st = state.with_lateral(lat)
+    assert st.met[k] and st.g[k] <= 0 and st.value[k] == vs
+    st = state.with_lateral(replace(lat, unstable_above=8.0))
+    assert not st.met[k] and st.g[k] > 0 and st.value[k] == 8.0

@@ -61,7 +61,8 @@ def test_default_design_flies_with_high_probability_and_meets_its_margin_on_a_co
     assert p["operating"] >= 0.9
     assert p["design"] < p["operating"]  # sized on its margin: the margin is met about half
     assert 0.3 < p["design"] < 0.7
-    assert set(p["operating_by_constraint"]) == set(NAMES)
+    # every row but the lateral one, which the sample does not evaluate (6-DOF model)
+    assert set(p["operating_by_constraint"]) == set(NAMES) - {"lateral_stability"}
     again = limit_probabilities(default, n=1000, seed=0)
     assert again["operating"] == p["operating"]  # seeded
 
