@@ -77,8 +77,8 @@ def line_rate(label: str, fn, repeats: int, count: int, target: float | None = N
 
 
 def marches(fn) -> int:
-    """Number of tether marches ``fn()`` runs (each is ~50 steps of ~25 numpy calls: the cost
-    of a sheared-wind height pass)."""
+    """Number of tether marches ``fn()`` runs (each is one call of the compiled Heun kernel
+    over the batch: the cost of a sheared-wind height pass)."""
     from aerostat_core.tether import statics as tether
 
     plain, count = tether.march, [0]

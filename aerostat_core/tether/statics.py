@@ -62,8 +62,9 @@ def _line_load(tx, tz, u, kn, kt, w_line, inv_ea):
     """Line load per length (f_x, f_z) [N/m] and stretched direction (dX/ds, dZ/ds) [-].
 
     ``kn`` = 1/2 rho d C_dn, ``kt`` = 1/2 rho pi d C_dt [kg/m2]. The plain definition of the
-    load: :func:`_march_plain` steps it; :func:`march` evaluates the same load on a stacked
-    complex state for narrow batches (for speed; the test suite checks the two agree).
+    load: :func:`_march_plain` steps it in numpy; :func:`march` steps the same arithmetic in a
+    compiled kernel (:mod:`aerostat_core.tether.march_kernel`; the test suite checks the two
+    agree).
     """
     t = np.sqrt(tx * tx + tz * tz) + 1e-300
     ct = tx / t
@@ -76,16 +77,11 @@ def _line_load(tx, tz, u, kn, kt, w_line, inv_ea):
     return fn * st + ft * ct, ft * st - fn * ct - w_line, stretch * ct, stretch * st
 
 
-#: Batch width above which the march runs on separate arrays (:func:`_march_plain`): there
-#: the arithmetic, not numpy's per-call overhead, is the cost, and the real-valued form has
-#: less of it than the complex one (about 450 columns on a 2026 x86-64 machine).
-_WIDE = 400
-
-
 def _march_plain(tx0, tz0, length, spec, air_density, wind, heights, weight_per_length,
                  segments, shape):
-    """:func:`march` for wide batches: Heun's method with :func:`_line_load` on one array per
-    component (the plain definition)."""
+    """:func:`march` in numpy: Heun's method with :func:`_line_load` on one array per
+    component (the plain definition, which the compiled kernel of :func:`march` steps; the
+    test suite checks the two agree)."""
     ds = length / segments
     tx = np.empty((segments + 1,) + shape)
     tz = np.empty_like(tx)
@@ -166,8 +162,10 @@ def march(
     Notes
     -----
     Valid for a taut line (T_z > 0: the elevation stays defined) in steady wind; second order in
-    ds. Batches of up to ``_WIDE`` columns step it on a stacked complex state; wider ones run
-    ``_march_plain``; both give the same numbers to a few ulp per step.
+    ds. Every column and segment is stepped in one compiled loop
+    (:func:`aerostat_core.tether.march_kernel.heun_march`, the arithmetic of ``_line_load``):
+    numpy's per-call overhead, ~1,250 calls a 50-segment line, was the cost of the numpy form
+    (``_march_plain``, kept as the reference definition).
     Source: Rajani, Pant & Sudhakar (2010) (thesis Fig. 3.10), extended as in docs/methods.md
     §1.9 (S2); drag split as in MoorDyn.
 
@@ -188,84 +186,34 @@ def march(
     tz0 = np.asarray(top_tension_z, float)
     shape = np.broadcast(tx0, tz0, heights[0]).shape
     n = int(np.prod(shape, dtype=int))
-    if n > _WIDE:
-        return _march_plain(tx0, tz0, length, spec, air_density, wind, heights,
-                            weight_per_length, segments, shape)
-    ds = length / segments
+    full = (segments + 1,) + shape
     rho = np.asarray(air_density, float)
     kn = 0.5 * rho * spec.diameter * spec.normal_drag_coefficient
     kt = 0.5 * rho * np.pi * spec.diameter * spec.tangential_drag_coefficient
-    # The Heun scheme of _line_load, stepped over a complex state: a pair (a, b) is a + ib,
-    # so the tension is T = T_x + i T_z, its direction e = T/|T| = cos + i sin, and the load
-    # f = e (f_t - i f_n) - i w' is one complex product, with (f_t, -f_n) = (k_t |u| u |cos|
-    # cos, -k_n |u| u |sin| sin). Each step is ~25 numpy calls on same-shape contiguous arrays
-    # with the output given positionally (no broadcasting, no scalar conversion, no
-    # allocation): numpy's per-call overhead, not the arithmetic, is the cost at the usual
-    # 20-60 columns. The floats are those of _line_load to a few ulp (products regrouped; |T|
-    # is np.hypot; the stretched direction (1 + T/EA) e is written e + T/EA).
-    y = np.zeros((segments + 1, 2, n), complex)  # y[node] = (T, -(X + iZ))
-    yf = y.view(float).reshape(segments + 1, 2, n, 2)
-    yf[0, 0, :, 0] = np.broadcast_to(tx0, shape).reshape(n)
-    yf[0, 0, :, 1] = np.broadcast_to(tz0, shape).reshape(n)
-    u = (wind(heights) * np.ones((segments + 1,) + shape)).reshape(segments + 1, n, 1)
-    k = np.empty((n, 2))
-    k[:, 0] = np.broadcast_to(kt, shape).reshape(n)
-    k[:, 1] = -np.broadcast_to(kn, shape).reshape(n)
-    ku = k * (np.abs(u) * u)  # (k_t |u| u, -k_n |u| u) at every node
-    tiny, ds_, h = np.array(1e-300), np.array(ds, complex), np.array(0.5 * ds, complex)
-    inv_ea = np.array(1.0 / spec.axial_stiffness, complex)
-    iw = np.array(1j * weight_per_length)
-    t = np.zeros(n, complex)  # |T| + 0i (the imaginary part stays 0)
-    t_re = t.view(float)[0::2]
-    e = np.empty(n, complex)
-    ef = e.view(float).reshape(n, 2)
-    g = np.empty((n, 2))  # (f_t, -f_n)
-    gc = g.view(complex)[:, 0]
-    va = np.empty((n, 2))
-    k1, k2, acc = (np.empty((2, n), complex) for _ in range(3))  # d/ds of y: (f, e + T/EA)
-    tp = np.empty(n, complex)  # the Heun predictor of the tension
-    mul, add, sub, div, absolute = np.multiply, np.add, np.subtract, np.divide, np.absolute
+    u = wind(heights)
+    out = _heun_march()(
+        _flat(tx0, shape, n), _flat(tz0, shape, n), _flat(u, full, (segments + 1, n)),
+        _flat(kn, shape, n), _flat(kt, shape, n),
+        float(weight_per_length), float(1.0 / spec.axial_stiffness), float(length / segments),
+    )
+    return out[0].reshape(full), out[1].reshape(full), out[2].reshape(full), out[3].reshape(full)
 
-    # views made once (indexing an array costs as much as a small ufunc call)
-    rows = list(y)
-    tens = [r[0] for r in rows]
-    kus = list(ku)
-    f1, d1, f2, d2 = k1[0], k1[1], k2[0], k2[1]
 
-    # the two load evaluations of a step, written out (a Python call per stage costs too)
-    for i in range(segments):
-        tc = tens[i]
-        absolute(tc, t_re)
-        add(t_re, tiny, t_re)
-        div(tc, t, e)
-        absolute(ef, va)
-        mul(va, ef, va)
-        mul(va, kus[i], g)
-        mul(e, gc, f1)
-        sub(f1, iw, f1)  # f_x + i f_z
-        mul(tc, inv_ea, d1)
-        add(d1, e, d1)  # -d(X + iZ)/ds
-        mul(f1, ds_, tp)
-        add(tc, tp, tp)
-        absolute(tp, t_re)
-        add(t_re, tiny, t_re)
-        div(tp, t, e)
-        absolute(ef, va)
-        mul(va, ef, va)
-        mul(va, kus[i + 1], g)
-        mul(e, gc, f2)
-        sub(f2, iw, f2)
-        mul(tp, inv_ea, d2)
-        add(d2, e, d2)
-        add(k1, k2, acc)
-        mul(acc, h, acc)
-        add(rows[i], acc, rows[i + 1])
-    full = (segments + 1,) + shape
-    tx = np.ascontiguousarray(yf[:, 0, :, 0]).reshape(full)
-    tz = np.ascontiguousarray(yf[:, 0, :, 1]).reshape(full)
-    x = (-yf[:, 1, :, 0]).reshape(full)
-    z = (-yf[:, 1, :, 1]).reshape(full)
-    return tx, tz, x, z
+def _flat(a, shape, flat):
+    """``a`` broadcast to ``shape`` as a C-contiguous float64 array of shape ``flat`` (the
+    kernel's argument types; no copy when it already is one)."""
+    a = np.asarray(a, float)
+    if a.shape != shape or not a.flags.c_contiguous:
+        a = np.ascontiguousarray(np.broadcast_to(a, shape))
+    return a.reshape(flat)
+
+
+def _heun_march():
+    """The compiled kernel of :func:`march` (:func:`aerostat_core.tether.march_kernel.heun_march`),
+    imported on the first march so that importing the library does not import numba."""
+    from aerostat_core.tether.march_kernel import heun_march
+
+    return heun_march
 
 
 def solve_tether(
