@@ -44,7 +44,8 @@ def test_sensitivity_then_quick_optimisation(thesis_page: Page, console_errors: 
 
     with page.expect_download() as info:
         page.get_by_role("button", name="Comparison (CSV)").click()
-    rows = list(csv.DictReader(io.StringIO(info.value.path().read_text())))
+    units, *rows = csv.DictReader(io.StringIO(info.value.path().read_text()))
+    assert units["total_mass_kg"] == "kg"  # the row of units under the header
     assert [r["solver"].split(" (")[0] for r in rows] == [
         "SLSQP",
         "RBF surrogate",
