@@ -22,6 +22,22 @@ import numpy as np
 from numba import njit
 
 
+@njit(cache=True, error_model="numpy", inline="always")
+def _load(tx, tz, u, kn, kt, w_line, inv_ea):  # pragma: no cover - compiled
+    """The line load and slope of ``statics._line_load`` at one node, plain real arithmetic:
+    tension (tx, tz) [N], wind u [m/s]; returns dT_x/ds, dT_z/ds [N/m] and dX/ds, dZ/ds [-]
+    (stretched line, normal and tangential drag by the cross-flow principle, weight w_line)."""
+    t = math.sqrt(tx * tx + tz * tz) + 1e-300
+    ct = tx / t
+    st = tz / t
+    un = u * st
+    ut = u * ct
+    fn = kn * abs(un) * un
+    ft = kt * abs(ut) * ut
+    stretch = 1.0 + t * inv_ea
+    return fn * st + ft * ct, ft * st - fn * ct - w_line, stretch * ct, stretch * st
+
+
 @njit(cache=True, error_model="numpy")
 def heun_march(tx0, tz0, u, kn, kt, w_line, inv_ea, ds):  # pragma: no cover - compiled
     """Heun's method for the tether ODE of :func:`aerostat_core.tether.statics.march` (its
@@ -47,33 +63,10 @@ def heun_march(tx0, tz0, u, kn, kt, w_line, inv_ea, ds):  # pragma: no cover - c
             knj = kn[j]
             ktj = kt[j]
             # first stage: the load at the node
-            t = math.sqrt(tx * tx + tz * tz) + 1e-300
-            ct = tx / t
-            st = tz / t
-            un = u[i, j] * st
-            ut = u[i, j] * ct
-            fn = knj * abs(un) * un
-            ft = ktj * abs(ut) * ut
-            stretch = 1.0 + t * inv_ea
-            fx1 = fn * st + ft * ct
-            fz1 = ft * st - fn * ct - w_line
-            cx1 = stretch * ct
-            cz1 = stretch * st
+            fx1, fz1, cx1, cz1 = _load(tx, tz, u[i, j], knj, ktj, w_line, inv_ea)
             # second stage: the load at the Euler predictor, with the next node's wind
-            px = tx + ds * fx1
-            pz = tz + ds * fz1
-            t = math.sqrt(px * px + pz * pz) + 1e-300
-            ct = px / t
-            st = pz / t
-            un = u[i + 1, j] * st
-            ut = u[i + 1, j] * ct
-            fn = knj * abs(un) * un
-            ft = ktj * abs(ut) * ut
-            stretch = 1.0 + t * inv_ea
-            fx2 = fn * st + ft * ct
-            fz2 = ft * st - fn * ct - w_line
-            cx2 = stretch * ct
-            cz2 = stretch * st
+            fx2, fz2, cx2, cz2 = _load(tx + ds * fx1, tz + ds * fz1, u[i + 1, j], knj, ktj,
+                                       w_line, inv_ea)
             out[0, i + 1, j] = tx + h * (fx1 + fx2)
             out[1, i + 1, j] = tz + h * (fz1 + fz2)
             out[2, i + 1, j] = out[2, i, j] - h * (cx1 + cx2)
