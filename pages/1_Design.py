@@ -208,14 +208,18 @@ def _tether_tab(rep: DesignReport) -> None:
 # input form (half of a full run's script time and elements); "Update design" reruns the page.
 
 
-@st.fragment
-def _results() -> None:
-    # The fragment's own error boundary: an error raised in a fragment stops at Streamlit's
+def _guarded(body) -> None:
+    # A fragment's own error boundary: an error raised in a fragment stops at Streamlit's
     # fragment handler (a redacted exception box), before app.py's boundary could see it.
     try:
-        _results_body()
+        body()
     except Exception as exc:  # noqa: BLE001 - never a traceback; a reference id, logged
         report_unexpected(exc)
+
+
+@st.fragment
+def _results() -> None:
+    _guarded(_results_body)
 
 
 def _results_body() -> None:
@@ -390,10 +394,7 @@ def _tabs() -> None:
     # verdict, the headline numbers, the constraint table and the case form above it (a third
     # of the messages and elements of a results rerun). It reads the current inputs itself:
     # a rerun of this fragment alone must not draw the inputs of an older run.
-    try:
-        _tabs_body()
-    except Exception as exc:  # noqa: BLE001 - never a traceback; a reference id, logged
-        report_unexpected(exc)
+    _guarded(_tabs_body)
 
 
 def _tabs_body() -> None:
