@@ -177,7 +177,7 @@ def test_each_scenario_holds_its_own_parts_only_so_equal_runs_compare_equal():
 
 def test_the_thesis_requests_are_the_settings_the_untyped_ones_had():
     """The thesis comparison's settings, as the dict of earlier releases wrote them (the
-    golden simulate outputs hold them byte for byte too)."""
+    golden simulate outputs hold them too)."""
     base = {"profile": "uniform", "exponent": 1.0 / 7.0, "roughness": 0.03, "body": "hull",
             "speed": 10.0, "segments": 20, "damping": 1.0, "unsteady": True, "wall": 120.0,
             "modes": False}
