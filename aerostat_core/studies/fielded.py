@@ -321,7 +321,9 @@ FIELDED: tuple[FieldedSystem, ...] = (
                   "typically remain aloft for two weeks to one month' (Shephard Media, 'DHS "
                   "assessing TCOM aerostats for border security', 2014), lower end used; "
                   "altitude: TCOM's 22 m aerostats' first flight 'up to about 2,952 feet "
-                  "(900 meters)' (tcomlp.com news page quoting the press)",
+                  "(900 meters)' (tcomlp.com news page quoting the press); the Border Patrol's "
+                  "'72-foot model can stay airborne for at least 14 days' (AP, Aug 2012, 'US "
+                  "testing surveillance balloons that proved effective in war zones')",
                   readings="class: operational by the thesis' criteria (900 m); TCOM calls "
                   "the 22M 'tactical class' (Shephard 2014). The thesis' class is used"),
     FieldedSystem("TCOM 28M", 570.0, 900.0, 28.0),
