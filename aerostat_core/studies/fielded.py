@@ -389,7 +389,12 @@ FIELDED: tuple[FieldedSystem, ...] = (
                   source="Wikipedia, 'Tethered Aerostat Radar System': 1,000 kg payload, "
                   "15,000 ft (4,600 m), an onboard diesel generator (no power through the "
                   "tether); Lockheed Martin press release, 8 Jun 2004: 420,000 ft3. No length "
-                  "published in these sources: volume only"),
+                  "published in these sources: volume only",
+                  readings="payload: 'the largest lifts a 1000 kg payload'; the same source "
+                  "has an airborne diesel generator 'supplied by a 100-gallon diesel fuel "
+                  "tank' (about 318 kg of fuel). The 1,000 kg is read as including the power "
+                  "plant (USED); the fuel on top (1,318 kg) would size +26.5 % in volume "
+                  "instead of -9.7 %, NOT USED"),
     FieldedSystem("TCOM 74M", 3200.0, 3000.0, 74.0, volume=590000 * _FT3, endurance_days=30.0,
                   source=TABLE_2_3 + "; volume 590,000 ft3 of the TCOM-built JLENS aerostat "
                   "(AIN Online, 12 Nov 2011, 'Aerostats rise through ranks in surveillance "
