@@ -192,7 +192,8 @@ class FieldedSystem:
     def hull_volume(self) -> float:
         r"""The published hull volume [m3], else that of an NPL hull of the published length at
         the published fineness ratio (practice l/d 3.03 where none is published):
-        V = (pi/6) d^2 l with d = l/f (aerostat_core.geometry.hull.hull_dimensions).
+        V = (pi/6) d^2 l with d = l/f (aerostat_core.geometry.hull.hull_dimensions); NaN
+        where neither is published.
 
         Examples
         --------
@@ -202,6 +203,8 @@ class FieldedSystem:
         """
         if self.volume:
             return float(self.volume)
+        if not self.length:
+            return float("nan")
         f = self.published_fineness_ratio or PRACTICE_FINENESS_RATIO
         unit_length = float(hull_dimensions(1.0, f)[0])
         return float((self.length / unit_length) ** 3)
@@ -435,6 +438,7 @@ def dominance_pairs(systems=None) -> list[tuple[str, str, float]]:
     for a in systems:
         for b in systems:
             if (a is b or a.aerostat_class != b.aerostat_class
+                    or not np.isfinite(a.hull_volume) or not np.isfinite(b.hull_volume)
                     or b.hull_volume < a.hull_volume or b.altitude > a.altitude):
                 continue
             factor = a.payload_fraction / b.payload_fraction

@@ -132,6 +132,10 @@ def test_the_payload_fraction_follows_square_cube_and_altitude() -> None:
     assert dominance_pairs([b, big]) == []
     pairs = dominance_pairs([b, replace(big, payload_mass=5.0)])
     assert pairs == [("b", "c", pytest.approx(4.0))]
+    # a system that publishes no size has no fraction and takes part in no pair
+    bare = FieldedSystem("d", 10.0, 300.0, None)
+    assert np.isnan(bare.payload_fraction) and dominance_pairs([b, bare]) == []
+    assert np.isnan(size_fielded(bare).as_dict()["payload_fraction"])
 
 
 def test_no_wind_reading_brings_the_tif_1600_within_15_percent() -> None:
