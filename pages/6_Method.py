@@ -329,7 +329,7 @@ with tab_val:
         )
         n_ok = int(df["Within tolerance"].sum())
         kinds = df["Kind"].value_counts().to_dict()
-        c = show.metric_row(4)
+        c = show.metric_row(5)
         c[0].metric("Checks within tolerance", f"{n_ok} / {len(df)}")
         c[1].metric("Calibrated", kinds.get("calibrated", 0))
         c[2].metric("Predicted", kinds.get("predicted", 0))
@@ -366,14 +366,18 @@ with tab_val:
         "tether chosen by load, against its published hull length and volume. The fineness "
         "ratio and the hull-systems mass law were fitted on the systems marked *fit* (declared "
         "before fitting); the others are predictions. Where a published figure is ambiguous, "
-        "the *Readings* column gives both readings and the one used (docs/validation.md §7)."
+        "the *Readings* column gives both readings and the one used (docs/validation.md §7). "
+        "*Payload fraction* is the published payload over the air the hull displaces, a "
+        "model-free check: where a hull at least as large, flying no higher, publishes less "
+        "than half of it, the *Inconsistency* column gives the evidence. Those systems stay in "
+        "every headline figure; the worst error without them is shown beside, not instead."
     )
     try:
         stats, rows = _fielded_rows()
     except Exception as exc:  # noqa: BLE001 - never show a traceback
         st.error(text.plain(short(f"The fielded-aerostat harness could not be run: {exc}")))
     else:
-        c = show.metric_row(4)
+        c = show.metric_row(5)
         c[0].metric("Median |length error|, all [%]", f"{100 * stats['all_median']:.1f}",
                     help="Target: at most 6 %.")
         c[1].metric("Worst |length error|, all [%]", f"{100 * stats['all_worst']:.1f}",
@@ -383,6 +387,10 @@ with tab_val:
                     help="The systems the fit did not see.")
         c[3].metric("Median |volume error| [%]", f"{100 * stats['volume_median']:.1f}",
                     help="Where a volume is published. Target: at most 12 %.")
+        c[4].metric("Worst |length error|, consistent figures [%]",
+                    f"{100 * stats['consistent_worst']:.1f}",
+                    help="Without the systems whose published figures fail the model-free "
+                    "payload-fraction check (Inconsistency column). Not the target's set.")
         fielded, names = formats.frame_in_system(pd.DataFrame([{
                 "System": r["system"], "Class": r["class"], "Role": r["role"],
                 "Payload [kg]": r["payload_kg"],
@@ -392,8 +400,9 @@ with tab_val:
                 "Published volume [m³]": r["published_volume_m3"],
                 "Predicted volume [m³]": r["predicted_volume_m3"],
                 "Volume error [%]": r["volume_error_pct"],
-                "Sized by": r["sized_by"], "Source": r["source"],
-                "Readings": r["readings"],
+                "Sized by": r["sized_by"], "Payload fraction": r["payload_fraction"],
+                "Source": r["source"], "Readings": r["readings"],
+                "Inconsistency": r["inconsistency"],
             } for r in rows]))  # in the chosen unit system: "Altitude [ft]" in US
         st.dataframe(
             fielded,
@@ -404,6 +413,7 @@ with tab_val:
                 "Predicted volume [m³]": st.column_config.NumberColumn(format="%.1f"),
                 "Published volume [m³]": st.column_config.NumberColumn(format="%.1f"),
                 "Volume error [%]": st.column_config.NumberColumn(format="%+.1f"),
+                "Payload fraction": st.column_config.NumberColumn(format="%.3f"),
             }.items()},
         )
 

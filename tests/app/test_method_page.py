@@ -99,6 +99,10 @@ def test_fielded_harness_is_shown_live():
     assert shown["Median |length error|, all [%]"] == f"{100 * st['all_median']:.1f}"
     assert shown["Median |length error|, held out [%]"] == f"{100 * st['held_out_median']:.1f}"
     assert shown["Median |volume error| [%]"] == f"{100 * st['volume_median']:.1f}"
+    assert shown["Worst |length error|, consistent figures [%]"] == \
+        f"{100 * st['consistent_worst']:.1f}"
     df = next(d.value for d in app.dataframe if "Published length [m]" in d.value.columns)
     assert list(df["System"]) == [r.system.name for r in v.rows]
     assert set(df["Class"]) == {"tactical", "operational", "strategic"}
+    flagged = {r.system.name for r in v.rows if not r.system.consistent}
+    assert {n for n, t in zip(df["System"], df["Inconsistency"]) if t} == flagged
