@@ -2,7 +2,7 @@
 6-DOF lateral-stability result of a sized design, which fills its row of the one constraint
 table (:mod:`aerostat_core.model.constraints`, row ``lateral_stability``).
 
-The row needs the 6-DOF model linearised at each wind speed of the sweep (about 0.2 s of CPU
+The row needs the 6-DOF model linearised at each wind speed of the sweep (about 25 ms of CPU
 for a design once the compiled kernels are loaded), so the static engine's vectorised table,
 which sizing and the optimiser evaluate thousands of times, leaves it "not evaluated", and
 :func:`assess_lateral` fills it for the finished design. The CLI, the report and the app show
