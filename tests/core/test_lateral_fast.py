@@ -113,3 +113,23 @@ def test_default_sweep_is_shared_by_the_row_and_the_views() -> None:
         first[0][0].state[0] = 1.0
     clear_cache()
     assert lat.lateral_sweep(d) is not first
+
+
+@pytest.mark.parametrize("segments", [3, 8, 20])
+def test_grouped_lateral_jacobian_is_the_dense_one_to_the_last_bit(segments) -> None:
+    """The lateral columns differenced in groups (the line is local) give exactly the lateral
+    block of the whole central-difference Jacobian: same increments, and an equation outside a
+    column's group does not read that column's state."""
+    from aerostat_core.dynamics.sixdof import Wind3D, initial_state6
+
+    d = _design(-40.0, 0.68, 20.0)
+    system = system6_from_design(d, segments=segments)
+    wind = Wind3D.steady(6.0)
+    field_ = wind.base.realize(system.tether.length, 60.0)
+    data = system.data(field_, wind)
+    y = initial_state6(system, wind, d, field_, data)
+    idx = lat.lateral_indices(system)
+    dense = lat.jacobian6(system, data, y)[np.ix_(idx, idx)]
+    grouped = lat.lateral_jacobian(system, data, y)
+    assert np.count_nonzero(dense) > idx.size  # a real coupled block
+    np.testing.assert_array_equal(grouped, dense)
