@@ -15,6 +15,7 @@ C_D,max (sin^2 a - sin^2 a_s)_+, C_D,max = 1.11 + 0.018 AR), continuous at the s
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass, field, replace
 
@@ -27,6 +28,38 @@ from .layout import T_ROWS
 
 #: Spacing of the aerodynamic tables [rad].
 ALPHA_STEP = math.radians(0.01)
+
+
+@functools.cache
+def _alpha_grid() -> np.ndarray:
+    """The tables' angle grid [rad], -pi to pi in :data:`ALPHA_STEP` (read-only, made once:
+    every hull built in a process shares it and the functions of it below)."""
+    alpha = np.arange(-math.pi, math.pi + 0.5 * ALPHA_STEP, ALPHA_STEP)
+    alpha.flags.writeable = False
+    return alpha
+
+
+@functools.cache
+def _grid_functions() -> dict:
+    """Functions of the angle grid alone that every table build uses (the same expressions as
+    where they are used, evaluated once per process): sign(cos alpha), |alpha|, sign(alpha),
+    sin(2 |alpha|) and sin^2(alpha)."""
+    alpha = _alpha_grid()
+    out = {"sign_cos": np.sign(np.cos(alpha)), "abs": np.abs(alpha), "sign": np.sign(alpha)}
+    out["sin_2abs"] = np.sin(2.0 * out["abs"])
+    out["sin_sq"] = np.sin(alpha) ** 2
+    for v in out.values():
+        v.flags.writeable = False
+    return out
+
+
+@functools.cache
+def _gauss_legendre(n: int) -> tuple[np.ndarray, np.ndarray]:
+    """Gauss-Legendre nodes and weights on [-1, 1] (numpy's ``leggauss``, made once per n)."""
+    gx, gw = np.polynomial.legendre.leggauss(n)
+    gx.flags.writeable = False
+    gw.flags.writeable = False
+    return gx, gw
 #: Added-mass coefficient of a sphere (point aerostat), C_a = 1/2 [-] (Lamb 1932 §92).
 SPHERE_ADDED_MASS_COEFFICIENT = 0.5
 
@@ -346,7 +379,7 @@ def hull_from_airframe(af, aero, *, unsteady_wind_inertia: bool = True, strips_p
     i_air = rho * float(np.sum(wv[k] * ((xi_q[k] - xi_cv) ** 2 + 0.25 * r_q[k] ** 2)))
     mx, mz, ia, _ = lamb_added_mass(sc(h.fineness_ratio), vol, rho, i_air)
     # aero tables from the engine's functions
-    alpha = np.arange(-math.pi, math.pi + 0.5 * ALPHA_STEP, ALPHA_STEP)
+    alpha = _alpha_grid()
     dk = sc(h.k2) - sc(h.k1)
     n_i, a_i, m_i = ad.hull_inviscid(1.0, alpha, dk, aero.hull_efficiency, sc(af.i1), sc(af.i3))
     # inviscid moment is about xi_m: move it to the CV (M_O = M_m + (xi_CV - xi_m) N)
@@ -358,7 +391,7 @@ def hull_from_airframe(af, aero, *, unsteady_wind_inertia: bool = True, strips_p
         sc(fn.lifting_area), sc(fn.area_total), aero.fin_zero_lift_drag, sc(fn.aspect_ratio),
         sc(fn.oswald),
     )
-    a_x = a_x * np.sign(np.cos(alpha))  # axial drag opposes the axial wind over +-180 deg
+    a_x = a_x * _grid_functions()["sign_cos"]  # axial drag opposes the axial wind over +-180 deg
     lift, drag = fin_post_stall(alpha, lift * np.ones_like(alpha), drag * np.ones_like(alpha),
                                 math.radians(aero.fin_stall_angle_deg), sc(fn.lifting_area),
                                 sc(fn.aspect_ratio))
@@ -369,7 +402,7 @@ def hull_from_airframe(af, aero, *, unsteady_wind_inertia: bool = True, strips_p
         cdv = cdv[..., k] if cdv.shape[-1] != speeds.size else cdv.reshape(-1, speeds.size)[k]
     cdv = np.broadcast_to(cdv, speeds.shape).copy()
     # cross-flow strips on the NPL profile: u = sin(phi) on each half ellipse
-    gx, gw = np.polynomial.legendre.leggauss(strips_per_half)
+    gx, gw = _gauss_legendre(strips_per_half)
     phi_f = 0.25 * math.pi * (gx - 1.0)  # [-pi/2, 0]
     phi_a = 0.25 * math.pi * (gx + 1.0)  # [0, pi/2]
     xi_s = np.concatenate([a1 * (1.0 + np.sin(phi_f)), a1 + a2 * np.sin(phi_a)])
@@ -424,14 +457,20 @@ def fin_post_stall(alpha, lift, drag, stall_angle: float, lifting_area: float,
         AR of the fin pair [-].
     """
     alpha = np.asarray(alpha, float)
+    if alpha is _alpha_grid():  # the tables' grid: its functions are made once
+        g = _grid_functions()
+    else:
+        g = {"abs": np.abs(alpha), "sign": np.sign(alpha)}
+        g["sin_2abs"] = np.sin(2.0 * g["abs"])
+        g["sin_sq"] = np.sin(alpha) ** 2
     a_s = float(stall_angle)
-    beyond = np.abs(alpha) > a_s
+    beyond = g["abs"] > a_s
     l_s = np.interp(a_s, alpha, lift)
     s2s = math.sin(2.0 * a_s)
-    lift = np.where(beyond, l_s * np.sin(2.0 * np.abs(alpha)) / s2s * np.sign(alpha), lift)
+    lift = np.where(beyond, l_s * g["sin_2abs"] / s2s * g["sign"], lift)
     cdmax = 1.11 + 0.018 * aspect_ratio
     d_s = np.interp(a_s, alpha, drag)
-    extra = np.maximum(np.sin(alpha) ** 2 - math.sin(a_s) ** 2, 0.0)
+    extra = np.maximum(g["sin_sq"] - math.sin(a_s) ** 2, 0.0)
     drag = np.where(beyond, d_s + lifting_area * cdmax * extra, drag)
     return lift, drag
 

@@ -2,7 +2,7 @@
 6-DOF lateral-stability result of a sized design, which fills its row of the one constraint
 table (:mod:`aerostat_core.model.constraints`, row ``lateral_stability``).
 
-The row needs the 6-DOF model linearised at each wind speed of the sweep (about 0.2 s of CPU
+The row needs the 6-DOF model linearised at each wind speed of the sweep (about 25 ms of CPU
 for a design once the compiled kernels are loaded), so the static engine's vectorised table,
 which sizing and the optimiser evaluate thousands of times, leaves it "not evaluated", and
 :func:`assess_lateral` fills it for the finished design. The CLI, the report and the app show
@@ -16,7 +16,14 @@ from __future__ import annotations
 from collections import OrderedDict
 from threading import Lock
 
-from aerostat_core.dynamics.lateral import lateral_modes, lateral_sweep, static_lateral_derivatives
+from aerostat_core.dynamics.lateral import (
+    SWEEP_SEGMENTS,
+    cached_sweep,
+    clear_sweep_cache,
+    design_key,
+    lateral_modes,
+    static_lateral_derivatives,
+)
 from aerostat_core.dynamics.sixdof import system6_from_design
 from aerostat_core.model.constraints import LateralStability, lateral_applies
 
@@ -28,7 +35,7 @@ _lock = Lock()
 
 def _key(d) -> str:
     # the exact repr of the frozen inputs and the volume (the app's cache key, docs/architecture.md §2.2)
-    return repr((d.requirement, d.configuration, float(d.volume)))
+    return design_key(d)
 
 
 def lateral_stability(d) -> LateralStability:
@@ -63,12 +70,12 @@ def _compute(d) -> LateralStability:
         why = ("the hull cannot lift its weight: no equilibrium in the wind" if d.sinks
                else "no design wind: no equilibrium in a wind to linearise about")
         return LateralStability(checked, None, vs, None, None, None, None, None, note=why)
-    system = system6_from_design(d, segments=8)
+    system = system6_from_design(d, segments=SWEEP_SEGMENTS)
     above = None
     state = None
     try:
         if checked:
-            analyses, above = lateral_sweep(d, system=system)
+            analyses, above = cached_sweep(d, system=system)
             state = next((a.state for a in analyses if a.speed == vd), None)
         if state is None:
             state = lateral_modes(system, vd, d).state
@@ -83,9 +90,10 @@ def _compute(d) -> LateralStability:
 
 
 def clear_cache() -> None:
-    """Forget the cached results (a benchmark times the computation itself)."""
+    """Forget the cached results and sweeps (a benchmark times the computation itself)."""
     with _lock:
         _cache.clear()
+    clear_sweep_cache()
 
 
 def assess_lateral(d):

@@ -532,6 +532,30 @@ def engine_guess(system: DynamicSystem, design, speed: float) -> np.ndarray:
     x = np.asarray(ev.tether.x, float).reshape(-1)
     z = np.asarray(ev.tether.z, float).reshape(-1)
     alpha = float(np.asarray(ev.equilibrium.alpha).reshape(-1)[0])
+    return _rest_state_on_profile(system, x, z, alpha)
+
+
+def engine_guesses(system: DynamicSystem, design, speeds) -> np.ndarray:
+    """:func:`engine_guess` at each wind speed of ``speeds`` [m/s] (1-D), from one vectorised
+    call of the static engine instead of one per speed; row k is the rest state at
+    ``speeds[k]``. The engine solves each speed of the batch as it solves it alone (the trim and
+    the tether march are elementwise), so row k is :func:`engine_guess` at ``speeds[k]`` to
+    rounding (~1e-18 rad in the trim angle)."""
+    from aerostat_core.model.performance import evaluate
+
+    speeds = np.asarray(speeds, float).reshape(-1)
+    ev = evaluate(design.requirement, design.configuration, design.airframe, speeds)
+    x = np.asarray(ev.tether.x, float).reshape(-1, speeds.size)
+    z = np.asarray(ev.tether.z, float).reshape(-1, speeds.size)
+    alpha = np.asarray(ev.equilibrium.alpha, float).reshape(-1) * np.ones(speeds.size)
+    return np.array([_rest_state_on_profile(system, x[:, k], z[:, k], float(alpha[k]))
+                     for k in range(speeds.size)])
+
+
+def _rest_state_on_profile(system: DynamicSystem, x: np.ndarray, z: np.ndarray,
+                           alpha: float) -> np.ndarray:
+    """Rest state on the engine's tether profile (x, z) [m] (nodes from the top) with the hull
+    at the trim angle ``alpha`` [rad] (:func:`engine_guess`)."""
     n_eng = x.size - 1
     length = system.tether.length
     s_eng = np.linspace(0.0, length, n_eng + 1)  # from the top

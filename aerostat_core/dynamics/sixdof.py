@@ -492,6 +492,16 @@ def _apply(system: System6, y, dx) -> np.ndarray:
     return y
 
 
+def _max_acceleration6(system: System6, data, y) -> float:
+    """Largest |acceleration| [m/s2, rad/s2] of the rest state ``y`` (the residual that
+    :func:`equilibrium6` drives to zero): the free nodes' and the hull's."""
+    n = system.tether.segments
+    b = system.hull_index
+    dy = system.rhs(0.0, y, data)[0]
+    acc = np.concatenate([dy[:b].reshape(n - 1, 6)[:, 3:].reshape(-1), dy[b + 7:b + 13]])
+    return float(np.max(np.abs(acc))) if np.all(np.isfinite(acc)) else math.inf
+
+
 def equilibrium6(system: System6, data, guess, tol: float = 1e-9, max_iter: int = 40):
     """Static equilibrium of the 6-DOF model at t = 0 (velocities zero): Newton on the free-node
     positions, the position of O and a body rotation vector, with a dense finite-difference
@@ -544,26 +554,43 @@ def equilibrium6(system: System6, data, guess, tol: float = 1e-9, max_iter: int 
 # Runs
 # --------------------------------------------------------------------------------------------
 def initial_state6(system: System6, wind3: Wind3D, design=None, field_: WindField | None = None,
-                   data=None):
+                   data=None, guess3: np.ndarray | None = None,
+                   polish_tol: float | None = None):
     """Equilibrium at t = 0 in ``wind3``: the 3-DOF equilibrium of the same hull and tether in
     the wind at the hull, turned to the azimuth, then polished by :func:`equilibrium6` (it moves
-    the line out of the plane when the wind veers)."""
+    the line out of the plane when the wind veers).
+
+    ``guess3``: the 3-DOF rest state to start from (default: the static engine's solution,
+    :func:`~.simulate.engine_guess`, for a design; else a straight line); a start that fails
+    falls back to the straight line as the engine's does. ``polish_tol`` [m/s2, rad/s2]: when
+    given, the 6-DOF polish is skipped if the turned 3-DOF equilibrium already balances every
+    6-DOF acceleration to within it. In a steady wind without veer the 6-DOF model in the
+    vertical plane of the wind is the 3-DOF model (the lateral accelerations vanish by symmetry
+    and the in-plane ones are the 3-DOF kernel's), so the polish would move the state by about
+    the 3-DOF Newton's own tolerance (~1e-9 m) and costs more than the rest together
+    (docs/dynamics.md §7.5)."""
     from aerostat_core.dynamics.simulate import engine_guess, equilibrium, straight_guess
 
     base = system.base
     f0 = wind3.base.realize(system.tether.length, 60.0) if field_ is None else field_
-    g3 = engine_guess(base, design, wind3.base.initial_speed()) if design is not None \
-        else straight_guess(base, f0)
+    if guess3 is not None:
+        g3 = guess3
+    else:
+        g3 = engine_guess(base, design, wind3.base.initial_speed()) if design is not None \
+            else straight_guess(base, f0)
     try:
         y3, _ = equilibrium(base, f0, g3)
     except RuntimeError:
-        if design is None:
+        if design is None and guess3 is None:
             raise
         y3, _ = equilibrium(base, f0, straight_guess(base, f0))  # the engine's line too coarse
     y6 = system.from_3dof(y3, wind3.azimuth_deg)
     if data is None:
         data = system.data(f0, wind3)
-    y = equilibrium6(system, data, y6)[0]
+    if polish_tol is not None and _max_acceleration6(system, data, y6) <= polish_tol:
+        y = y6
+    else:
+        y = equilibrium6(system, data, y6)[0]
     roll, pitch, yaw = system.euler(y)
     yaw_rel = math.remainder(yaw + math.radians(wind3.azimuth_deg), 2 * math.pi)
     if max(abs(roll), abs(pitch), abs(yaw_rel)) > 0.5 * math.pi:
