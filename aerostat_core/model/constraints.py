@@ -416,15 +416,6 @@ class ConstraintState:
         return rows
 
 
-def _columns(parts, batch: tuple) -> np.ndarray:
-    """The per-constraint arrays as the columns of one array of shape batch + (n,) (one
-    broadcast for all of them, not one per column)."""
-    out = np.stack(np.broadcast_arrays(*(np.asarray(p, float) for p in parts)), axis=-1)
-    if out.shape[:-1] != batch:
-        out = np.array(np.broadcast_to(out, batch + out.shape[-1:]))
-    return out
-
-
 def constraint_state(req: Requirement, cfg: Configuration, af: Airframe,
                      heights_hint=None) -> ConstraintState:
     """Evaluate the whole table for an airframe batch (one trim + tether solve at two winds).
@@ -454,8 +445,10 @@ def constraint_state(req: Requirement, cfg: Configuration, af: Airframe,
     wq = wind_quantities(req, cfg, ev)
     sq = static_quantities(req, af, cfg)
     full = (2,) + np.broadcast_shapes(shape, np.shape(ev.tether.blow_by)[1:])
-    cols = []
-    for c in CONSTRAINTS:
+    # the four tables, filled column by column (one broadcasting assignment a row: the same
+    # numbers as stacking the rows, without the broadcast and stack of each table)
+    tables = tuple(np.empty(full[1:] + (len(CONSTRAINTS),)) for _ in range(4))
+    for k, c in enumerate(CONSTRAINTS):
         if c.name == "lateral_stability":
             parts = lateral_quantities(req.survival_wind, None)
         elif c.at == "static":
@@ -470,8 +463,9 @@ def constraint_state(req: Requirement, cfg: Configuration, af: Airframe,
                 lim = req.survival_safety_factor
                 v = np.asarray(parts[0], float)
                 parts = [v, np.full_like(v, lim), *_lower(v, lim)]
-        cols.append(parts)
-    value, limit, g, margin = (_columns([p[j] for p in cols], full[1:]) for j in range(4))
+        for table, part in zip(tables, parts):
+            table[..., k] = part
+    value, limit, g, margin = tables
     return ConstraintState(g=g, margin=margin, value=value, limit=limit,
                            design_wind=float(req.design_wind),
                            survival_wind=float(req.survival_wind), evaluation=ev,
