@@ -441,7 +441,16 @@ def constraint_state(req: Requirement, cfg: Configuration, af: Airframe,
     req = req.resolved()
     shape = np.shape(af.hull.volume)
     speeds = np.array([req.design_wind, req.survival_wind], float).reshape((2,) + (1,) * len(shape))
-    ev = evaluate(req, cfg, af, speeds, heights_hint)
+    return table_of(req, cfg, evaluate(req, cfg, af, speeds, heights_hint))
+
+
+def table_of(req: Requirement, cfg: Configuration, ev: Evaluation) -> ConstraintState:
+    """The table of :func:`constraint_state` from its evaluation ``ev`` (trim and tether at the
+    [design, survival] wind, the first axis; its airframe the batch), for a caller that has
+    one: the selection, whose items' strengths change no trim and no tether line
+    (:func:`aerostat_core.model.selection.select_materials`). ``req`` resolved."""
+    af = ev.airframe
+    shape = np.shape(af.hull.volume)
     wq = wind_quantities(req, cfg, ev)
     sq = static_quantities(req, af, cfg)
     full = (2,) + np.broadcast_shapes(shape, np.shape(ev.tether.blow_by)[1:])

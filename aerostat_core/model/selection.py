@@ -18,8 +18,9 @@ The loads depend on the hull and the hull on the materials' mass, so the choice 
 point, found by :func:`select_materials`: size the hull with the candidate items' masses (their
 strengths held out of the constraint table), read the loads at the sized volume, take the
 lightest items that carry them, repeat until nothing changes (items only ever get stronger, so
-this ends within the catalogue), then evaluate the table of that hull with the chosen items'
-strengths (the same airframe: a strength changes no mass); where an item row fails there, the
+this ends within the catalogue), then read the table of that hull with the chosen items'
+strengths (the same airframe, trim and tether line: a strength changes no mass, so no solve is
+run again); where an item row fails there, the
 hull is sized again with the chosen items. Where the first
 candidates (the lightest) already carry their loads on a feasible design, that first sizing is
 the answer. An item no catalogue entry can supply is reported with its shortfall
@@ -284,16 +285,26 @@ class Selection:
         return [s.message() for s in self.shortfalls]
 
 
-def _airframe(req, cfg, volume: float):
-    from aerostat_core.model.airframe import build_airframe
+def _table(req, cfg, relaxed):
+    """The constraint table of the relaxed state ``relaxed`` (one design, evaluated with the
+    items' strengths held out) with ``cfg``'s items, whose strengths change no mass: its
+    airframe with the tether as flown by ``cfg`` (the same mass, the real breaking load), its
+    trim and tether line as they are, and the tether's safety factor at each wind from the
+    real breaking load, F / max(T, 1e-9) N as :func:`aerostat_core.model.performance.evaluate`
+    computes it; then :func:`aerostat_core.model.constraints.table_of`. The same numbers as
+    evaluating ``cfg`` at that volume again, to rounding (the relaxed state comes from the
+    sizing's batch)."""
+    from aerostat_core.model.constraints import table_of
 
-    return build_airframe(req, cfg, volume)
-
-
-def _table(req, cfg, af):
-    from aerostat_core.model.constraints import constraint_state
-
-    return constraint_state(req, cfg, af)
+    ev = relaxed.evaluation
+    spec = effective_tether(req, cfg)
+    af = copy.copy(ev.airframe)
+    object.__setattr__(af, "tether", spec)
+    ev = copy.copy(ev)
+    object.__setattr__(ev, "airframe", af)
+    tmax = np.max(ev.tether.tension, axis=0)
+    object.__setattr__(ev, "safety_factor", spec.breaking_strength / np.maximum(tmax, 1e-9))
+    return table_of(req, cfg, ev)
 
 
 def _evaluate(req, cfg, explain=None):
@@ -363,12 +374,11 @@ def select_materials(req, cfg) -> Selection:
             break
     c = with_items(cfg, idx)
     # the relaxed hull with the chosen items' strengths: the strengths change no mass, so the
-    # airframe is the same and only its table is evaluated again (one volume, not a search);
-    # where every item row holds there, the first feasible volume is the relaxed one (the loads
-    # grow with the hull, so the items hold below it too)
-    volume = float(np.asarray(af_r.hull.volume).reshape(-1)[0])
-    af = _airframe(req, c, volume)
-    state = _table(req, c, af)
+    # airframe, its trim and its tether line are the same and only the table is read again
+    # from them (no search, no solve); where every item row holds there, the first feasible
+    # volume is the relaxed one (the loads grow with the hull, so the items hold below it too)
+    state = _table(req, c, st_r)
+    af = state.evaluation.airframe
     relaxed_ok = s_r is None or bool(np.asarray(s_r.feasible).reshape(-1)[0])
     if relaxed_ok and all(_rows_met(state).values()):
         sizing = None if s_r is None else replace(s_r, state=state)
