@@ -465,9 +465,10 @@ def table_of(req: Requirement, cfg: Configuration, ev: Evaluation) -> Constraint
         else:
             i = 1 if c.at == "survival" else 0
             src = wq["safety_factor"] if c.name == "survival_safety_factor" else wq[c.name]
-            # the wind rows carry the speed axis first (wind_quantities broadcasts them)
-            parts = [x[i] if np.ndim(x) == len(full) else np.broadcast_to(x, full)[i]
-                     for x in src]
+            # the wind rows carry the speed axis first (wind_quantities broadcasts them); a
+            # part without it is the same at both winds (the assignment broadcasts it)
+            nd = len(full)
+            parts = [x[i] if np.ndim(x) == nd else x for x in src]
             if c.name == "survival_safety_factor":
                 lim = req.survival_safety_factor
                 v = np.asarray(parts[0], float)
