@@ -8,6 +8,8 @@ those defaults (constants.PRESSURE_DYNAMIC_FACTOR, constants.ENVELOPE_SAFETY_FAC
 
 from __future__ import annotations
 
+import functools
+
 import numpy as np
 
 
@@ -294,7 +296,7 @@ def envelope_loads(af, cfg, ev, stations: int = BEAM_STATIONS) -> dict:
     -----
     The loop along the stations runs compiled (:func:`aerostat_core.structures.beam_kernel.
     envelope_beam`, every design and speed in one call); :func:`_envelope_loads_plain` is the
-    same arithmetic in numpy, kept as the reference definition (tests/core/test_envelope.py
+    same arithmetic in numpy, kept as the reference definition (tests/core/test_fast_paths.py
     checks the two agree).
     """
     from aerostat_core.aerodynamics.forces import fin_lift_drag, hull_crossflow, hull_inviscid
@@ -305,13 +307,11 @@ def envelope_loads(af, cfg, ev, stations: int = BEAM_STATIONS) -> dict:
     speed = np.asarray(ev.speed, float)
     q = 0.5 * af.air_density * speed**2
     shape = np.broadcast_shapes(np.shape(alpha), np.shape(q), np.shape(h.length))
-    ns = max(int(stations), 11)
-    t = np.linspace(0.0, 1.0, ns).reshape((-1,) + (1,) * len(shape))
+    t, wts = _stations(max(int(stations), 11), len(shape))
+    ns = wts.size
     length = np.asarray(h.length, float)
     x = t * length
     r = h.radius_at(x)
-    wts = np.ones(ns)
-    wts[0] = wts[-1] = 0.5
     ca = np.cos(alpha)
     drho = af.air_density - af.gas_density
     streamlined = SHAPE_INFO[h.shape].streamlined
@@ -372,6 +372,18 @@ def envelope_loads(af, cfg, ev, stations: int = BEAM_STATIONS) -> dict:
         "governing_radius": r_gov,
         "head": np.broadcast_to(head, shape),
     }
+
+
+@functools.lru_cache(maxsize=16)
+def _stations(ns: int, ndim: int):
+    """Station fractions 0..1 (shape (ns,) + (1,) * ndim) and trapezoid weights (1/2 at the
+    ends) of :func:`envelope_loads`, built once per size (the fractions read-only; the weights
+    are only read, by the compiled kernel, which takes writable arrays)."""
+    t = np.linspace(0.0, 1.0, ns).reshape((-1,) + (1,) * ndim)
+    wts = np.ones(ns)
+    wts[0] = wts[-1] = 0.5
+    t.flags.writeable = False
+    return t, wts
 
 
 def _envelope_beam():
