@@ -29,10 +29,13 @@ RUN pip install --no-cache-dir -r requirements.txt
 # The code stays owned by root: the app user can read it, not change it.
 COPY . .
 
-# Compile the dynamics' numba kernels once at build time (about 15 s), so the first simulation
-# in a container does not pay for it; the cache stays writable for the app user.
+# Compile the dynamics' numba kernels once at build time (about 15 s), and the core's (the
+# tether march and the envelope beam, by one default design: a few seconds), so the first
+# simulation or design in a container does not pay for it; the cache stays writable for the
+# app user.
 RUN mkdir -p /var/cache/numba \
     && python -c "from aerostat_core.dynamics import warm_up; warm_up()" \
+    && python -c "from aerostat_core import design; design()" \
     && chown -R 10001:10001 /var/cache/numba
 
 # The workspace database (SQLite, WAL) in a volume owned by the app user.

@@ -416,15 +416,6 @@ class ConstraintState:
         return rows
 
 
-def _columns(parts, batch: tuple) -> np.ndarray:
-    """The per-constraint arrays as the columns of one array of shape batch + (n,) (one
-    broadcast for all of them, not one per column)."""
-    out = np.stack(np.broadcast_arrays(*(np.asarray(p, float) for p in parts)), axis=-1)
-    if out.shape[:-1] != batch:
-        out = np.array(np.broadcast_to(out, batch + out.shape[-1:]))
-    return out
-
-
 def constraint_state(req: Requirement, cfg: Configuration, af: Airframe,
                      heights_hint=None) -> ConstraintState:
     """Evaluate the whole table for an airframe batch (one trim + tether solve at two winds).
@@ -450,12 +441,23 @@ def constraint_state(req: Requirement, cfg: Configuration, af: Airframe,
     req = req.resolved()
     shape = np.shape(af.hull.volume)
     speeds = np.array([req.design_wind, req.survival_wind], float).reshape((2,) + (1,) * len(shape))
-    ev = evaluate(req, cfg, af, speeds, heights_hint)
+    return table_of(req, cfg, evaluate(req, cfg, af, speeds, heights_hint))
+
+
+def table_of(req: Requirement, cfg: Configuration, ev: Evaluation) -> ConstraintState:
+    """The table of :func:`constraint_state` from its evaluation ``ev`` (trim and tether at the
+    [design, survival] wind, the first axis; its airframe the batch), for a caller that has
+    one: the selection, whose items' strengths change no trim and no tether line
+    (:func:`aerostat_core.model.selection.select_materials`). ``req`` resolved."""
+    af = ev.airframe
+    shape = np.shape(af.hull.volume)
     wq = wind_quantities(req, cfg, ev)
     sq = static_quantities(req, af, cfg)
     full = (2,) + np.broadcast_shapes(shape, np.shape(ev.tether.blow_by)[1:])
-    cols = []
-    for c in CONSTRAINTS:
+    # the four tables, filled column by column (one broadcasting assignment a row: the same
+    # numbers as stacking the rows, without the broadcast and stack of each table)
+    tables = tuple(np.empty(full[1:] + (len(CONSTRAINTS),)) for _ in range(4))
+    for k, c in enumerate(CONSTRAINTS):
         if c.name == "lateral_stability":
             parts = lateral_quantities(req.survival_wind, None)
         elif c.at == "static":
@@ -463,15 +465,17 @@ def constraint_state(req: Requirement, cfg: Configuration, af: Airframe,
         else:
             i = 1 if c.at == "survival" else 0
             src = wq["safety_factor"] if c.name == "survival_safety_factor" else wq[c.name]
-            # the wind rows carry the speed axis first (wind_quantities broadcasts them)
-            parts = [x[i] if np.ndim(x) == len(full) else np.broadcast_to(x, full)[i]
-                     for x in src]
+            # the wind rows carry the speed axis first (wind_quantities broadcasts them); a
+            # part without it is the same at both winds (the assignment broadcasts it)
+            nd = len(full)
+            parts = [x[i] if np.ndim(x) == nd else x for x in src]
             if c.name == "survival_safety_factor":
                 lim = req.survival_safety_factor
                 v = np.asarray(parts[0], float)
                 parts = [v, np.full_like(v, lim), *_lower(v, lim)]
-        cols.append(parts)
-    value, limit, g, margin = (_columns([p[j] for p in cols], full[1:]) for j in range(4))
+        for table, part in zip(tables, parts):
+            table[..., k] = part
+    value, limit, g, margin = tables
     return ConstraintState(g=g, margin=margin, value=value, limit=limit,
                            design_wind=float(req.design_wind),
                            survival_wind=float(req.survival_wind), evaluation=ev,

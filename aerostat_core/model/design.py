@@ -420,6 +420,14 @@ class Design:
         return self.constraints.rows()
 
 
+@functools.lru_cache(maxsize=16)
+def _rules_configuration(rules: str) -> Configuration:
+    """:func:`aerostat_core.model.presets.rules_configuration` of a rule set, built once (a
+    frozen configuration: every default design of the rule set shares it; building and
+    validating it again was a twentieth of a tactical design's time)."""
+    return rules_configuration(rules)
+
+
 def design(req: Requirement | None = None, cfg: Configuration | None = None) -> Design:
     """Size (if no volume is given), trim and evaluate an aerostat.
 
@@ -446,7 +454,7 @@ def design(req: Requirement | None = None, cfg: Configuration | None = None) -> 
     (True, 21)
     """
     req = (Requirement() if req is None else req).resolved()
-    cfg = rules_configuration(req.rules) if cfg is None else cfg
+    cfg = _rules_configuration(req.rules) if cfg is None else cfg
     budget.check_design(req, cfg)
     sizing = selection = None
     if cfg.materials == "catalogue":  # fabrics and tether chosen by their loads (issue 23)

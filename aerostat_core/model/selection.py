@@ -18,8 +18,9 @@ The loads depend on the hull and the hull on the materials' mass, so the choice 
 point, found by :func:`select_materials`: size the hull with the candidate items' masses (their
 strengths held out of the constraint table), read the loads at the sized volume, take the
 lightest items that carry them, repeat until nothing changes (items only ever get stronger, so
-this ends within the catalogue), then evaluate the table of that hull with the chosen items'
-strengths (the same airframe: a strength changes no mass); where an item row fails there, the
+this ends within the catalogue), then read the table of that hull with the chosen items'
+strengths (the same airframe, trim and tether line: a strength changes no mass, so no solve is
+run again); where an item row fails there, the
 hull is sized again with the chosen items. Where the first
 candidates (the lightest) already carry their loads on a feasible design, that first sizing is
 the answer. An item no catalogue entry can supply is reported with its shortfall
@@ -33,6 +34,7 @@ so that a fuller structural model (bending, wrinkling) can replace it in one pla
 from __future__ import annotations
 
 import copy
+import functools
 from dataclasses import dataclass, replace
 
 import numpy as np
@@ -131,13 +133,14 @@ class Needs:
     tether: float
 
 
-def _lightest(items, needed: float, weight):
-    """(index, shortfall?) of the lightest ``items`` entry whose strength meets ``needed``."""
+def _lightest(items, needed: float, weights):
+    """(index, shortfall?) of the lightest ``items`` entry (``weights`` per entry) whose
+    strength meets ``needed``."""
     ok = [i for i, it in enumerate(items) if _strength(it) >= needed]
     if not ok:
         best = max(range(len(items)), key=lambda i: _strength(items[i]))
         return best, True
-    return min(ok, key=lambda i: weight(items[i])), False
+    return min(ok, key=lambda i: weights[i]), False
 
 
 def _strength(item) -> float:
@@ -185,21 +188,55 @@ def _flown(req, cfg, tether: TetherSpec) -> TetherSpec:
     return effective_tether(req, c)
 
 
+class _FlownDensities:
+    """Linear density of each :data:`SELECTABLE_TETHERS` entry as flown [kg/m]
+    (:func:`_flown`), each computed when first read (an entry whose conductors do not fit
+    raises then, as it did when compared) and kept."""
+
+    def __init__(self, req, cfg):
+        self.req, self.cfg = req, cfg
+        self.values = [None] * len(SELECTABLE_TETHERS)
+
+    def __getitem__(self, i: int) -> float:
+        v = self.values[i]
+        if v is None:
+            v = self.values[i] = _flown(self.req, self.cfg, SELECTABLE_TETHERS[i]).linear_density
+        return v
+
+
+#: The densities per (requirement, mission technology): the conductors bundled in depend on
+#: nothing else (mission.tether_conductors), so the selection's rounds share them.
+_FLOWN_DENSITIES: dict = {}
+
+
+def _flown_densities(req, cfg) -> _FlownDensities:
+    key = (req, cfg.mission)
+    try:
+        hit = _FLOWN_DENSITIES.get(key)
+    except TypeError:  # an unhashable field (an array): no cache
+        return _FlownDensities(req, cfg)
+    if hit is None:
+        if len(_FLOWN_DENSITIES) > 256:
+            _FLOWN_DENSITIES.clear()
+        hit = _FLOWN_DENSITIES[key] = _FlownDensities(req, cfg)
+    return hit
+
+
 def choose(req, cfg, needs: Needs) -> tuple[tuple[int, int, int], tuple[Shortfall, ...]]:
     """Catalogue indices (hull fabric, fin fabric, tether) of the lightest items meeting
     ``needs``, and the shortfalls where none does."""
     fabrics, tethers = SELECTABLE_FABRICS, SELECTABLE_TETHERS
     short = []
-    i_h, bad = _lightest(fabrics, needs.hull_fabric, lambda f: f.areal_density)
+    areal = [f.areal_density for f in fabrics]
+    i_h, bad = _lightest(fabrics, needs.hull_fabric, areal)
     if bad:
         short.append(Shortfall("hull fabric", needs.hull_fabric, _strength(fabrics[i_h]),
                                fabrics[i_h].name, "N/m"))
-    i_f, bad = _lightest(fabrics, needs.fin_fabric, lambda f: f.areal_density)
+    i_f, bad = _lightest(fabrics, needs.fin_fabric, areal)
     if bad:
         short.append(Shortfall("fin fabric", needs.fin_fabric, _strength(fabrics[i_f]),
                                fabrics[i_f].name, "N/m"))
-    i_t, bad = _lightest(tethers, needs.tether,
-                         lambda t: _flown(req, cfg, t).linear_density)
+    i_t, bad = _lightest(tethers, needs.tether, _flown_densities(req, cfg))
     if bad:
         short.append(Shortfall("tether", needs.tether, _strength(tethers[i_t]),
                                tethers[i_t].name, "N"))
@@ -209,12 +246,26 @@ def choose(req, cfg, needs: Needs) -> tuple[tuple[int, int, int], tuple[Shortfal
 def with_items(cfg, idx, relaxed: bool = False):
     """``cfg`` with the catalogue items ``idx`` (hull fabric, fin fabric, tether); ``relaxed``
     sets their strengths to the registry maxima (mass kept) so that no strength row binds."""
+    h, f, t = (_relaxed(idx) if relaxed else
+               (SELECTABLE_FABRICS[idx[0]], SELECTABLE_FABRICS[idx[1]], SELECTABLE_TETHERS[idx[2]]))
+    # ``cfg`` (validated) with validated catalogue entries, copied without validating every
+    # field of the configuration again (what ``replace`` does: a third of a millisecond, eight
+    # times a selection); a Configuration checks its fields one by one, none against another
+    c = copy.copy(cfg)
+    object.__setattr__(c, "hull_fabric", h)
+    object.__setattr__(c, "fin_fabric", f)
+    object.__setattr__(c, "tether", t)
+    return c
+
+
+@functools.lru_cache(maxsize=64)
+def _relaxed(idx):
+    """The catalogue items ``idx`` with their strengths at the registry maxima (see
+    :func:`with_items`); the catalogues are constants, so each is built once."""
     h, f, t = SELECTABLE_FABRICS[idx[0]], SELECTABLE_FABRICS[idx[1]], SELECTABLE_TETHERS[idx[2]]
-    if relaxed:
-        h = replace(h, tensile_strength=_RELAXED_FABRIC)
-        f = replace(f, tensile_strength=_RELAXED_FABRIC)
-        t = replace(t, breaking_strength=_RELAXED_TETHER)
-    return replace(cfg, hull_fabric=h, fin_fabric=f, tether=t)
+    return (replace(h, tensile_strength=_RELAXED_FABRIC),
+            replace(f, tensile_strength=_RELAXED_FABRIC),
+            replace(t, breaking_strength=_RELAXED_TETHER))
 
 
 @dataclass(frozen=True)
@@ -234,16 +285,26 @@ class Selection:
         return [s.message() for s in self.shortfalls]
 
 
-def _airframe(req, cfg, volume: float):
-    from aerostat_core.model.airframe import build_airframe
+def _table(req, cfg, relaxed):
+    """The constraint table of the relaxed state ``relaxed`` (one design, evaluated with the
+    items' strengths held out) with ``cfg``'s items, whose strengths change no mass: its
+    airframe with the tether as flown by ``cfg`` (the same mass, the real breaking load), its
+    trim and tether line as they are, and the tether's safety factor at each wind from the
+    real breaking load, F / max(T, 1e-9) N as :func:`aerostat_core.model.performance.evaluate`
+    computes it; then :func:`aerostat_core.model.constraints.table_of`. The same numbers as
+    evaluating ``cfg`` at that volume again, to rounding (the relaxed state comes from the
+    sizing's batch)."""
+    from aerostat_core.model.constraints import table_of
 
-    return build_airframe(req, cfg, volume)
-
-
-def _table(req, cfg, af):
-    from aerostat_core.model.constraints import constraint_state
-
-    return constraint_state(req, cfg, af)
+    ev = relaxed.evaluation
+    spec = effective_tether(req, cfg)
+    af = copy.copy(ev.airframe)
+    object.__setattr__(af, "tether", spec)
+    ev = copy.copy(ev)
+    object.__setattr__(ev, "airframe", af)
+    tmax = np.max(ev.tether.tension, axis=0)
+    object.__setattr__(ev, "safety_factor", spec.breaking_strength / np.maximum(tmax, 1e-9))
+    return table_of(req, cfg, ev)
 
 
 def _evaluate(req, cfg, explain=None):
@@ -313,12 +374,11 @@ def select_materials(req, cfg) -> Selection:
             break
     c = with_items(cfg, idx)
     # the relaxed hull with the chosen items' strengths: the strengths change no mass, so the
-    # airframe is the same and only its table is evaluated again (one volume, not a search);
-    # where every item row holds there, the first feasible volume is the relaxed one (the loads
-    # grow with the hull, so the items hold below it too)
-    volume = float(np.asarray(af_r.hull.volume).reshape(-1)[0])
-    af = _airframe(req, c, volume)
-    state = _table(req, c, af)
+    # airframe, its trim and its tether line are the same and only the table is read again
+    # from them (no search, no solve); where every item row holds there, the first feasible
+    # volume is the relaxed one (the loads grow with the hull, so the items hold below it too)
+    state = _table(req, c, st_r)
+    af = state.evaluation.airframe
     relaxed_ok = s_r is None or bool(np.asarray(s_r.feasible).reshape(-1)[0])
     if relaxed_ok and all(_rows_met(state).values()):
         sizing = None if s_r is None else replace(s_r, state=state)

@@ -145,42 +145,62 @@ def _complete(states, src) -> np.ndarray:
     return np.broadcast_to(st.g, (npts, len(NAMES)))[i]
 
 
-#: Field names of each dataclass met by :func:`map_arrays` (``dataclasses.fields`` is slow).
-_FIELD_NAMES: dict[type, tuple[str, ...]] = {}
+#: How :func:`map_arrays` treats each type met: an array (``fn`` applied), a leaf (kept), a
+#: dict, a tuple, or a dataclass (the tuple of its field names; ``dataclasses.fields`` is slow).
+_KIND: dict[type, object] = {}
+_ARRAY, _LEAF, _DICT, _TUPLE = "array", "leaf", "dict", "tuple"
 _PLAIN = (float, int, str, bool, type(None))
+
+
+def _classify(cls):
+    if issubclass(cls, np.ndarray):
+        return _ARRAY
+    if cls in _PLAIN:
+        return _LEAF
+    if dataclasses.is_dataclass(cls):
+        names = tuple(f.name for f in dataclasses.fields(cls))
+        if names:
+            return names
+    if issubclass(cls, dict):
+        return _DICT
+    if issubclass(cls, tuple):
+        return _TUPLE
+    return _LEAF
 
 
 def map_arrays(fn, *trees):
     """Apply ``fn`` to the array leaves of equal-structured result trees (frozen dataclasses,
     dicts, tuples); other leaves (floats, strings, specs) are taken from the first tree."""
     t = trees[0]
-    if isinstance(t, np.ndarray):
-        return fn(*trees)
     cls = type(t)
-    if cls in _PLAIN:
+    kind = _KIND.get(cls)
+    if kind is None:
+        kind = _KIND[cls] = _classify(cls)
+    if kind is _ARRAY:
+        return fn(*trees)
+    if kind is _LEAF:
         return t
-    names = _FIELD_NAMES.get(cls)
-    if names is None:
-        names = _FIELD_NAMES[cls] = (
-            tuple(f.name for f in dataclasses.fields(cls))
-            if dataclasses.is_dataclass(cls) else ())
-    if names:
-        # a shallow copy without __init__ (the leaves were validated when first built)
-        new = object.__new__(cls)
-        d = new.__dict__
-        d.update(t.__dict__)
-        if len(trees) == 1:
-            for name in names:
-                d[name] = map_arrays(fn, d[name])
-        else:
-            for name in names:
-                d[name] = map_arrays(fn, *[x.__dict__[name] for x in trees])
-        return new
-    if isinstance(t, dict):
+    if kind is _DICT:
         return {k: map_arrays(fn, *(x[k] for x in trees)) for k in t}
-    if isinstance(t, tuple):
+    if kind is _TUPLE:
         return tuple(map_arrays(fn, *xs) for xs in zip(*trees))
-    return t
+    # a dataclass: a shallow copy without __init__ (the leaves were validated when first
+    # built), its array and container fields mapped (leaves checked here, not by a call each)
+    new = object.__new__(cls)
+    d = new.__dict__
+    d.update(t.__dict__)
+    single = len(trees) == 1
+    for name in kind:
+        v = d[name]
+        k = _KIND.get(type(v))
+        if k is _LEAF:
+            continue
+        if single:
+            d[name] = fn(v) if k is _ARRAY else map_arrays(fn, v)
+        else:
+            args = [x.__dict__[name] for x in trees]
+            d[name] = fn(*args) if k is _ARRAY else map_arrays(fn, *args)
+    return new
 
 
 def _take(result, index, npts: int):

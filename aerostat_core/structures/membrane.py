@@ -8,6 +8,8 @@ those defaults (constants.PRESSURE_DYNAMIC_FACTOR, constants.ENVELOPE_SAFETY_FAC
 
 from __future__ import annotations
 
+import functools
+
 import numpy as np
 
 
@@ -289,7 +291,113 @@ def envelope_loads(af, cfg, ev, stations: int = BEAM_STATIONS) -> dict:
         (pi p r^3 / 2 at the governing section, at the section's mean pressure),
         ``moment_at_governing`` [N m], ``governing_station`` [m from the nose],
         ``governing_radius`` [m], ``head`` [Pa] (gas head from the axis to the top).
+
+    Notes
+    -----
+    The loop along the stations runs compiled (:func:`aerostat_core.structures.beam_kernel.
+    envelope_beam`, every design and speed in one call); :func:`_envelope_loads_plain` is the
+    same arithmetic in numpy, kept as the reference definition (tests/core/test_fast_paths.py
+    checks the two agree).
     """
+    from aerostat_core.aerodynamics.forces import fin_lift_drag, hull_crossflow, hull_inviscid
+    from aerostat_core.geometry.shapes import SHAPE_INFO
+
+    h, g = af.hull, af.g
+    alpha = np.asarray(ev.equilibrium.alpha, float)
+    speed = np.asarray(ev.speed, float)
+    q = 0.5 * af.air_density * speed**2
+    shape = np.broadcast_shapes(np.shape(alpha), np.shape(q), np.shape(h.length))
+    t, wts = _stations(max(int(stations), 11), len(shape))
+    ns = wts.size
+    length = np.asarray(h.length, float)
+    x = t * length
+    r = h.radius_at(x)
+    ca = np.cos(alpha)
+    drho = af.air_density - af.gas_density
+    streamlined = SHAPE_INFO[h.shape].streamlined
+    lift_h = hull_moment = sin2a = 0.0
+    if streamlined:
+        ae, fn = cfg.aero, af.fins
+        n_i, _, m_i = hull_inviscid(q, alpha, h.k2 - h.k1, ae.hull_efficiency, af.i1, af.i3)
+        n_c, m_c = hull_crossflow(q, alpha, ae.hull_crossflow_drag, af.j1, af.j2)
+        fin_lift = fin_lift_drag(q, alpha, fn.lift_slope, ae.fin_efficiency,
+                                 np.radians(ae.fin_stall_angle_deg), fn.lifting_area,
+                                 fn.area_total, ae.fin_zero_lift_drag, fn.aspect_ratio,
+                                 fn.oswald)[0]
+        lift_h, hull_moment, sin2a = n_i + n_c, m_i + m_c, np.sin(2.0 * alpha)
+    positions = af.mass.positions
+    at: dict = {}
+    for k, m in af.mass.items.items():
+        if k in ("hull", "lifting gas", "tether") or k not in positions:
+            continue
+        xk = positions[k][0]
+        key = id(xk)
+        at[key] = (at[key][0] + np.asarray(m), xk) if key in at else (np.asarray(m), xk)
+    points = [(-m * g * ca, xk) for m, xk in at.values()]
+    if streamlined:
+        points.append((fin_lift * ca, af.fins.xi_ac))
+    factor = cfg.mission.pressure_dynamic_factor
+    p_dimple = required_pressure(q, af.air_density, af.gas_density, g, h.diameter, factor)
+    cols = [length, h.b, af.xi_m, h.xi_cb, af.cutoff_station, drho, ca,
+            af.mass.items["hull"], sin2a, lift_h, hull_moment, p_dimple]
+    npt = len(points)
+    cols += [p for p, _ in points] + [xp for _, xp in points]
+    full = np.broadcast_shapes(shape, np.shape(x)[1:], np.shape(r)[1:],
+                               *(np.shape(a) for a in cols))
+    n = int(np.prod(full, dtype=int))
+    # every per-column input broadcast into one C-ordered buffer (one assignment each)
+    buf = np.empty((len(cols),) + full)
+    for i, a in enumerate(cols):
+        buf[i] = a
+    c = buf.reshape(len(cols), n)
+    xs = np.empty((2, ns) + full)
+    xs[0], xs[1] = x, r
+    xs = xs.reshape(2, ns, n)
+    out = _envelope_beam()(
+        xs[0], xs[1], wts, *c[:6], float(g), *c[6:11], c[12:12 + npt], c[12 + npt:],
+        bool(streamlined), float(CONFLUENCE_SPAN), float(WRINKLE_MIN_RADIUS), c[11],
+        float(factor), float(cfg.gas.superpressure))
+    m_gov, r_gov, x_gov, p_wrinkle, p_top, n_long, bend = (a.reshape(full) for a in out)
+    head = drho * g * h.b  # top of the hull less the section's mean
+    return {
+        "pressure": np.broadcast_to(p_top, shape),
+        "pressure_dimpling": np.broadcast_to(p_dimple, shape),
+        "pressure_wrinkling": np.broadcast_to(p_wrinkle, shape),
+        "hoop_load": np.broadcast_to(p_top * h.b, shape),
+        "longitudinal_load": n_long,
+        "bending_moment": bend,
+        "wrinkling_moment": wrinkling_moment(np.maximum(p_top - head, 0.0), r_gov),
+        "moment_at_governing": m_gov,
+        "governing_station": x_gov,
+        "governing_radius": r_gov,
+        "head": np.broadcast_to(head, shape),
+    }
+
+
+@functools.lru_cache(maxsize=16)
+def _stations(ns: int, ndim: int):
+    """Station fractions 0..1 (shape (ns,) + (1,) * ndim) and trapezoid weights (1/2 at the
+    ends) of :func:`envelope_loads`, built once per size (the fractions read-only; the weights
+    are only read, by the compiled kernel, which takes writable arrays)."""
+    t = np.linspace(0.0, 1.0, ns).reshape((-1,) + (1,) * ndim)
+    wts = np.ones(ns)
+    wts[0] = wts[-1] = 0.5
+    t.flags.writeable = False
+    return t, wts
+
+
+def _envelope_beam():
+    """The compiled kernel of :func:`envelope_loads`
+    (:func:`aerostat_core.structures.beam_kernel.envelope_beam`), imported on the first call so
+    that importing the library does not import numba."""
+    from aerostat_core.structures.beam_kernel import envelope_beam
+
+    return envelope_beam
+
+
+def _envelope_loads_plain(af, cfg, ev, stations: int = BEAM_STATIONS) -> dict:
+    """:func:`envelope_loads` in numpy, the reference definition of the compiled kernel (the
+    same equations, arguments and result; docs/methods.md §1.17)."""
     from aerostat_core.aerodynamics.forces import fin_lift_drag, hull_crossflow, hull_inviscid
     from aerostat_core.geometry.shapes import SHAPE_INFO
 

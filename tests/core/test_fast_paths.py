@@ -1,10 +1,12 @@
 """The engine's fast paths give the numbers of the plain formulas they replace.
 
 The tether march runs a compiled kernel and the trim root-finder evaluates an alpha-expanded
-moment (both for speed: numpy's per-call overhead dominates on the usual small arrays). Here
-they are checked against the plain definitions over hypothesis-drawn inputs: the Heun march
-in numpy with :func:`aerostat_core.tether.statics._line_load` (``_march_plain``), and
-:func:`aerostat_core.model.statics.moment_about_confluence` / ``aerodynamic_moment``.
+moment, and the envelope beam runs a compiled station loop (all for speed: numpy's per-call
+overhead dominates on the usual small arrays). Here they are checked against the plain
+definitions over hypothesis-drawn inputs: the Heun march in numpy with
+:func:`aerostat_core.tether.statics._line_load` (``_march_plain``),
+:func:`aerostat_core.model.statics.moment_about_confluence` / ``aerodynamic_moment``, and
+:func:`aerostat_core.structures.membrane._envelope_loads_plain`.
 """
 
 import dataclasses
@@ -19,6 +21,7 @@ from scipy.optimize import brentq
 from aerostat_core import HullSpec, TetherSpec, design, thesis_baseline
 from aerostat_core.geometry.shapes import SHAPE_INFO
 from aerostat_core.model.airframe import build_airframe
+from aerostat_core.model.performance import evaluate
 from aerostat_core.model.statics import (
     ALPHA_GRID,
     ALPHA_GRID_WIDE,
@@ -29,6 +32,7 @@ from aerostat_core.model.statics import (
     moment_about_confluence,
     weathervane_slope,
 )
+from aerostat_core.structures.membrane import _envelope_loads_plain, envelope_loads
 from aerostat_core.tether.statics import _march_plain, march
 
 
@@ -312,3 +316,35 @@ def test_a_bluff_hull_trims_level(shape):
     eq = equilibrium(af, cfg.aero, np.linspace(0.0, 20.0, 5))
     assert eq.found.all() and np.all(np.abs(eq.alpha) <= 1e-12)
     assert np.all(eq.moment_slope < 0.0)
+
+
+@pytest.mark.parametrize("shape", list(SHAPE_INFO))
+@settings(max_examples=8, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(
+    n=st.integers(1, 5),
+    log_volume=st.floats(np.log(5.0), np.log(5e4)),
+    area_change=st.floats(-50.0, 100.0),
+    position=st.floats(0.6, 0.75),
+    speeds=st.lists(st.floats(0.0, 45.0), min_size=1, max_size=4),
+    superpressure=st.floats(0.0, 800.0),
+    seed=st.integers(0, 2**16),
+)
+def test_envelope_beam_is_the_plain_beam(shape, n, log_volume, area_change, position, speeds,
+                                         superpressure, seed):
+    """The compiled station loop of ``envelope_loads`` gives the numpy reference's numbers
+    (every key, to rounding) over hull shapes, batches of designs and speeds, for any trim."""
+    req, cfg = thesis_baseline()
+    lo, hi = SHAPE_INFO[shape].fineness_range
+    cfg = replace(cfg, hull=replace(cfg.hull, shape=shape, fineness_ratio=0.5 * (lo + hi)),
+                  gas=replace(cfg.gas, superpressure=superpressure))
+    rng = np.random.default_rng(seed)
+    vol = np.exp(log_volume) * rng.uniform(0.5, 2.0, n)
+    af = build_airframe(req, cfg, vol, cfg.hull.fineness_ratio, area_change, position)
+    ev = evaluate(req, cfg, af, np.array(speeds).reshape(-1, 1))
+    got, ref = envelope_loads(af, cfg, ev), _envelope_loads_plain(af, cfg, ev)
+    assert got.keys() == ref.keys()
+    for k in ref:
+        a, b = np.asarray(got[k]), np.asarray(ref[k])
+        assert a.shape == b.shape, k
+        scale = np.max(np.abs(b)) + 1e-300
+        assert np.max(np.abs(a - b)) <= 1e-11 * scale, k
