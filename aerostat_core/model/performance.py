@@ -63,6 +63,27 @@ class Evaluation:
     weathervane_slope: np.ndarray
 
 
+def tether_safety_factor(breaking_strength: float, tension) -> np.ndarray:
+    """Tether safety factor at each wind: SF = F_break / max_s T(s) [-].
+
+    Parameters
+    ----------
+    breaking_strength : float
+        Breaking load of the tether as flown [N].
+    tension : array, shape (nodes, ...)
+        Tension along the line [N]; its largest value per wind is the load the tether carries.
+        A slack line (T <= 1e-9 N) counts as 1e-9 N, so SF stays finite.
+
+    Source: docs/methods.md §1.10 (the performance table and the safety-factor rows of the
+    constraint table).
+
+    >>> float(tether_safety_factor(1000.0, np.array([[100.0], [250.0]]))[0])
+    4.0
+    """
+    tmax = np.max(tension, axis=0)
+    return breaking_strength / np.maximum(tmax, 1e-9)
+
+
 def evaluate(req: Requirement, cfg: Configuration, af: Airframe, speed,
              heights_hint=None) -> Evaluation:
     """Trim the aerostat and solve the tether at wind speed(s) ``speed`` [m/s] at the hull.
@@ -95,8 +116,7 @@ def evaluate(req: Requirement, cfg: Configuration, af: Airframe, speed,
         sheared=profile.kind != "uniform",
         heights_hint=heights_hint,
     )
-    tmax = np.max(teth.tension, axis=0)
-    sf = spec.breaking_strength / np.maximum(tmax, 1e-9)
+    sf = tether_safety_factor(spec.breaking_strength, teth.tension)
     # statics.weathervane_slope: the same loads about the centre of volume
     wv = central_difference(moment.about(af.hull.xi_cb), eq.alpha) * np.ones_like(eq.alpha)
     return Evaluation(af, speed, eq, loads.lift, tx, tz, teth, sf, wv)

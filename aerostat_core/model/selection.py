@@ -290,11 +290,11 @@ def _table(req, cfg, relaxed):
     items' strengths held out) with ``cfg``'s items, whose strengths change no mass: its
     airframe with the tether as flown by ``cfg`` (the same mass, the real breaking load), its
     trim and tether line as they are, and the tether's safety factor at each wind from the
-    real breaking load, F / max(T, 1e-9) N as :func:`aerostat_core.model.performance.evaluate`
-    computes it; then :func:`aerostat_core.model.constraints.table_of`. The same numbers as
+    real breaking load (:func:`aerostat_core.model.performance.tether_safety_factor`); then :func:`aerostat_core.model.constraints.table_of`. The same numbers as
     evaluating ``cfg`` at that volume again, to rounding (the relaxed state comes from the
     sizing's batch)."""
     from aerostat_core.model.constraints import table_of
+    from aerostat_core.model.performance import tether_safety_factor
 
     ev = relaxed.evaluation
     spec = effective_tether(req, cfg)
@@ -302,8 +302,8 @@ def _table(req, cfg, relaxed):
     object.__setattr__(af, "tether", spec)
     ev = copy.copy(ev)
     object.__setattr__(ev, "airframe", af)
-    tmax = np.max(ev.tether.tension, axis=0)
-    object.__setattr__(ev, "safety_factor", spec.breaking_strength / np.maximum(tmax, 1e-9))
+    object.__setattr__(ev, "safety_factor",
+                       tether_safety_factor(spec.breaking_strength, ev.tether.tension))
     return table_of(req, cfg, ev)
 
 
