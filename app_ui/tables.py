@@ -113,10 +113,8 @@ def geometry_frame(rows: Sequence[Mapping[str, Any]]) -> pd.DataFrame:
 _SHOWN_UNIT = {formats.unit(u): u for u in ("m3", "m2")}
 
 
-def geometry_styler(df: pd.DataFrame) -> Styler:
-    """The geometry table with each value at the decimals of its kind (counts as integers,
-    "4" not "4.000"; the hull volume as the headline metric; lengths as the metrics), and the
-    unit of the chosen system (ft for m, ...) next to the converted value."""
+def _geometry_kinds(df: pd.DataFrame) -> tuple[list[str], list[str]]:
+    """The kind (decimals, conversion) of each geometry row and its unit in the chosen system."""
     kinds = [
         formats.kind_of_unit(_SHOWN_UNIT.get(str(u), str(u)), str(q))
         for q, u in zip(df["Quantity"], df["Unit"])
@@ -125,6 +123,33 @@ def geometry_styler(df: pd.DataFrame) -> Styler:
         formats.cell_unit(formats.unit_of(k)) if formats.KINDS[k].si else u
         for k, u in zip(kinds, df["Unit"])
     ]
+    return kinds, units
+
+
+def geometry_markdown(df: pd.DataFrame) -> str:
+    """The geometry table as a Markdown (GFM) table: the same cells as :func:`geometry_styler`
+    (each value at the decimals of its kind, in the chosen unit system, with its unit).
+
+    Why Markdown: it is the first tab a fresh browser shows, and a static ``st.table`` there
+    made the browser load about 1 MB of table code (Arrow) before the first result appeared;
+    a Markdown table is drawn by code the page has already loaded. Every cell is escaped
+    (:func:`app_ui.text.plain`), so no text becomes markup.
+    """
+    from .text import plain
+
+    kinds, units = _geometry_kinds(df)
+    lines = ["| Quantity | Value | Unit |", "| :-- | --: | :-- |"]
+    for q, v, kind, u in zip(df["Quantity"], df["Value"], kinds, units):
+        value = formats.shown_formatter(kind)(v)
+        lines.append(f"| {plain(q)} | {plain(value)} | {plain(u)} |")
+    return "\n".join(lines)
+
+
+def geometry_styler(df: pd.DataFrame) -> Styler:
+    """The geometry table with each value at the decimals of its kind (counts as integers,
+    "4" not "4.000"; the hull volume as the headline metric; lengths as the metrics), and the
+    unit of the chosen system (ft for m, ...) next to the converted value."""
+    kinds, units = _geometry_kinds(df)
     styler = df.assign(Unit=units).style.set_table_styles(WRAP)
     fmts = {k: formats.shown_formatter(k) for k in set(kinds)}
     funcs = getattr(styler, "_display_funcs", None)

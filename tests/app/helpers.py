@@ -71,8 +71,32 @@ def _as_read(df: pd.DataFrame) -> pd.DataFrame:
     return df.rename(columns=lambda c: _MD_ESCAPE.sub(r"\1", c) if isinstance(c, str) else c)
 
 
+_MD_CELL = re.compile(r"(?<!\\)\|")
+
+
+def markdown_tables(at: AppTest) -> list[pd.DataFrame]:
+    """The Markdown (GFM) tables of the page as the reader sees them: every cell a text with
+    its backslash escapes read (the Geometry tab's table is Markdown, not ``st.table``)."""
+    out = []
+    for md in at.markdown:
+        lines = [ln.strip() for ln in str(md.value).strip().splitlines()]
+        if len(lines) < 2 or not lines[0].startswith("|") or not set(lines[1]) <= set("|:- "):
+            continue
+        rows = [
+            [_MD_ESCAPE.sub(r"\1", c.strip()).replace("\u2060", "") for c in _MD_CELL.split(ln)[1:-1]]
+            for ln in lines
+            if ln.startswith("|")
+        ]
+        out.append(pd.DataFrame(rows[2:], columns=rows[0]))
+    return out
+
+
 def _tables(at: AppTest) -> list:
-    return [df.value for df in at.dataframe] + [_as_read(df.value) for df in at.table]
+    return (
+        [df.value for df in at.dataframe]
+        + [_as_read(df.value) for df in at.table]
+        + markdown_tables(at)
+    )
 
 
 def table_with(at: AppTest, first_column: str, column: str) -> pd.DataFrame:
