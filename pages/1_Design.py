@@ -415,9 +415,13 @@ def _tabs_body() -> None:
     with tabs["3-D view"]:
         if tabs["3-D view"].open:
             st.plotly_chart(plots.hull_3d_figure(rep), key="hull_3d", config=plots.GL_CONFIG)
+            s = rep.summary
             st.caption(
-                "Drag to rotate, scroll to zoom. Fins in orange; confluence lines are "
-                "schematic (the engine models only the confluence point)."
+                "Drag to rotate, scroll to zoom. To scale: hull length "
+                f"{formats.shown(s.length_m, 'length', with_unit=True)}, diameter "
+                f"{formats.shown(s.diameter_m, 'diameter', with_unit=True)} (dimensions on "
+                "the Geometry tab). Fins in orange; confluence lines are schematic (the engine "
+                "models only the confluence point)."
             )
     with tabs["Mass"]:
         if tabs["Mass"].open:

@@ -117,13 +117,15 @@ def test_sized_volume_follows_the_payload(at):
     assert metric(at, "Volume [m³]") != "170.0"
     geo = table(at, "Quantity")
     row = geo.loc[geo["Quantity"] == "Hull length l"]
-    assert row["Value"].item() == pytest.approx(float(expected.airframe.hull.length))
+    assert float(row["Value"].item()) == pytest.approx(
+        float(expected.airframe.hull.length), abs=0.005  # shown to the centimetre
+    )
     side = side_view(at)  # the first tab's static drawing, to scale
     assert side["hull_length"] == pytest.approx(float(expected.airframe.hull.length), rel=1e-3)
     # the 3-D view is the same hull: its mesh spans the new length (fins stay on the hull)
     show_tab(at, "3-D view")
     data = chart(at, "hull_3d")["data"]
-    assert len(data) == 3  # one mesh, one marker trace, one line trace (software WebGL cost)
+    assert len(data) == 1  # one mesh: hull, fins, points and lines (software WebGL cost)
     mesh = next(t for t in data if t["type"] == "mesh3d")
     assert values(mesh, "x").max() == pytest.approx(float(expected.airframe.hull.length))
     assert values(mesh, "x").min() == pytest.approx(0.0, abs=1e-9)
@@ -446,8 +448,17 @@ def test_downloads_are_offered_in_every_tab(at):
     def labels():
         return [b.proto.label for b in at.get("download_button")]
 
-    assert "Download design inputs (JSON)" in labels()
     assert "Geometry table (CSV)" in labels()
+    # the design file's section is drawn once opened (its uploader's code is not on the way
+    # to a fresh browser's first result)
+    assert "Download design inputs (JSON)" not in labels()
+    assert not at.get("file_uploader")
+    at.session_state["design_file"] = True
+    at.run()
+    assert "Download design inputs (JSON)" in labels()
+    assert [u.proto.label for u in at.get("file_uploader")] == [
+        "Upload a design or cases file (JSON)"
+    ]
     for tab, label in (
         ("Mass", "Mass table (CSV)"),
         ("Performance", "Performance table (CSV)"),
