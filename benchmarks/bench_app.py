@@ -17,8 +17,11 @@ paint of a one-line Streamlit page measured in the same run (both printed, and t
    the background after the first result (the next steps start once it is done, as a user
    reads the result before changing an input); rerun after "Update design", save a case,
    tab switch, 3-D view. For the 3-D view it then re-renders the same figure in the page, a
-   copy with the hull surface 4x coarser in each direction, and an empty 3-D scene, and prints
-   the WebGL renderer: equal times mean the cost is the (software) WebGL scene, not the mesh.
+   copy with the hull surface 4x coarser in each direction, and an empty 3-D scene with
+   plotly's default axis box, and prints the WebGL renderer: equal times mean the cost is the
+   (software) WebGL scene, not the mesh. The page's figure is one mesh trace without an axis
+   box: in software WebGL each trace and the axis box (grid, ticks, titles) cost more than the
+   hull's vertices.
 3. Where the time goes, per browser step: a hook on the page's WebSocket records the time and
    size of every message from the server. Printed: the wait for the first message (request
    and the script's start), the span of the messages (the script running and sending), the
@@ -660,7 +663,9 @@ def main() -> None:
             print(
                 f"3-D cost (plotly.js alone, median of 5): the hull figure {w['full']:.0f} ms "
                 f"({w['traces']} traces, {w['verts']} vertices, {w['bytes'] / 1e3:.0f} kB JSON), "
-                f"{coarse}an empty 3-D scene {w['empty']:.0f} ms; WebGL renderer: {w['renderer']}"
+                f"{coarse}an empty 3-D scene with plotly's default axis box {w['empty']:.0f} ms "
+                "(the page's scene has none); WebGL renderer: "
+                f"{w['renderer']}"
             )
     print(f"after the browser steps: {_load()}")
     if "--no-progress" not in sys.argv:
