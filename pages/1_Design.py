@@ -17,6 +17,7 @@ from app_ui import (
     form_model,
     formats,
     lateral_view,
+    mass_view,
     mission_view,
     plots,
     preload,
@@ -136,7 +137,9 @@ def _mass_tab(rep: DesignReport) -> None:
             key="dl_mass",
         )
     with m2:
-        st.plotly_chart(plots.mass_figure(rep), key="mass_chart")
+        # A static drawing: each bar carries its mass and share, the table above has them
+        # all; a plotly chart here was most of the tab switch's time (benchmarks/bench_app.py)
+        st.image(mass_view.mass_svg(rep), width="stretch")
 
 
 def _performance_tab(rep: DesignReport) -> None:

@@ -205,6 +205,25 @@ def goto(at: AppTest, page: str) -> AppTest:
     return at
 
 
+def mass_bars(at: AppTest) -> dict[str, float]:
+    """The Mass tab's static bar chart (an SVG): {item: mass [kg]} as drawn."""
+    import xml.etree.ElementTree as ET
+
+    for el in at.get("image"):
+        for img in el.proto.imgs:
+            if not img.url.startswith("data:image/svg+xml;base64,"):
+                continue
+            body = base64.b64decode(img.url.split(",", 1)[1]).decode("utf-8")
+            if 'data-testid="mass-bars"' in body:
+                root = ET.fromstring(body)
+                return {
+                    g.get("data-item"): float(g.get("data-mass-kg"))
+                    for g in root.iter("{http://www.w3.org/2000/svg}g")
+                    if g.get("data-item")
+                }
+    raise KeyError("no mass bar chart on the page")
+
+
 def side_view(at: AppTest) -> dict:
     """The Design page's static side view (an SVG drawn to scale): its scale [px/m], the hull
     outline's extent in metres, and the marked points {key: (xi, z)} [m]."""
