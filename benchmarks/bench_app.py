@@ -250,9 +250,9 @@ _MASS_CHART_JS = """() => [...document.querySelectorAll('[data-testid="stImage"]
   || [...document.querySelectorAll('.js-plotly-plot .main-svg')].some(
     e => e.getBoundingClientRect().width > 0)"""
 
-#: The Performance tab's five charts are drawn (each plotly chart's SVG laid out).
+#: The Performance tab's five charts are drawn (each plotly chart with its traces).
 _PERF_CHARTS_JS = """() => [...document.querySelectorAll('.js-plotly-plot')].filter(d =>
-    d.getBoundingClientRect().width > 0 && d.querySelector('.main-svg .plot')).length >= 5"""
+    d.getBoundingClientRect().width > 0 && d.querySelector('.main-svg .trace')).length >= 5"""
 
 _ELEMENTS_JS = "() => document.querySelectorAll('[data-testid=\"stElementContainer\"]').length"
 
