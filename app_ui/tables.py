@@ -126,23 +126,39 @@ def _geometry_kinds(df: pd.DataFrame) -> tuple[list[str], list[str]]:
     return kinds, units
 
 
-def geometry_markdown(df: pd.DataFrame) -> str:
-    """The geometry table as a Markdown (GFM) table: the same cells as :func:`geometry_styler`
-    (each value at the decimals of its kind, in the chosen unit system, with its unit).
+#: The look of :func:`geometry_html`'s table (Streamlit's own static tables: thin row rules,
+#: the theme's font; numbers right-aligned).
+_HTML_TABLE_CSS = (
+    "<style>.aerostat-table{border-collapse:collapse;font-size:0.875rem;margin:0 0 1rem 0}"
+    ".aerostat-table th,.aerostat-table td{padding:0.25rem 0.75rem 0.25rem 0.375rem;"
+    "border-bottom:1px solid rgba(49,51,63,0.1);text-align:left;vertical-align:top}"
+    ".aerostat-table th{font-weight:600}.aerostat-table td.num{text-align:right}</style>"
+)
 
-    Why Markdown: it is the first tab a fresh browser shows, and a static ``st.table`` there
-    made the browser load about 1 MB of table code (Arrow) before the first result appeared;
-    a Markdown table is drawn by code the page has already loaded. Every cell is escaped
-    (:func:`app_ui.text.plain`), so no text becomes markup.
+
+def geometry_html(df: pd.DataFrame) -> str:
+    """The geometry table as one HTML table: the same cells as :func:`geometry_styler` (each
+    value at the decimals of its kind, in the chosen unit system, with its unit), every cell
+    HTML-escaped.
+
+    Why HTML: it is the first tab a fresh browser shows, and a static ``st.table`` there made
+    the browser load about 1 MB of table code (Arrow) before the first result appeared; as
+    Markdown, the table was parsed again in the browser on every rerun. ``st.html`` sets it
+    as it is (sanitised), with code the page has already loaded for the app's style sheet.
     """
-    from .text import plain
+    from html import escape
 
     kinds, units = _geometry_kinds(df)
-    lines = ["| Quantity | Value | Unit |", "| :-- | --: | :-- |"]
-    for q, v, kind, u in zip(df["Quantity"], df["Value"], kinds, units):
-        value = formats.shown_formatter(kind)(v)
-        lines.append(f"| {plain(q)} | {plain(value)} | {plain(u)} |")
-    return "\n".join(lines)
+    rows = "".join(
+        f"<tr><td>{escape(str(q))}</td><td class=\"num\">"
+        f"{escape(formats.shown_formatter(kind)(v))}</td><td>{escape(str(u))}</td></tr>"
+        for q, v, kind, u in zip(df["Quantity"], df["Value"], kinds, units)
+    )
+    return (
+        f"{_HTML_TABLE_CSS}<table class=\"aerostat-table\" data-testid=\"geometry-table\">"
+        f"<thead><tr><th>Quantity</th><th>Value</th><th>Unit</th></tr></thead>"
+        f"<tbody>{rows}</tbody></table>"
+    )
 
 
 def geometry_styler(df: pd.DataFrame) -> Styler:

@@ -94,7 +94,7 @@ def _geometry_tab(rep: DesignReport) -> None:
     with g1:
         # Markdown, not st.table: a static table here made a fresh browser load ~1 MB of table
         # code (Arrow) before the first result showed (benchmarks/bench_app.py); same cells.
-        st.markdown(tables.geometry_markdown(geometry_frame(rep.geometry_rows)))
+        st.html(tables.geometry_html(geometry_frame(rep.geometry_rows)))
     with g2:
         st.markdown(
             "**Reading the geometry.** ξ is measured from the nose, aft positive; z is up. "

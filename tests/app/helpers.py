@@ -91,11 +91,32 @@ def markdown_tables(at: AppTest) -> list[pd.DataFrame]:
     return out
 
 
+def html_tables(at: AppTest) -> list[pd.DataFrame]:
+    """The HTML tables of the page's ``st.html`` elements as the reader sees them: every cell
+    a text (the Geometry tab's table is HTML, not ``st.table``)."""
+    import html as _html
+    import xml.etree.ElementTree as ET
+
+    out = []
+    for el in at.get("html"):
+        body = str(el.proto.body)
+        for found in re.findall(r"<table.*?</table>", body, flags=re.S):
+            root = ET.fromstring(found)
+            rows = [
+                ["".join(c.itertext()) for c in tr if c.tag in ("th", "td")]
+                for tr in root.iter("tr")
+            ]
+            rows = [[_html.unescape(c) for c in r] for r in rows]
+            out.append(pd.DataFrame(rows[1:], columns=rows[0]))
+    return out
+
+
 def _tables(at: AppTest) -> list:
     return (
         [df.value for df in at.dataframe]
         + [_as_read(df.value) for df in at.table]
         + markdown_tables(at)
+        + html_tables(at)
     )
 
 
