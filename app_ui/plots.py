@@ -187,14 +187,45 @@ def _grid_triangles(n_rows: int, n_cols: int) -> tuple[list[int], list[int], lis
 GL_CONFIG = {"plotGlPixelRatio": 1}
 
 
-def hull_3d_figure(rep: DesignReport) -> go.Figure:
-    """Interactive 3-D view: NPL hull (surface of revolution), fins, CB/CG/confluence point.
+def _octahedron(centre: Sequence[float], r: float) -> tuple[np.ndarray, list[tuple[int, int, int]]]:
+    """Vertices (6, 3) and the 8 faces (local indices) of an octahedron of radius ``r``: a
+    marked point drawn as part of the 3-D view's single mesh."""
+    c = np.asarray(centre, float)
+    v = c + r * np.array([[1, 0, 0], [-1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1], [0, 0, -1]])
+    faces = [(a, b, t) for a in (0, 1) for b in (2, 3) for t in (4, 5)]
+    return v, faces
 
-    Three WebGL traces only: the hull and the fins are one mesh (face colours), the three points
-    one marker trace, the confluence lines one line trace. In a browser without a GPU (software WebGL, SwiftShader) the time goes into setting up each
-    trace and into rasterising the canvas, not into the vertices (benchmarks/bench_app.py: a 16x
-    coarser surface saved little; 9 traces -> 3 about halved it; draw it with
-    :data:`GL_CONFIG`). The mesh is sent as typed arrays (half the bytes of JSON lists).
+
+def _rod(p0: Sequence[float], p1: Sequence[float], r: float) -> tuple[np.ndarray, list]:
+    """Vertices (6, 3) and the 6 side faces of a thin triangular prism from ``p0`` to ``p1``
+    (radius ``r``): a line drawn as part of the 3-D view's single mesh."""
+    a, b = np.asarray(p0, float), np.asarray(p1, float)
+    d = b - a
+    d = d / max(float(np.linalg.norm(d)), 1e-12)
+    u = np.cross(d, [0.0, 1.0, 0.0] if abs(d[1]) < 0.9 else [1.0, 0.0, 0.0])
+    u /= np.linalg.norm(u)
+    w = np.cross(d, u)
+    ring = [r * (np.cos(t) * u + np.sin(t) * w) for t in (0.0, 2 * np.pi / 3, 4 * np.pi / 3)]
+    v = np.array([a + q for q in ring] + [b + q for q in ring])
+    faces = []
+    for k in range(3):
+        n = (k + 1) % 3
+        faces += [(k, n, 3 + k), (n, 3 + n, 3 + k)]
+    return v, faces
+
+
+def hull_3d_figure(rep: DesignReport) -> go.Figure:
+    """Interactive 3-D view: NPL hull (surface of revolution), fins, CB/CG/confluence point and
+    the (schematic) confluence lines, to scale.
+
+    One WebGL trace: the hull, the fins, the three points (small octahedra) and the confluence
+    lines (thin rods) are one mesh with face colours. In a browser without a GPU (software
+    WebGL, SwiftShader) the time goes into setting up each trace and rasterising the canvas,
+    not into the vertices (benchmarks/bench_app.py: a 16x coarser surface saved little; 9
+    traces -> 3 about halved it, 3 -> 1 cut it by another third). The points are named in the
+    legend entry and the page's caption; what is lost against separate marker traces is their
+    hover label. Draw it with :data:`GL_CONFIG`. The mesh is sent as typed arrays (half the
+    bytes of JSON lists).
     """
     h = rep.hull
     x, y, z = (np.asarray(a, float) for a in hull_surface(h.a1, h.a2, h.b, shape=rep.shape))
@@ -202,6 +233,7 @@ def hull_3d_figure(rep: DesignReport) -> go.Figure:
     vx, vy, vz = [x.ravel()], [y.ravel()], [z.ravel()]
     ii, jj, kk = (np.asarray(a) for a in _grid_triangles(n_rows, n_cols))
     fi, fj, fk = [ii], [jj], [kk]
+    colours = ["#a9bfdc"] * ii.size
     o = x.size
     for outline in rep.fins.outlines:
         p = np.asarray(outline, float)[:4]
@@ -211,8 +243,28 @@ def hull_3d_figure(rep: DesignReport) -> go.Figure:
         fi.append(np.array([o, o]))
         fj.append(np.array([o + 1, o + 2]))
         fk.append(np.array([o + 2, o + 3]))
+        colours += ["#e69f00"] * 2
         o += 4
-    n_fin = 2 * len(rep.fins.outlines)
+    length = float(np.ptp(x)) or 1.0
+    parts = [
+        (_octahedron((float(p[0]), 0.0, float(p[1])), 0.012 * length), colour)
+        for p, colour in ((getattr(rep.points, key), c) for key, _l, _s, _sym, c in _POINTS)
+    ]
+    parts += [
+        (_rod((line[0, 0], 0.0, line[0, 1]), (line[1, 0], 0.0, line[1, 1]), 0.002 * length),
+         "#555555")
+        for line in (np.asarray(ln, float) for ln in rep.confluence_lines)
+    ]
+    for (verts, faces), colour in parts:
+        vx.append(verts[:, 0])
+        vy.append(verts[:, 1])
+        vz.append(verts[:, 2])
+        f = np.asarray(faces) + o
+        fi.append(f[:, 0])
+        fj.append(f[:, 1])
+        fk.append(f[:, 2])
+        colours += [colour] * len(faces)
+        o += len(verts)
     index = np.uint16 if o < 2**16 else np.uint32
     traces: list[dict] = [
         dict(
@@ -225,48 +277,22 @@ def hull_3d_figure(rep: DesignReport) -> go.Figure:
             i=np.concatenate(fi).astype(index),
             j=np.concatenate(fj).astype(index),
             k=np.concatenate(fk).astype(index),
-            facecolor=["#a9bfdc"] * ii.size + ["#e69f00"] * n_fin,
-            name="hull (blue) and fins (orange)",
+            facecolor=colours,
+            name="hull (blue), fins (orange), CB (green), CG (black), confluence point C "
+            "(red), confluence lines (grey, schematic)",
             showlegend=True,
             hoverinfo="skip",
             lighting=dict(ambient=0.6, diffuse=0.6, specular=0.2),
         )
     ]
-    pts = [(getattr(rep.points, key), label, colour) for key, label, _s, _sym, colour in _POINTS]
-    traces.append(
-        dict(
-            type="scatter3d",
-            x=[float(p[0][0]) for p in pts],
-            y=[0.0] * len(pts),
-            z=[float(p[0][1]) for p in pts],
-            mode="markers",
-            name="CB (green), CG (black), confluence point C (red)",
-            text=[p[1] for p in pts],
-            hovertemplate="%{text}<extra></extra>",
-            marker=dict(size=5, color=[p[2] for p in pts]),
-        )
-    )
-    lx: list = []
-    lz: list = []
-    for line in rep.confluence_lines:
-        lx += [float(line[0, 0]), float(line[1, 0]), None]
-        lz += [float(line[0, 1]), float(line[1, 1]), None]
-    traces.append(
-        dict(
-            type="scatter3d",
-            x=lx,
-            y=[None if v is None else 0.0 for v in lx],
-            z=lz,
-            mode="lines",
-            name="confluence lines (schematic)",
-            line=dict(color="#555555", width=2),
-        )
-    )
+    # No axis box (grid, ticks, titles): in software WebGL it cost more than the hull itself
+    # (benchmarks/bench_app.py: ~0.6 s of a ~0.9 s draw); the page's caption gives the scale.
+    # The titles stay for the unit conversion of the data (US customary in ft).
     scene = dict(
         aspectmode="data",
-        xaxis=_axis("ξ from nose [m]"),
-        yaxis=_axis("y [m]"),
-        zaxis=_axis("z [m]"),
+        xaxis=_axis("ξ from nose [m]", visible=False),
+        yaxis=_axis("y [m]", visible=False),
+        zaxis=_axis("z [m]", visible=False),
         camera=dict(eye=dict(x=-0.8, y=-1.2, z=0.5)),
     )
     return _figure(

@@ -18,7 +18,9 @@ from pathlib import Path
 import streamlit as st
 
 #: Streamlit's lazily loaded element bundles worth warming (file-name prefixes).
-BUNDLES = ("PlotlyChart", "DataFrame")
+#: The static table's bundle (its Arrow code is the grid's, loaded just before it) and the
+#: multiselect (Tether profiles tab): the first tab has neither, so a later tab switch fetched them.
+BUNDLES = ("PlotlyChart", "DataFrame", "Table", "Multiselect")
 
 
 @functools.cache

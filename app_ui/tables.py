@@ -113,10 +113,8 @@ def geometry_frame(rows: Sequence[Mapping[str, Any]]) -> pd.DataFrame:
 _SHOWN_UNIT = {formats.unit(u): u for u in ("m3", "m2")}
 
 
-def geometry_styler(df: pd.DataFrame) -> Styler:
-    """The geometry table with each value at the decimals of its kind (counts as integers,
-    "4" not "4.000"; the hull volume as the headline metric; lengths as the metrics), and the
-    unit of the chosen system (ft for m, ...) next to the converted value."""
+def _geometry_kinds(df: pd.DataFrame) -> tuple[list[str], list[str]]:
+    """The kind (decimals, conversion) of each geometry row and its unit in the chosen system."""
     kinds = [
         formats.kind_of_unit(_SHOWN_UNIT.get(str(u), str(u)), str(q))
         for q, u in zip(df["Quantity"], df["Unit"])
@@ -125,6 +123,49 @@ def geometry_styler(df: pd.DataFrame) -> Styler:
         formats.cell_unit(formats.unit_of(k)) if formats.KINDS[k].si else u
         for k, u in zip(kinds, df["Unit"])
     ]
+    return kinds, units
+
+
+#: The look of :func:`geometry_html`'s table (Streamlit's own static tables: thin row rules,
+#: the theme's font; numbers right-aligned).
+_HTML_TABLE_CSS = (
+    "<style>.aerostat-table{border-collapse:collapse;font-size:0.875rem;margin:0 0 1rem 0}"
+    ".aerostat-table th,.aerostat-table td{padding:0.25rem 0.75rem 0.25rem 0.375rem;"
+    "border-bottom:1px solid rgba(49,51,63,0.1);text-align:left;vertical-align:top}"
+    ".aerostat-table th{font-weight:600}.aerostat-table td.num{text-align:right}</style>"
+)
+
+
+def geometry_html(df: pd.DataFrame) -> str:
+    """The geometry table as one HTML table: the same cells as :func:`geometry_styler` (each
+    value at the decimals of its kind, in the chosen unit system, with its unit), every cell
+    HTML-escaped.
+
+    Why HTML: it is the first tab a fresh browser shows, and a static ``st.table`` there made
+    the browser load about 1 MB of table code (Arrow) before the first result appeared; as
+    Markdown, the table was parsed again in the browser on every rerun. ``st.html`` sets it
+    as it is (sanitised), with code the page has already loaded for the app's style sheet.
+    """
+    from html import escape
+
+    kinds, units = _geometry_kinds(df)
+    rows = "".join(
+        f"<tr><td>{escape(str(q))}</td><td class=\"num\">"
+        f"{escape(formats.shown_formatter(kind)(v))}</td><td>{escape(str(u))}</td></tr>"
+        for q, v, kind, u in zip(df["Quantity"], df["Value"], kinds, units)
+    )
+    return (
+        f"{_HTML_TABLE_CSS}<table class=\"aerostat-table\" data-testid=\"geometry-table\">"
+        f"<thead><tr><th>Quantity</th><th>Value</th><th>Unit</th></tr></thead>"
+        f"<tbody>{rows}</tbody></table>"
+    )
+
+
+def geometry_styler(df: pd.DataFrame) -> Styler:
+    """The geometry table with each value at the decimals of its kind (counts as integers,
+    "4" not "4.000"; the hull volume as the headline metric; lengths as the metrics), and the
+    unit of the chosen system (ft for m, ...) next to the converted value."""
+    kinds, units = _geometry_kinds(df)
     styler = df.assign(Unit=units).style.set_table_styles(WRAP)
     fmts = {k: formats.shown_formatter(k) for k in set(kinds)}
     funcs = getattr(styler, "_display_funcs", None)

@@ -17,6 +17,7 @@ from app_ui import (
     form_model,
     formats,
     lateral_view,
+    mass_view,
     mission_view,
     plots,
     preload,
@@ -74,6 +75,8 @@ TAB_KEY = "design_tab"
 EXPORTS_KEY = "design_exports"
 #: Session-state key of the constraint table's section (open: True).
 CONSTRAINTS_KEY = "design_constraints"
+#: Session-state key of the input column's design-file section (open: True).
+DESIGN_FILE_KEY = "design_file"
 
 
 def _geometry_tab(rep: DesignReport) -> None:
@@ -89,7 +92,9 @@ def _geometry_tab(rep: DesignReport) -> None:
         st.plotly_chart(plots.side_view_figure(rep), key="side_view")
     g1, g2 = st.container(), st.container()
     with g1:
-        st.table(plots.geometry_styler(geometry_frame(rep.geometry_rows)).hide(axis="index"))
+        # Markdown, not st.table: a static table here made a fresh browser load ~1 MB of table
+        # code (Arrow) before the first result showed (benchmarks/bench_app.py); same cells.
+        st.html(tables.geometry_html(geometry_frame(rep.geometry_rows)))
     with g2:
         st.markdown(
             "**Reading the geometry.** ξ is measured from the nose, aft positive; z is up. "
@@ -132,7 +137,9 @@ def _mass_tab(rep: DesignReport) -> None:
             key="dl_mass",
         )
     with m2:
-        st.plotly_chart(plots.mass_figure(rep), key="mass_chart")
+        # A static drawing: each bar carries its mass and share, the table above has them
+        # all; a plotly chart here was most of the tab switch's time (benchmarks/bench_app.py)
+        st.image(mass_view.mass_svg(rep), width="stretch")
 
 
 def _performance_tab(rep: DesignReport) -> None:
@@ -411,9 +418,13 @@ def _tabs_body() -> None:
     with tabs["3-D view"]:
         if tabs["3-D view"].open:
             st.plotly_chart(plots.hull_3d_figure(rep), key="hull_3d", config=plots.GL_CONFIG)
+            s = rep.summary
             st.caption(
-                "Drag to rotate, scroll to zoom. Fins in orange; confluence lines are "
-                "schematic (the engine models only the confluence point)."
+                "Drag to rotate, scroll to zoom. To scale: hull length "
+                f"{formats.shown(s.length_m, 'length', with_unit=True)}, diameter "
+                f"{formats.shown(s.diameter_m, 'diameter', with_unit=True)} (dimensions on "
+                "the Geometry tab). Fins in orange; confluence lines are schematic (the engine "
+                "models only the confluence point)."
             )
     with tabs["Mass"]:
         if tabs["Mass"].open:
@@ -430,6 +441,30 @@ def _tabs_body() -> None:
     with tabs["Envelope"]:
         if tabs["Envelope"].open:
             envelope_view.render(state.current_inputs_key(), rep)
+
+
+def _design_file_panel() -> None:
+    """The design file's download and upload (the input column's lazy section)."""
+    req_cur, cfg_cur = state.current_inputs()
+    st.download_button(
+        "Download design inputs (JSON)",
+        data=design_to_json(req_cur, cfg_cur),
+        file_name="aerostat-design.json",
+        mime="application/json",
+        on_click="ignore",
+        icon=":material/download:",
+        key="dl_design_json",
+        help="Every input, including those not shown in the form. Upload it again to "
+        "restore the design.",
+    )
+    st.file_uploader(
+        "Upload a design or cases file (JSON)",
+        type=["json"],
+        key="design_upload",
+        on_change=_on_upload,
+        help="A design file replaces the current inputs; a cases file adds saved cases. "
+        "A file with a problem changes nothing.",
+    )
 
 
 # 1 : 2.2 with the app's narrow padding: at 1024 px the input column is ~230 px (labels whole),
@@ -450,27 +485,18 @@ with col_in:
         help="10 kg payload at 300 m, 170 m³ NPL hull with fineness ratio 4.0, thesis "
         "constants (helium 0.169 kg/m³, 130 g/m² fabric, 20 g/m tether).",
     )
-    with st.expander("Design file: export / import", icon=":material/folder_open:"):
-        req_cur, cfg_cur = state.current_inputs()
-        st.download_button(
-            "Download design inputs (JSON)",
-            data=design_to_json(req_cur, cfg_cur),
-            file_name="aerostat-design.json",
-            mime="application/json",
-            on_click="ignore",
-            icon=":material/download:",
-            key="dl_design_json",
-            help="Every input, including those not shown in the form. Upload it again to "
-            "restore the design.",
-        )
-        st.file_uploader(
-            "Upload a design or cases file (JSON)",
-            type=["json"],
-            key="design_upload",
-            on_change=_on_upload,
-            help="A design file replaces the current inputs; a cases file adds saved cases. "
-            "A file with a problem changes nothing.",
-        )
+    # Lazy: drawn once opened (a rerun). Its file uploader was the only one on the page, and
+    # its code held the first result of a fresh browser back (every element's code loads
+    # before any of them shows).
+    design_file = st.expander(
+        "Design file: export / import",
+        icon=":material/folder_open:",
+        key=DESIGN_FILE_KEY,
+        on_change="rerun",
+    )
+    if design_file.open:
+        with design_file:
+            _design_file_panel()
     import_box = st.container()  # always present: the form below keeps its place
     fb = state.pop_import_feedback("design")  # shown once: never next to a later file
     if fb:

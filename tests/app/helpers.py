@@ -71,8 +71,53 @@ def _as_read(df: pd.DataFrame) -> pd.DataFrame:
     return df.rename(columns=lambda c: _MD_ESCAPE.sub(r"\1", c) if isinstance(c, str) else c)
 
 
+_MD_CELL = re.compile(r"(?<!\\)\|")
+
+
+def markdown_tables(at: AppTest) -> list[pd.DataFrame]:
+    """The Markdown (GFM) tables of the page as the reader sees them: every cell a text with
+    its backslash escapes read (the Geometry tab's table is Markdown, not ``st.table``)."""
+    out = []
+    for md in at.markdown:
+        lines = [ln.strip() for ln in str(md.value).strip().splitlines()]
+        if len(lines) < 2 or not lines[0].startswith("|") or not set(lines[1]) <= set("|:- "):
+            continue
+        rows = [
+            [_MD_ESCAPE.sub(r"\1", c.strip()).replace("\u2060", "") for c in _MD_CELL.split(ln)[1:-1]]
+            for ln in lines
+            if ln.startswith("|")
+        ]
+        out.append(pd.DataFrame(rows[2:], columns=rows[0]))
+    return out
+
+
+def html_tables(at: AppTest) -> list[pd.DataFrame]:
+    """The HTML tables of the page's ``st.html`` elements as the reader sees them: every cell
+    a text (the Geometry tab's table is HTML, not ``st.table``)."""
+    import html as _html
+    import xml.etree.ElementTree as ET
+
+    out = []
+    for el in at.get("html"):
+        body = str(el.proto.body)
+        for found in re.findall(r"<table.*?</table>", body, flags=re.S):
+            root = ET.fromstring(found)
+            rows = [
+                ["".join(c.itertext()) for c in tr if c.tag in ("th", "td")]
+                for tr in root.iter("tr")
+            ]
+            rows = [[_html.unescape(c) for c in r] for r in rows]
+            out.append(pd.DataFrame(rows[1:], columns=rows[0]))
+    return out
+
+
 def _tables(at: AppTest) -> list:
-    return [df.value for df in at.dataframe] + [_as_read(df.value) for df in at.table]
+    return (
+        [df.value for df in at.dataframe]
+        + [_as_read(df.value) for df in at.table]
+        + markdown_tables(at)
+        + html_tables(at)
+    )
 
 
 def table_with(at: AppTest, first_column: str, column: str) -> pd.DataFrame:
@@ -179,6 +224,25 @@ def goto(at: AppTest, page: str) -> AppTest:
     at.switch_page(page)
     at.run()
     return at
+
+
+def mass_bars(at: AppTest) -> dict[str, float]:
+    """The Mass tab's static bar chart (an SVG): {item: mass [kg]} as drawn."""
+    import xml.etree.ElementTree as ET
+
+    for el in at.get("image"):
+        for img in el.proto.imgs:
+            if not img.url.startswith("data:image/svg+xml;base64,"):
+                continue
+            body = base64.b64decode(img.url.split(",", 1)[1]).decode("utf-8")
+            if 'data-testid="mass-bars"' in body:
+                root = ET.fromstring(body)
+                return {
+                    g.get("data-item"): float(g.get("data-mass-kg"))
+                    for g in root.iter("{http://www.w3.org/2000/svg}g")
+                    if g.get("data-item")
+                }
+    raise KeyError("no mass bar chart on the page")
 
 
 def side_view(at: AppTest) -> dict:

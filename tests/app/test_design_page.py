@@ -20,6 +20,7 @@ from tests.app.helpers import (
     chart_keys,
     field_value,
     goto,
+    mass_bars,
     messages,
     metric,
     metric_float,
@@ -117,13 +118,15 @@ def test_sized_volume_follows_the_payload(at):
     assert metric(at, "Volume [m³]") != "170.0"
     geo = table(at, "Quantity")
     row = geo.loc[geo["Quantity"] == "Hull length l"]
-    assert row["Value"].item() == pytest.approx(float(expected.airframe.hull.length))
+    assert float(row["Value"].item()) == pytest.approx(
+        float(expected.airframe.hull.length), abs=0.005  # shown to the centimetre
+    )
     side = side_view(at)  # the first tab's static drawing, to scale
     assert side["hull_length"] == pytest.approx(float(expected.airframe.hull.length), rel=1e-3)
     # the 3-D view is the same hull: its mesh spans the new length (fins stay on the hull)
     show_tab(at, "3-D view")
     data = chart(at, "hull_3d")["data"]
-    assert len(data) == 3  # one mesh, one marker trace, one line trace (software WebGL cost)
+    assert len(data) == 1  # one mesh: hull, fins, points and lines (software WebGL cost)
     mesh = next(t for t in data if t["type"] == "mesh3d")
     assert values(mesh, "x").max() == pytest.approx(float(expected.airframe.hull.length))
     assert values(mesh, "x").min() == pytest.approx(0.0, abs=1e-9)
@@ -207,6 +210,8 @@ def test_geometry_and_mass_tables_have_units_and_match(at):
     geo = table(at, "Quantity")
     assert list(geo.columns) == ["Quantity", "Value", "Unit"]
     expect = {r["quantity"]: r["value"] for r in d.geometry_rows()}
+    # the table shows each value at the decimals of its kind (a Markdown table: its texts)
+    decimals = {"Hull volume": 1, "Fin leading-edge sweep": 1}
     for q in (
         "Hull volume",
         "Nose semi-axis a1",
@@ -218,7 +223,8 @@ def test_geometry_and_mass_tables_have_units_and_match(at):
         "Fin leading-edge sweep",
         "Fin root leading edge (from nose)",
     ):
-        assert geo.loc[geo["Quantity"] == q, "Value"].item() == pytest.approx(expect[q]), q
+        shown = geo.loc[geo["Quantity"] == q, "Value"].item()
+        assert shown == f"{expect[q]:.{decimals.get(q, 2)}f}", q
     assert geo.loc[geo["Quantity"] == "Hull volume", "Unit"].item() == "m³"
     show_tab(at, "Mass")
     mass = table(at, "Item")
@@ -227,8 +233,9 @@ def test_geometry_and_mass_tables_have_units_and_match(at):
     total = mass.loc[mass["Item"] == "total", "Mass [kg]"].item()
     assert parts["Mass [kg]"].sum() == pytest.approx(total)
     assert total == pytest.approx(d.total_mass)
-    bars = chart(at, "mass_chart")["data"][0]
-    assert sorted(values(bars, "x")) == pytest.approx(sorted(parts["Mass [kg]"]))
+    bars = mass_bars(at)  # the static bar chart: one bar per item, as in the table
+    assert list(bars) == list(parts["Item"])
+    assert list(bars.values()) == pytest.approx(list(parts["Mass [kg]"]))
 
 
 def test_side_view_marks_buoyancy_gravity_and_confluence(at):
@@ -443,8 +450,17 @@ def test_downloads_are_offered_in_every_tab(at):
     def labels():
         return [b.proto.label for b in at.get("download_button")]
 
-    assert "Download design inputs (JSON)" in labels()
     assert "Geometry table (CSV)" in labels()
+    # the design file's section is drawn once opened (its uploader's code is not on the way
+    # to a fresh browser's first result)
+    assert "Download design inputs (JSON)" not in labels()
+    assert not at.get("file_uploader")
+    at.session_state["design_file"] = True
+    at.run()
+    assert "Download design inputs (JSON)" in labels()
+    assert [u.proto.label for u in at.get("file_uploader")] == [
+        "Upload a design or cases file (JSON)"
+    ]
     for tab, label in (
         ("Mass", "Mass table (CSV)"),
         ("Performance", "Performance table (CSV)"),

@@ -72,6 +72,9 @@ def test_same_quantity_same_decimals_on_design_optimise_and_in_the_tables(thesis
         next(r for r in rep.geometry_rows if r["quantity"] == "Hull volume")
     )
     assert _styled_cells(geo, "Value")[volume_row] == shown["volume"]
+    page = tables.geometry_html(tables.geometry_frame(rep.geometry_rows))  # what the page shows
+    cells = re.findall(r'<td class="num">([^<]*)</td>', page)
+    assert cells[volume_row] == shown["volume"]
     # the hover text of a Design figure
     blow = chart(at, "perf_blow_by")["data"][0]["hovertemplate"]
     assert f"%{{y:.{formats.decimals('blow_by')}f}}" in blow

@@ -218,6 +218,9 @@ def test_design_tables_in_us_units(us):
     geo = tables.geometry_styler(tables.geometry_frame(rep.geometry_rows))
     html = geo.to_html()
     assert "ft³" in html and ">m<" not in html
+    # the page's HTML table has the same cells: US units, no metre left
+    page = tables.geometry_html(tables.geometry_frame(rep.geometry_rows))
+    assert "<td>ft³</td>" in page and "<td>ft</td>" in page and "<td>m</td>" not in page
 
 
 def test_report_requirement_has_labels_and_units_and_the_verdict_first():

@@ -27,13 +27,19 @@ _WIDE = """
     .flatMap(d => [...d.querySelectorAll('.dvn-scroller')].filter(wide).map(s => say('grid', s)));
   const statics = [...document.querySelectorAll('[data-testid="stTable"]')].filter(shown)
     .flatMap(t => [t, ...t.querySelectorAll('div')].filter(wide).map(s => say('table', s)));
-  return grids.concat(statics);
+  // HTML and Markdown tables (the Geometry tab's is HTML): the table wider than its block
+  const md = [...document.querySelectorAll('[data-testid="stHtml"] table, [data-testid="stMarkdownContainer"] table')]
+    .filter(shown).filter(t => t.scrollWidth > t.parentElement.clientWidth + 1)
+    .map(t => say('html table', t));
+  return grids.concat(statics, md);
 }
 """
 #: Tables drawn so far (grids once their scroller exists).
 _COUNT = """() => [...document.querySelectorAll('[data-testid="stDataFrame"]')]
     .filter(d => d.offsetParent !== null && d.querySelector('.dvn-scroller')).length
   + [...document.querySelectorAll('[data-testid="stTable"] table')]
+    .filter(t => t.offsetParent !== null).length
+  + [...document.querySelectorAll('[data-testid="stHtml"] table, [data-testid="stMarkdownContainer"] table')]
     .filter(t => t.offsetParent !== null).length"""
 
 

@@ -37,7 +37,9 @@ _CUT = """
 () => {
   const sel = ['[data-testid="stWidgetLabel"] p', '[data-testid="stMetricLabel"] *',
                '[data-testid="stMetricValue"] *', '[data-testid="stMetricValue"]',
-               '[role="tab"] p', '[data-testid="stTable"] th', '[data-testid="stTable"] td'];
+               '[role="tab"] p', '[data-testid="stTable"] th', '[data-testid="stTable"] td',
+               '[data-testid="stMarkdownContainer"] th', '[data-testid="stMarkdownContainer"] td',
+               '[data-testid="stHtml"] th', '[data-testid="stHtml"] td'];
   const out = [];
   const cut = e => e.offsetParent && e.clientWidth > 0 && e.scrollWidth > e.clientWidth + 1;
   for (const e of document.querySelectorAll(sel.join(','))) {
@@ -60,7 +62,9 @@ _WIDE = """
 () => {
   const main = document.querySelector('[data-testid="stMain"]');
   const wide = main.scrollWidth > main.clientWidth + 1 ? [`main ${main.scrollWidth} > ${main.clientWidth}`] : [];
-  const bullets = [...document.querySelectorAll('[data-testid="stTable"] td li, [data-testid="stTable"] td ul')]
+  const bullets = [...document.querySelectorAll('[data-testid="stTable"] td li, [data-testid="stTable"] td ul, '
+      + '[data-testid="stMarkdownContainer"] td li, [data-testid="stMarkdownContainer"] td ul, '
+      + '[data-testid="stHtml"] td li, [data-testid="stHtml"] td ul')]
       .map(e => `bullet in a table cell: "${e.closest('tr').textContent.trim().slice(0, 60)}"`);
   return wide.concat(bullets);
 }
