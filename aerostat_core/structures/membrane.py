@@ -325,15 +325,7 @@ def envelope_loads(af, cfg, ev, stations: int = BEAM_STATIONS) -> dict:
                                  fn.area_total, ae.fin_zero_lift_drag, fn.aspect_ratio,
                                  fn.oswald)[0]
         lift_h, hull_moment, sin2a = n_i + n_c, m_i + m_c, np.sin(2.0 * alpha)
-    positions = af.mass.positions
-    at: dict = {}
-    for k, m in af.mass.items.items():
-        if k in ("hull", "lifting gas", "tether") or k not in positions:
-            continue
-        xk = positions[k][0]
-        key = id(xk)
-        at[key] = (at[key][0] + np.asarray(m), xk) if key in at else (np.asarray(m), xk)
-    points = [(-m * g * ca, xk) for m, xk in at.values()]
+    points = _item_weights(af, g, ca)
     if streamlined:
         points.append((fin_lift * ca, af.fins.xi_ac))
     factor = cfg.mission.pressure_dynamic_factor
@@ -372,6 +364,21 @@ def envelope_loads(af, cfg, ev, stations: int = BEAM_STATIONS) -> dict:
         "governing_radius": r_gov,
         "head": np.broadcast_to(head, shape),
     }
+
+
+def _item_weights(af, g, ca):
+    """The carried items as point loads normal to the axis: [(-m g cos(alpha) [N], x [m])],
+    the items at one station (payload, miscellaneous, battery and ballonet under the centre of
+    buoyancy) summed into one load; the hull, gas and tether are distributed, not points."""
+    positions = af.mass.positions
+    at: dict = {}
+    for k, m in af.mass.items.items():
+        if k in ("hull", "lifting gas", "tether") or k not in positions:
+            continue
+        xk = positions[k][0]
+        key = id(xk)
+        at[key] = (at[key][0] + np.asarray(m), xk) if key in at else (np.asarray(m), xk)
+    return [(-m * g * ca, xk) for m, xk in at.values()]
 
 
 @functools.lru_cache(maxsize=16)
@@ -425,7 +432,6 @@ def _envelope_loads_plain(af, cfg, ev, stations: int = BEAM_STATIONS) -> dict:
     ca = np.cos(alpha)
     drho = af.air_density - af.gas_density
     load = drho * g * area * ca
-    positions = af.mass.positions
     load = load - np.asarray(af.mass.items["hull"]) * g * ca * per / per_int
     streamlined = SHAPE_INFO[h.shape].streamlined
     couples = []
@@ -460,14 +466,7 @@ def _envelope_loads_plain(af, cfg, ev, stations: int = BEAM_STATIONS) -> dict:
         hull_point = (np.where(ok, 0.0, lift_h), af.xi_m)
     # the carried items as point weights (those at one station, as the payload, miscellaneous,
     # battery and ballonet under the centre of buoyancy, summed into one load)
-    at: dict = {}
-    for k, m in af.mass.items.items():
-        if k in ("hull", "lifting gas", "tether") or k not in positions:
-            continue
-        xk = positions[k][0]
-        key = id(xk)
-        at[key] = (at[key][0] + np.asarray(m), xk) if key in at else (np.asarray(m), xk)
-    points = [(-m * g * ca, xk) for m, xk in at.values()]
+    points = _item_weights(af, g, ca)
     if streamlined:
         points.append((fin_lift * ca, af.fins.xi_ac))
         points.append(hull_point)
