@@ -383,36 +383,6 @@ def side_view_figure(rep: DesignReport) -> go.Figure:
     )
 
 
-def mass_figure(rep: DesignReport) -> go.Figure:
-    """Horizontal bars of the mass breakdown [kg] (the total is in the title)."""
-    rows = [r for r in rep.mass_rows if r["item"] != "total"]
-    total = next(r["mass_kg"] for r in rep.mass_rows if r["item"] == "total")
-    items = [r["item"] for r in rows][::-1]
-    masses = [float(r["mass_kg"]) for r in rows][::-1]
-    shares = [float(r["share_pct"]) for r in rows][::-1]
-    trace = dict(
-        type="bar",
-        x=masses,
-        y=items,
-        orientation="h",
-        marker_color=ACCENT,
-        name="mass",
-        text=[
-            f"{formats.text(m, 'mass')} kg ({formats.text(s, 'share')} %)"
-            for m, s in zip(masses, shares)
-        ],
-        textposition="auto",
-        hovertemplate=f"%{{y}}: %{{x:{formats.d3('mass')}}} kg<extra></extra>",
-    )
-    return _figure(
-        [trace],
-        f"Mass breakdown (total {formats.text(total, 'mass')} kg)",
-        height=360,
-        showlegend=False,
-        xaxis=_axis("Mass [kg]"),
-    )
-
-
 # --- performance ------------------------------------------------------------------------------
 
 

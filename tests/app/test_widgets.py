@@ -223,7 +223,6 @@ def test_every_figure_is_valid_plotly(rep):
     figs = [
         plots.hull_3d_figure(rep),
         plots.side_view_figure(rep),
-        plots.mass_figure(rep),
         plots.tension_figure(rep),
         plots.cm_figure(rep),
         plots.tether_figure(rep),
