@@ -39,7 +39,6 @@ from .tables import (  # noqa: F401 - the Design and Compare pages' tables, re-e
     comparison_styler,
     format_value,
     geometry_frame,
-    geometry_styler,
     mass_frame,
     performance_frame,
     performance_styler,

@@ -137,9 +137,9 @@ _HTML_TABLE_CSS = (
 
 
 def geometry_html(df: pd.DataFrame) -> str:
-    """The geometry table as one HTML table: the same cells as :func:`geometry_styler` (each
-    value at the decimals of its kind, in the chosen unit system, with its unit), every cell
-    HTML-escaped.
+    """The geometry table as one HTML table: each value at the decimals of its kind (counts as
+    integers, "4" not "4.000"; the hull volume as the headline metric; lengths as the metrics),
+    in the chosen unit system, with its unit (ft for m, ...), every cell HTML-escaped.
 
     Why HTML: it is the first tab a fresh browser shows, and a static ``st.table`` there made
     the browser load about 1 MB of table code (Arrow) before the first result appeared; as
@@ -159,30 +159,6 @@ def geometry_html(df: pd.DataFrame) -> str:
         f"<thead><tr><th>Quantity</th><th>Value</th><th>Unit</th></tr></thead>"
         f"<tbody>{rows}</tbody></table>"
     )
-
-
-def geometry_styler(df: pd.DataFrame) -> Styler:
-    """The geometry table with each value at the decimals of its kind (counts as integers,
-    "4" not "4.000"; the hull volume as the headline metric; lengths as the metrics), and the
-    unit of the chosen system (ft for m, ...) next to the converted value."""
-    kinds, units = _geometry_kinds(df)
-    styler = df.assign(Unit=units).style.set_table_styles(WRAP)
-    fmts = {k: formats.shown_formatter(k) for k in set(kinds)}
-    funcs = getattr(styler, "_display_funcs", None)
-    if isinstance(funcs, dict):
-        # One formatter per cell, set where pandas keeps them: a ``format(subset=...)`` call
-        # per kind of row cost ~25 ms of every rerun of the Design page (a .loc lookup each),
-        # more than the rest of the geometry tab; the table renders the same.
-        col = df.columns.get_loc("Value")
-        for row, kind in enumerate(kinds):
-            funcs[(row, col)] = fmts[kind]
-        return styler
-    rows: dict[str, list] = {}  # kind -> row labels (a pandas without that attribute)
-    for i, kind in zip(df.index, kinds):
-        rows.setdefault(kind, []).append(i)
-    for kind, idx in rows.items():
-        styler = styler.format(fmts[kind], subset=pd.IndexSlice[idx, ["Value"]])
-    return styler
 
 
 def constraint_styler(df: pd.DataFrame) -> Styler:

@@ -67,11 +67,9 @@ def test_same_quantity_same_decimals_on_design_optimise_and_in_the_tables(thesis
     forces = tables.PERF_TABLES["Forces and stability"]
     for cell in _styled_cells(tables.performance_styler(df, forces), "α_eq [deg]"):
         assert _decimals(cell) == formats.decimals("alpha_eq"), cell
-    geo = tables.geometry_styler(tables.geometry_frame(rep.geometry_rows))
     volume_row = [r for r in rep.geometry_rows].index(
         next(r for r in rep.geometry_rows if r["quantity"] == "Hull volume")
     )
-    assert _styled_cells(geo, "Value")[volume_row] == shown["volume"]
     page = tables.geometry_html(tables.geometry_frame(rep.geometry_rows))  # what the page shows
     cells = re.findall(r'<td class="num">([^<]*)</td>', page)
     assert cells[volume_row] == shown["volume"]

@@ -17,7 +17,7 @@ from aerostat_core.output.report import (
     design_report,
     thesis_gui_cases,
 )
-from app_ui import plots
+from app_ui import plots, tables
 from app_ui.form_model import (
     CHOICES,
     CUSTOM,
@@ -433,7 +433,7 @@ def test_tether_speeds_include_the_design_wind():
 
 
 def test_geometry_counts_are_integers_and_volume_matches_the_metric(rep):
-    html = plots.geometry_styler(plots.geometry_frame(rep.geometry_rows)).to_html()
+    html = tables.geometry_html(tables.geometry_frame(rep.geometry_rows))  # what the page shows
     import re
 
     assert re.search(r"Number of fins</td>\s*<td[^>]*>4</td>", html)
