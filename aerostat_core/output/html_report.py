@@ -55,7 +55,7 @@ h1{font-size:1.6em;margin-bottom:.2em}h2{font-size:1.25em;border-bottom:1px soli
 margin-top:1.6em}table{border-collapse:collapse;margin:.5em 0;font-size:.8em;max-width:100%}
 td,th{border:1px solid #bbb;padding:.15em .4em;text-align:right;overflow-wrap:anywhere}
 th{background:#eee;font-weight:600}td.t,th.t{text-align:left}.bad{color:#a00;font-weight:600}
-.ok{color:#060;font-weight:600}.verdict{font-size:1.1em}
+.ok{color:#060;font-weight:600}.verdict{font-size:1.1em}ol.sources{font-size:.8em}
 figure{margin:.6em 0;break-inside:avoid;page-break-inside:avoid}
 figcaption{font-size:.85em;color:#444}svg{max-width:100%;height:auto}
 table,figure{break-inside:avoid;page-break-inside:avoid}thead{display:table-header-group}
@@ -104,6 +104,21 @@ def _num(v) -> str:
             return f"{v:.3e}"
         return f"{v:.4g}" if abs(v) < 1000 else f"{v:.0f}"
     return _e(v)
+
+
+def _cited_table(rows: list[dict], columns: list[tuple[str, str]]) -> str:
+    """:func:`_table` of ``rows`` with their ``source`` texts as numbered references ("[1]")
+    and the sources listed once below it: the texts in a column made the fielded-aerostat
+    table taller than an A4 page, and a list breaks across pages where a table row cannot."""
+    sources: dict[str, int] = {}
+    cited = [
+        {**r, "source": f"[{sources.setdefault(str(r.get('source', '')), len(sources) + 1)}]"}
+        for r in rows
+    ]
+    listed = "".join(f"<li>{_e(text)}</li>" for text in sources)
+    return _table(cited, [*columns, ("source", "source")]) + (
+        f'<ol class="sources">{listed}</ol>' if sources else ""
+    )
 
 
 def _table(rows: list[dict], columns: list[tuple[str, str]] | None = None, cls=None) -> str:
@@ -691,7 +706,7 @@ def render_report(
             ],
             cls={"passed": lambda v: "ok" if v else "bad"},
         )
-        + _table(
+        + _cited_table(
             fv.table(),
             [
                 ("system", "system"),
@@ -699,7 +714,6 @@ def render_report(
                 ("published_length_m", "published length [m]"),
                 ("predicted_length_m", "predicted length [m]"),
                 ("length_error_pct", "error [%]"),
-                ("source", "source"),
             ],
         )
     )
