@@ -92,8 +92,8 @@ def _geometry_tab(rep: DesignReport) -> None:
         st.plotly_chart(plots.side_view_figure(rep), key="side_view")
     g1, g2 = st.container(), st.container()
     with g1:
-        # Markdown, not st.table: a static table here made a fresh browser load ~1 MB of table
-        # code (Arrow) before the first result showed (benchmarks/bench_app.py); same cells.
+        # Escaped HTML, not st.table: a static table here made a fresh browser load ~1 MB of
+        # table code (Arrow) before the first result showed (benchmarks/bench_app.py).
         st.html(tables.geometry_html(geometry_frame(rep.geometry_rows)))
     with g2:
         st.markdown(
