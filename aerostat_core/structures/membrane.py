@@ -299,7 +299,6 @@ def envelope_loads(af, cfg, ev, stations: int = BEAM_STATIONS) -> dict:
     same arithmetic in numpy, kept as the reference definition (tests/core/test_fast_paths.py
     checks the two agree).
     """
-    from aerostat_core.aerodynamics.forces import fin_lift_drag, hull_crossflow, hull_inviscid
     from aerostat_core.geometry.shapes import SHAPE_INFO
 
     h, g = af.hull, af.g
@@ -317,14 +316,8 @@ def envelope_loads(af, cfg, ev, stations: int = BEAM_STATIONS) -> dict:
     streamlined = SHAPE_INFO[h.shape].streamlined
     lift_h = hull_moment = sin2a = 0.0
     if streamlined:
-        ae, fn = cfg.aero, af.fins
-        n_i, _, m_i = hull_inviscid(q, alpha, h.k2 - h.k1, ae.hull_efficiency, af.i1, af.i3)
-        n_c, m_c = hull_crossflow(q, alpha, ae.hull_crossflow_drag, af.j1, af.j2)
-        fin_lift = fin_lift_drag(q, alpha, fn.lift_slope, ae.fin_efficiency,
-                                 np.radians(ae.fin_stall_angle_deg), fn.lifting_area,
-                                 fn.area_total, ae.fin_zero_lift_drag, fn.aspect_ratio,
-                                 fn.oswald)[0]
-        lift_h, hull_moment, sin2a = n_i + n_c, m_i + m_c, np.sin(2.0 * alpha)
+        lift_h, hull_moment, fin_lift = _aero_loads(af, cfg, q, alpha)
+        sin2a = np.sin(2.0 * alpha)
     points = _item_weights(af, g, ca)
     if streamlined:
         points.append((fin_lift * ca, af.fins.xi_ac))
@@ -366,6 +359,23 @@ def envelope_loads(af, cfg, ev, stations: int = BEAM_STATIONS) -> dict:
     }
 
 
+def _aero_loads(af, cfg, q, alpha):
+    """The model's own hull normal force N_h = N_i + N_c [N], hull couple M_i + M_c [N m]
+    (Jones & DeLaurier: potential flow and cross-flow, aerodynamics.forces) and fin lift [N]
+    at dynamic pressure ``q`` [Pa] and angle of attack ``alpha`` [rad]: what the trim
+    balanced, and what the beam's distributed aerodynamic load must add up to."""
+    from aerostat_core.aerodynamics.forces import fin_lift_drag, hull_crossflow, hull_inviscid
+
+    h, ae, fn = af.hull, cfg.aero, af.fins
+    n_i, _, m_i = hull_inviscid(q, alpha, h.k2 - h.k1, ae.hull_efficiency, af.i1, af.i3)
+    n_c, m_c = hull_crossflow(q, alpha, ae.hull_crossflow_drag, af.j1, af.j2)
+    fin_lift = fin_lift_drag(q, alpha, fn.lift_slope, ae.fin_efficiency,
+                             np.radians(ae.fin_stall_angle_deg), fn.lifting_area,
+                             fn.area_total, ae.fin_zero_lift_drag, fn.aspect_ratio,
+                             fn.oswald)[0]
+    return n_i + n_c, m_i + m_c, fin_lift
+
+
 def _item_weights(af, g, ca):
     """The carried items as point loads normal to the axis: [(-m g cos(alpha) [N], x [m])],
     the items at one station (payload, miscellaneous, battery and ballonet under the centre of
@@ -405,7 +415,6 @@ def _envelope_beam():
 def _envelope_loads_plain(af, cfg, ev, stations: int = BEAM_STATIONS) -> dict:
     """:func:`envelope_loads` in numpy, the reference definition of the compiled kernel (the
     same equations, arguments and result; docs/methods.md §1.17)."""
-    from aerostat_core.aerodynamics.forces import fin_lift_drag, hull_crossflow, hull_inviscid
     from aerostat_core.geometry.shapes import SHAPE_INFO
 
     h, g = af.hull, af.g
@@ -440,21 +449,14 @@ def _envelope_loads_plain(af, cfg, ev, stations: int = BEAM_STATIONS) -> dict:
         # ahead of the cut-off station, cross-flow aft of it), scaled so that their force and
         # moment are the model's own hull lift and couple (what the trim balanced)
         # the model's hull normal force and couple (Jones & DeLaurier), and the fin lift
-        ae, fn = cfg.aero, af.fins
-        n_i, _, m_i = hull_inviscid(q, alpha, h.k2 - h.k1, ae.hull_efficiency, af.i1, af.i3)
-        n_c, m_c = hull_crossflow(q, alpha, ae.hull_crossflow_drag, af.j1, af.j2)
-        fin_lift = fin_lift_drag(q, alpha, fn.lift_slope, ae.fin_efficiency,
-                                 np.radians(ae.fin_stall_angle_deg), fn.lifting_area,
-                                 fn.area_total, ae.fin_zero_lift_drag, fn.aspect_ratio,
-                                 fn.oswald)[0]
+        lift_h, hull_moment, fin_lift = _aero_loads(af, cfg, q, alpha)
         ahead = x <= af.cutoff_station
         shape_1 = np.where(ahead, np.sin(2.0 * alpha) * d_area, 0.0)
         shape_2 = np.where(ahead, 0.0, 2.0 * r * np.ones_like(alpha))
         arm = x - af.xi_m
         f1, f2 = integral(shape_1), integral(shape_2)
         m1, m2 = integral(shape_1 * arm), integral(shape_2 * arm)
-        hull_moment = m_i + m_c
-        lift_h, couple_h = n_i + n_c, -hull_moment  # the moment of upward loads
+        couple_h = -hull_moment  # the moment of upward loads
         det = f1 * m2 - f2 * m1
         ok = np.abs(det) > 1e-9 * (np.abs(f1 * m2) + np.abs(f2 * m1) + 1e-30)
         safe = np.where(ok, det, 1.0)
