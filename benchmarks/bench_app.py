@@ -509,62 +509,37 @@ def bench_browser(repeats: int = 5) -> dict[str, list] | None:
                 before = page.evaluate(_METRIC_JS, "Total mass [kg]")
                 box.fill(f"{12.0 + 1.13 * i:.2f}")
                 box.press("Tab")
-                mark = _mark(page)
-                t0 = time.perf_counter()
-                page.get_by_role("button", name="Update design").first.click()
-                t_vis = _visible_at(
-                    page,
+                _step(
+                    page, out, "rerun",
+                    page.get_by_role("button", name="Update design").first,
                     f"(old) => {{ const v = ({_METRIC_JS})('Total mass [kg]'); "
                     "return v !== null && v !== old; }",
                     before,
                 )
-                out["rerun"].append(time.perf_counter() - t0)
-                _settled(page)
-                out["rerun_parts"].append(_breakdown(page, mark, t_vis))
                 # save a case
                 page.get_by_role("textbox", name="Save the current design as a case").fill(
                     f"bench {i}"
                 )
-                mark = _mark(page)
-                t0 = time.perf_counter()
-                page.get_by_role("button", name="Save case").click()
-                t_vis = _visible_at(
-                    page, "(n) => document.body.innerText.includes(n)", f"bench {i}”"
+                _step(
+                    page, out, "save", page.get_by_role("button", name="Save case"),
+                    "(n) => document.body.innerText.includes(n)", f"bench {i}”",
                 )
-                out["save"].append(time.perf_counter() - t0)
-                _settled(page)
-                out["save_parts"].append(_breakdown(page, mark, t_vis))
                 # tab switch: Mass (table + bar chart: a static drawing, or an older
                 # checkout's plotly chart)
-                mark = _mark(page)
-                t0 = time.perf_counter()
-                page.get_by_role("tab", name="Mass").click()
-                t_vis = _visible_at(page, _MASS_CHART_JS)
-                out["tab"].append(time.perf_counter() - t0)
-                _settled(page)
-                out["tab_parts"].append(_breakdown(page, mark, t_vis))
+                _step(page, out, "tab", page.get_by_role("tab", name="Mass"), _MASS_CHART_JS)
                 # tab switch: Performance (three tables, five plotly charts)
-                mark = _mark(page)
-                t0 = time.perf_counter()
-                page.get_by_role("tab", name="Performance").click()
-                t_vis = _visible_at(page, _PERF_CHARTS_JS)
-                out["perf"].append(time.perf_counter() - t0)
-                _settled(page)
-                out["perf_parts"].append(_breakdown(page, mark, t_vis))
+                _step(
+                    page, out, "perf", page.get_by_role("tab", name="Performance"),
+                    _PERF_CHARTS_JS,
+                )
                 # 3-D view: click to the WebGL scene drawn
-                mark = _mark(page)
-                t0 = time.perf_counter()
-                page.get_by_role("tab", name="3-D view").click()
-                t_vis = _visible_at(
-                    page,
+                _step(
+                    page, out, "3d", page.get_by_role("tab", name="3-D view"),
                     "() => [...document.querySelectorAll('.js-plotly-plot')].some("
                     "d => d.getBoundingClientRect().width > 0 && d._fullLayout && "
                     "d._fullLayout.scene && d._fullLayout.scene._scene && "
                     "d.querySelector('.gl-container canvas'))",
                 )
-                out["3d"].append(time.perf_counter() - t0)
-                _settled(page)
-                out["3d_parts"].append(_breakdown(page, mark, t_vis))
                 ctx.close()
             out["webgl"].append(bench_3d_cost(browser))
             browser.close()
@@ -572,6 +547,19 @@ def bench_browser(repeats: int = 5) -> dict[str, list] | None:
         _stop_server(proc, log)
         _stop_server(fproc, flog)
     return out
+
+
+def _step(page, out: dict, name: str, target, visible_js: str, arg: Any = None) -> None:
+    """One timed browser step: click ``target``, wait until ``visible_js`` holds, record the
+    wall time in ``out[name]`` and, once the page has settled, the breakdown of the step
+    (:func:`_breakdown`) in ``out[name + "_parts"]``."""
+    mark = _mark(page)
+    t0 = time.perf_counter()
+    target.click()
+    t_vis = _visible_at(page, visible_js, arg)
+    out[name].append(time.perf_counter() - t0)
+    _settled(page)
+    out[name + "_parts"].append(_breakdown(page, mark, t_vis))
 
 
 def _parts(rows: list[dict[str, float]]) -> str:
