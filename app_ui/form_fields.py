@@ -33,8 +33,11 @@ GROUPS = {
 }
 
 #: Groups open when a session starts; the others are drawn only once opened (lazy expanders:
-#: their widgets keep their values while closed).
-OPEN_GROUPS = ("requirement", "wind", "configuration")
+#: their widgets keep their values while closed). The wind group starts closed: its 13 boxes
+#: default to the rule set's values, which the verdict and the constraint table show, and they
+#: were the page's largest block of widgets (a fresh browser's first result 130-280 ms later,
+#: "Update design" about 65 ms later with it open; benchmarks/bench_app.py, 2026-12-03).
+OPEN_GROUPS = ("requirement", "configuration")
 
 
 def group_key(group: str) -> str:

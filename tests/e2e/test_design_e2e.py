@@ -128,6 +128,7 @@ def test_bad_json_upload_shows_a_message_and_changes_nothing(thesis_page: Page):
 def test_a_rejected_input_is_reported_in_its_group(thesis_page: Page):
     page = thesis_page
     label = "Blow-by limit at the design wind [m] (empty = rule set)"
+    page.get_by_text("Wind and operating limits", exact=True).click()  # closed at the start
     set_number(page, label, 400)  # above the 300 m altitude
     submit(page)
     expect(
