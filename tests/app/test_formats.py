@@ -73,7 +73,8 @@ def test_same_quantity_same_decimals_on_design_optimise_and_in_the_tables(thesis
     page = tables.geometry_html(tables.geometry_frame(rep.geometry_rows))  # what the page shows
     cells = re.findall(r'<td class="num">([^<]*)</td>', page)
     assert cells[volume_row] == shown["volume"]
-    # the hover text of a Design figure
+    # the hover text of a Design figure (the interactive charts: a toggle on the tab)
+    at.toggle(key="perf_interactive").set_value(True).run()
     blow = chart(at, "perf_blow_by")["data"][0]["hovertemplate"]
     assert f"%{{y:.{formats.decimals('blow_by')}f}}" in blow
 
