@@ -322,7 +322,8 @@ def _chart(
     )
     if y2label:
         out.append(
-            f'<text transform="translate({_px(_W - 8)},{_px((py0 + py1) / 2)}) rotate(90)" '
+            # rotated a quarter turn clockwise: the glyphs stand to the right of the anchor
+            f'<text transform="translate({_px(_W - 17)},{_px((py0 + py1) / 2)}) rotate(90)" '
             f'text-anchor="middle" fill="{THIRD}">{escape(_bracket(*y2label))}</text>'
         )
     # requirement lines (under the data)
