@@ -35,14 +35,11 @@ from app_ui import (
 )
 from app_ui.errors import report_unexpected
 from app_ui.tables import (
-    PERF_HELP,
-    PERF_TABLES,
     constraint_styler,
     geometry_frame,
     mass_frame,
     mass_styler,
     performance_frame,
-    performance_styler,
 )
 
 st.title("Aerostat design")
@@ -146,15 +143,10 @@ def _mass_tab(rep: DesignReport) -> None:
 
 
 def _performance_tab(rep: DesignReport) -> None:
-    pdf = performance_frame(rep.performance_rows)
-    # Three static tables by theme, headers that wrap: one grid of 15 columns scrolled sideways
-    # at 1024 px (the result column is under 400 px wide there).
-    for title, columns in PERF_TABLES.items():
-        st.markdown(
-            f"**{title}**", help=" ".join(PERF_HELP[c] for c in columns if c in PERF_HELP) or None
-        )
-        st.table(performance_styler(pdf, columns))
-    st.caption("Rows with a red background break an operating limit (last column says which).")
+    # Three tables by theme (one of 15 columns scrolled sideways at 1024 px, where the result
+    # column is under 500 px wide), as one escaped-HTML block: three st.table of a styler
+    # were about 0.3 s of the tab switch in a browser without a GPU (benchmarks/bench_app.py)
+    st.html(tables.performance_html(performance_frame(rep.performance_rows)))
     st.download_button(
         "Performance table (CSV)",
         data=tables.export_csv(rep.performance_rows, formats.system()),  # SI + unit row

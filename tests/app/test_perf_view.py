@@ -276,3 +276,50 @@ def test_the_modules_examples_hold():
     import doctest
 
     assert doctest.testmod(perf_view).failed == 0
+
+
+# --- the sweep's tables (app_ui/tables.py: performance_html) -----------------------------------
+
+
+def _perf_tables(rep) -> tuple[list[str], list[ET.Element], str]:
+    from app_ui import tables
+
+    html = tables.performance_html(tables.performance_frame(rep.performance_rows))
+    assert not RAW.search(html.split("</style>", 1)[1]), RAW.search(html).group(0)
+    root = ET.fromstring(html.split("</style>", 1)[1])  # the block is valid XML: all escaped
+    titles = ["".join(p.itertext()) for p in root.iter("p") if p.find("strong") is not None]
+    return titles, list(root.iter("table")), html
+
+
+@pytest.mark.parametrize("system", ["SI", "US"])
+def test_sweep_tables_show_every_value_as_formatted_with_limited_rows_red(rep, system):
+    from app_ui import tables
+
+    formats.use_system(system)
+    try:
+        titles, found, html = _perf_tables(rep)
+        df = tables.performance_frame(rep.performance_rows)
+        assert titles == list(tables.PERF_TABLES)
+        limited = np.asarray(rep.perf.limited, bool)
+        for (title, columns), t in zip(tables.PERF_TABLES.items(), found):
+            heads = [th for th in t.iter("th")]
+            assert ["".join(h.itertext()) for h in heads] == [formats.relabel(c) for c in columns]
+            for h, c in zip(heads, columns):  # the short header's explanation on hover
+                assert h.get("title") == tables.PERF_HELP.get(c)
+            rows = list(t.find("tbody"))
+            assert [r.get("class") == "limit" for r in rows] == limited.tolist(), title
+            for j, c in enumerate(columns):
+                cells = ["".join(r[j].itertext()) for r in rows]
+                if c in tables.PERF_KINDS:
+                    fmt = formats.shown_formatter(tables.PERF_KINDS[c])
+                    assert cells == [fmt(v) for v in df[c]], (title, c)
+                else:
+                    assert cells == list(df[c]), (title, c)
+        assert "background-color: #fde2e2" in html  # the red of the plots' limited rows
+    finally:
+        formats.use_system("SI")
+    if system == "US":
+        heads = ["".join(h.itertext()) for h in found[0].iter("th")]
+        assert heads[:3] == ["Wind [kt]", "Blow-by [ft]", "Flying height [ft]"]
+        first = ["".join(c.itertext()) for c in found[0].find("tbody")[-1]]
+        assert first[1] == f"{rep.perf.blow_by[-1] / FT:,.1f}"
