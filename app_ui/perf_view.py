@@ -201,7 +201,7 @@ def _legend(items: list[tuple[str, str]], x0: float, y0: float, width: float) ->
     """Legend entries (symbol markup, text) in rows within ``width``; the markup and the rows'
     height."""
     out, x, y = [], x0, y0
-    char = 0.52 * _TICK_FONT  # about a sans-serif character's width
+    char = 0.48 * _TICK_FONT  # about a sans-serif character's width
     for symbol, text in items:
         w = 24 + len(text) * char + 12
         if x > x0 and x + w > x0 + width:
