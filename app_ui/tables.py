@@ -207,25 +207,91 @@ def performance_frame(rows: Sequence[Mapping[str, Any]]) -> pd.DataFrame:
     return df
 
 
-def performance_styler(df: pd.DataFrame, columns: Sequence[str] | None = None) -> Styler:
-    """Red background on rows that break an operating limit; each column at the decimals of
-    its quantity; only ``columns`` (default: all) are shown."""
+def _performance_shown(
+    df: pd.DataFrame, columns: Sequence[str] | None
+) -> tuple[pd.DataFrame, np.ndarray, dict[str, Any]]:
+    """The columns shown (``columns``, default all), which rows break an operating limit, and
+    each column's formatter in the chosen unit system, keyed by its relabelled header."""
     limited = df["limit_exceeded"].to_numpy(bool) if "limit_exceeded" in df else np.zeros(len(df))
     shown = df.drop(columns=["limit_exceeded"], errors="ignore")
     if columns is not None:
         shown = shown[[c for c in columns if c in shown.columns]]
-
-    def rowstyle(row: pd.Series) -> list[str]:
-        return [LIMIT_ROW_STYLE if limited[row.name] else ""] * len(row)
-
     # values and headers in the chosen unit system ("Blow-by [ft]")
     fmt = {
         formats.relabel(c): formats.shown_formatter(PERF_KINDS[c])
         for c in shown.columns
         if c in PERF_KINDS
     }
-    shown = shown.rename(columns=formats.relabel)
+    return shown.rename(columns=formats.relabel), limited, fmt
+
+
+def performance_styler(df: pd.DataFrame, columns: Sequence[str] | None = None) -> Styler:
+    """Red background on rows that break an operating limit; each column at the decimals of
+    its quantity; only ``columns`` (default: all) are shown."""
+    shown, limited, fmt = _performance_shown(df, columns)
+
+    def rowstyle(row: pd.Series) -> list[str]:
+        return [LIMIT_ROW_STYLE if limited[row.name] else ""] * len(row)
+
     return shown.style.apply(rowstyle, axis=1).format(fmt).hide(axis="index")
+
+
+#: The look of :func:`performance_html` on top of :data:`_HTML_TABLE_CSS`: a limited row's red
+#: background, a header with an explanation underlined (it shows on hover), a title per table
+#: and the note under them as Streamlit's own bold text and caption.
+_PERF_HTML_CSS = (
+    f".aerostat-table tr.limit td{{{LIMIT_ROW_STYLE}}}"
+    ".aerostat-table th[title]{text-decoration:underline dotted;cursor:help}"
+    ".aerostat-perf p{margin:0 0 0.5rem 0}.aerostat-perf p.note{font-size:0.875rem;"
+    "color:rgba(49,51,63,0.6)}"
+)
+
+
+def performance_html(
+    df: pd.DataFrame, groups: Mapping[str, Sequence[str]] | None = None
+) -> str:
+    """The performance sweep as one HTML block: a titled table per theme (``groups``, default
+    :data:`PERF_TABLES`), each value as :func:`performance_styler` shows it (the decimals of
+    its quantity, in the chosen unit system), the rows that break an operating limit on a red
+    background, a short header's explanation (:data:`PERF_HELP`) on hover, every cell
+    HTML-escaped; and the note saying what the red rows are.
+
+    Why HTML: three ``st.table`` of a styler were about 0.3 s of a switch to the Performance
+    tab in a browser without a GPU (benchmarks/bench_app.py), their rendering in the browser
+    more than the five charts' once those were static drawings; ``st.html`` sets one block
+    as it is (sanitised).
+    """
+    from html import escape
+
+    parts = []
+    for title, columns in (groups or PERF_TABLES).items():
+        shown, limited, fmt = _performance_shown(df, columns)
+        helps = {formats.relabel(c): PERF_HELP.get(c) for c in columns}
+        head = "".join(
+            f'<th title="{escape(helps[h])}">{escape(h)}</th>' if helps.get(h) else
+            f"<th>{escape(h)}</th>"
+            for h in shown.columns
+        )
+        body = []
+        for i, row in enumerate(shown.itertuples(index=False)):
+            cells = "".join(
+                f'<td class="num">{escape(fmt[h](v))}</td>' if h in fmt else
+                f"<td>{escape(str(v))}</td>"
+                for h, v in zip(shown.columns, row)
+            )
+            body.append(f'<tr class="limit">{cells}</tr>' if limited[i] else f"<tr>{cells}</tr>")
+        parts.append(
+            f"<p><strong>{escape(title)}</strong></p><table class=\"aerostat-table\">"
+            f"<thead><tr>{head}</tr></thead><tbody>{''.join(body)}</tbody></table>"
+        )
+    note = (
+        '<p class="note">Rows with a red background break an operating limit (last column of '
+        "the first table says which).</p>"
+    )
+    return (
+        _HTML_TABLE_CSS.replace("</style>", _PERF_HTML_CSS + "</style>")
+        + f'<div class="aerostat-perf" data-testid="performance-tables">{"".join(parts)}{note}</div>'
+    )
 
 
 def format_value(v: Any) -> str:

@@ -16,13 +16,13 @@ paint of a one-line Streamlit page measured in the same run (both printed, and t
    the app in fresh browser contexts, taken in turn; the page's loading of the chart code in
    the background after the first result (the next steps start once it is done, as a user
    reads the result before changing an input); rerun after "Update design", save a case,
-   tab switch (Mass: a table and a static bar chart; Performance: three tables and five plotly
-   charts), 3-D view. For the 3-D view it then re-renders the same figure in the page, a
-   copy with the hull surface 4x coarser in each direction, and an empty 3-D scene with
-   plotly's default axis box, and prints the WebGL renderer: equal times mean the cost is the
-   (software) WebGL scene, not the mesh. The page's figure is one mesh trace without an axis
-   box: in software WebGL each trace and the axis box (grid, ticks, titles) cost more than the
-   hull's vertices.
+   tab switch (Mass: a table and a static bar chart; Performance: three tables and five static
+   charts, or five plotly charts in an older checkout), 3-D view. For the 3-D view it then
+   re-renders the same figure in the page, a copy with the hull surface 4x coarser in each
+   direction, and an empty 3-D scene with plotly's default axis box, and prints the WebGL
+   renderer: equal times mean the cost is the (software) WebGL scene, not the mesh. The page's
+   figure is one mesh trace without an axis box: in software WebGL each trace and the axis box
+   (grid, ticks, titles) cost more than the hull's vertices.
 3. Where the time goes, per browser step: a hook on the page's WebSocket records the time and
    size of every message from the server. Printed: the wait for the first message (request
    and the script's start), the span of the messages (the script running and sending), the
@@ -250,8 +250,14 @@ _MASS_CHART_JS = """() => [...document.querySelectorAll('[data-testid="stImage"]
   || [...document.querySelectorAll('.js-plotly-plot .main-svg')].some(
     e => e.getBoundingClientRect().width > 0)"""
 
-#: The Performance tab's five charts are drawn (each plotly chart with its traces).
-_PERF_CHARTS_JS = """() => [...document.querySelectorAll('.js-plotly-plot')].filter(d =>
+#: The Performance tab's five charts are drawn: five static drawings (images whose SVG is a
+#: Performance chart, app_ui/perf_view.py) decoded and laid out, or five plotly charts with
+#: their traces (an older checkout, or the tab's "Interactive charts" toggle).
+_PERF_CHARTS_JS = """() => [...document.querySelectorAll('[data-testid="stImage"] img')].filter(i =>
+    i.complete && i.naturalWidth > 0 && i.getBoundingClientRect().width > 0
+    && i.src.startsWith('data:image/svg+xml;base64,')
+    && atob(i.src.split(',')[1]).includes('data-chart="perf_')).length >= 5
+  || [...document.querySelectorAll('.js-plotly-plot')].filter(d =>
     d.getBoundingClientRect().width > 0 && d.querySelector('.main-svg .trace')).length >= 5"""
 
 _ELEMENTS_JS = "() => document.querySelectorAll('[data-testid=\"stElementContainer\"]').length"
@@ -527,7 +533,8 @@ def bench_browser(repeats: int = 5) -> dict[str, list] | None:
                 # tab switch: Mass (table + bar chart: a static drawing, or an older
                 # checkout's plotly chart)
                 _step(page, out, "tab", page.get_by_role("tab", name="Mass"), _MASS_CHART_JS)
-                # tab switch: Performance (three tables, five plotly charts)
+                # tab switch: Performance (three tables, five static charts: or an older
+                # checkout's five plotly charts)
                 _step(
                     page, out, "perf", page.get_by_role("tab", name="Performance"),
                     _PERF_CHARTS_JS,

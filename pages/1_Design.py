@@ -19,6 +19,7 @@ from app_ui import (
     lateral_view,
     mass_view,
     mission_view,
+    perf_view,
     plots,
     preload,
     saving,
@@ -34,14 +35,11 @@ from app_ui import (
 )
 from app_ui.errors import report_unexpected
 from app_ui.tables import (
-    PERF_HELP,
-    PERF_TABLES,
     constraint_styler,
     geometry_frame,
     mass_frame,
     mass_styler,
     performance_frame,
-    performance_styler,
 )
 
 st.title("Aerostat design")
@@ -75,6 +73,8 @@ TAB_KEY = "design_tab"
 EXPORTS_KEY = "design_exports"
 #: Session-state key of the constraint table's section (open: True).
 CONSTRAINTS_KEY = "design_constraints"
+#: Session-state key of the Performance tab's "Interactive charts" toggle (plotly: True).
+PERF_INTERACTIVE_KEY = "perf_interactive"
 #: Session-state key of the input column's design-file section (open: True).
 DESIGN_FILE_KEY = "design_file"
 
@@ -143,15 +143,10 @@ def _mass_tab(rep: DesignReport) -> None:
 
 
 def _performance_tab(rep: DesignReport) -> None:
-    pdf = performance_frame(rep.performance_rows)
-    # Three static tables by theme, headers that wrap: one grid of 15 columns scrolled sideways
-    # at 1024 px (the result column is under 400 px wide there).
-    for title, columns in PERF_TABLES.items():
-        st.markdown(
-            f"**{title}**", help=" ".join(PERF_HELP[c] for c in columns if c in PERF_HELP) or None
-        )
-        st.table(performance_styler(pdf, columns))
-    st.caption("Rows with a red background break an operating limit (last column says which).")
+    # Three tables by theme (one of 15 columns scrolled sideways at 1024 px, where the result
+    # column is under 500 px wide), as one escaped-HTML block: three st.table of a styler
+    # were about 0.3 s of the tab switch in a browser without a GPU (benchmarks/bench_app.py)
+    st.html(tables.performance_html(performance_frame(rep.performance_rows)))
     st.download_button(
         "Performance table (CSV)",
         data=tables.export_csv(rep.performance_rows, formats.system()),  # SI + unit row
@@ -161,20 +156,35 @@ def _performance_tab(rep: DesignReport) -> None:
         icon=":material/download:",
         key="dl_performance",
     )
-    r1 = st.columns(2)
-    r1[0].plotly_chart(plots.performance_figure(rep, "blow_by"), key="perf_blow_by")
-    r1[1].plotly_chart(plots.performance_figure(rep, "alpha_eq"), key="perf_alpha")
-    r2 = st.columns(2)
-    r2[0].plotly_chart(plots.performance_figure(rep, "dynamic_lift"), key="perf_lift")
-    r2[1].plotly_chart(plots.tension_figure(rep), key="perf_tension")
-    r3 = st.columns(2)
-    r3[0].plotly_chart(plots.cm_figure(rep), key="perf_cm")
-    r3[1].caption(
+    # Static drawings, one image element for the five (one a row at 1024 px, two at 1400 px):
+    # five plotly charts here were most of the tab switch's second (benchmarks/bench_app.py).
+    # The tables above list every number; zoom and hover are a toggle away.
+    if st.toggle("Interactive charts (zoom, hover)", key=PERF_INTERACTIVE_KEY):
+        r1 = st.columns(2)
+        r1[0].plotly_chart(plots.performance_figure(rep, "blow_by"), key="perf_blow_by")
+        r1[1].plotly_chart(plots.performance_figure(rep, "alpha_eq"), key="perf_alpha")
+        r2 = st.columns(2)
+        r2[0].plotly_chart(plots.performance_figure(rep, "dynamic_lift"), key="perf_lift")
+        r2[1].plotly_chart(plots.tension_figure(rep), key="perf_tension")
+        r3 = st.columns(2)
+        r3[0].plotly_chart(plots.cm_figure(rep), key="perf_cm")
+        with r3[1]:
+            _stability_notes(rep)  # beside the longitudinal C_m
+    else:
+        charts = perf_view.performance_charts(rep)
+        st.image(
+            [c.svg for c in charts], width=perf_view.WIDTH_PX, alt=[c.alt for c in charts]
+        )
+        _stability_notes(rep)
+
+
+def _stability_notes(rep: DesignReport) -> None:
+    """How to read the C_m chart, and the lateral derivatives (after the longitudinal C_m)."""
+    st.caption(
         "C_m is the pitching moment about the confluence point over q V^(2/3) l. The trim "
         "is stable where C_m falls as α rises (negative slope at the green point)."
     )
-    with r3[1]:
-        lateral_view.render(rep)  # the lateral derivatives beside the longitudinal C_m
+    lateral_view.render(rep)
 
 
 def _tether_tab(rep: DesignReport) -> None:

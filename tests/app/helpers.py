@@ -245,6 +245,55 @@ def mass_bars(at: AppTest) -> dict[str, float]:
     raise KeyError("no mass bar chart on the page")
 
 
+def svg_images(at: AppTest) -> list[str]:
+    """The SVG markup of every image on the page (``st.image`` of an SVG: a base64 data URL)."""
+    return [
+        base64.b64decode(img.url.split(",", 1)[1]).decode("utf-8")
+        for el in at.get("image")
+        for img in el.proto.imgs
+        if img.url.startswith("data:image/svg+xml;base64,")
+    ]
+
+
+def perf_charts(at: AppTest) -> dict:
+    """The Performance tab's static charts: {key ("perf_blow_by" ...): parsed SVG root}."""
+    import xml.etree.ElementTree as ET
+
+    roots = [ET.fromstring(body) for body in svg_images(at) if "data-chart=" in body]
+    return {r.get("data-chart"): r for r in roots}
+
+
+def svg_series(root, key: str) -> tuple[np.ndarray, np.ndarray]:
+    """(x, y) of a line of a static chart (:mod:`app_ui.perf_view`), in the units it shows."""
+    for g in root.iter("{http://www.w3.org/2000/svg}g"):
+        if g.get("data-series") == key:
+            return (
+                np.array(g.get("data-x").split(), float),
+                np.array(g.get("data-y").split(), float),
+            )
+    raise KeyError(f"no series {key!r} in chart {root.get('data-chart')!r}")
+
+
+def svg_limit_points(root) -> np.ndarray:
+    """x of the red crosses of a static chart (the speeds that break an operating limit)."""
+    return np.array(
+        [
+            float(g.get("data-x"))
+            for g in root.iter("{http://www.w3.org/2000/svg}g")
+            if g.get("data-limit-point")
+        ]
+    )
+
+
+def svg_limit_lines(root) -> dict[str, float]:
+    """{name: value} of the requirement lines of a static chart, in the units it shows."""
+    return {
+        e.get("data-limit"): float(e.get("data-value"))
+        for e in root.iter("{http://www.w3.org/2000/svg}line")
+        if e.get("data-limit")
+    }
+
+
 def side_view(at: AppTest) -> dict:
     """The Design page's static side view (an SVG drawn to scale): its scale [px/m], the hull
     outline's extent in metres, and the marked points {key: (xi, z)} [m]."""

@@ -11,7 +11,7 @@ import pytest
 
 from aerostat_core import FABRICS, Requirement, design, thesis_baseline
 from aerostat_core.model.io import design_to_json, inputs_from_dict, inputs_to_dict
-from app_ui import state
+from app_ui import formats, state
 from app_ui.form_model import FIELD_BY_KEY
 from tests.app.helpers import (
     COMPARE_PAGE,
@@ -24,13 +24,19 @@ from tests.app.helpers import (
     messages,
     metric,
     metric_float,
+    perf_charts,
     show_tab,
     side_view,
     submit,
+    svg_limit_lines,
+    svg_limit_points,
+    svg_series,
     table,
     trace,
     values,
 )
+
+SVG = "{http://www.w3.org/2000/svg}"
 
 
 @pytest.fixture
@@ -133,8 +139,54 @@ def test_sized_volume_follows_the_payload(at):
 
 
 def test_performance_plots_show_the_engine_curves(at):
+    """The Performance tab's static charts draw the engine's numbers (SI here; US customary in
+    test_units), the requirement lines at their values and the trim point on the C_m curve."""
+    d = _baseline()
+    p = d.performance
+    show_tab(at, "Performance")
+    charts = perf_charts(at)
+    assert list(charts) == ["perf_blow_by", "perf_alpha", "perf_lift", "perf_tension", "perf_cm"]
+    for key, field in (("perf_blow_by", "blow_by"), ("perf_alpha", "alpha_eq"),
+                       ("perf_lift", "dynamic_lift")):  # fmt: skip
+        x, y = svg_series(charts[key], field)
+        np.testing.assert_allclose(x, p.wind_speed, rtol=1e-8)
+        np.testing.assert_allclose(y, getattr(p, field), rtol=1e-8, atol=1e-12)
+        assert svg_limit_lines(charts[key])["design_wind"] == d.requirement.design_wind
+    assert svg_limit_lines(charts["perf_blow_by"])["blow_by_limit"] == pytest.approx(
+        d.requirement.blow_by_limit
+    )
+    assert svg_limit_lines(charts["perf_alpha"])["stall_deg"] == pytest.approx(
+        d.configuration.aero.fin_stall_angle_deg
+    )
+    tension = charts["perf_tension"]
+    np.testing.assert_allclose(svg_series(tension, "tension_top")[1], p.tension_top, rtol=1e-8)
+    np.testing.assert_allclose(svg_series(tension, "tension_winch")[1], p.tension_winch, rtol=1e-8)
+    np.testing.assert_allclose(svg_series(tension, "safety_factor")[1], p.safety_factor, rtol=1e-8)
+    sf = next(g for g in tension.iter(f"{SVG}g") if g.get("data-series") == "safety_factor")
+    assert sf.get("data-axis") == "y2"  # the right-hand axis, with the required factor on it
+    assert svg_limit_lines(tension)["min_safety_factor"] == d.requirement.min_tether_safety_factor
+    cm = charts["perf_cm"]
+    a, c = svg_series(cm, "cm")
+    np.testing.assert_allclose(a, d.cm_alpha_deg, rtol=1e-8)
+    np.testing.assert_allclose(c, d.cm, rtol=1e-8, atol=1e-12)
+    trim = next(g for g in cm.iter(f"{SVG}g") if g.get("data-trim"))
+    a_eq = float(d.design_point["alpha_eq_deg"])
+    assert float(trim.get("data-x")) == pytest.approx(a_eq, abs=1e-6)
+    assert float(trim.get("data-y")) == pytest.approx(np.interp(a_eq, d.cm_alpha_deg, d.cm))
+    perf = table(at, "Wind [m/s]")  # the table as shown: each value at its decimals
+    assert len(perf) == d.performance.wind_speed.size
+    assert list(perf["Blow-by [m]"]) == [formats.text(v, "blow_by") for v in p.blow_by]
+    np.testing.assert_allclose(perf["Blow-by [m]"].astype(float), p.blow_by, atol=0.05)
+
+
+def test_interactive_charts_are_the_plotly_figures(at):
+    """The toggle swaps the drawings for the plotly figures (zoom, hover): the same curves."""
     d = _baseline()
     show_tab(at, "Performance")
+    assert chart_keys(at) == []
+    at.toggle(key="perf_interactive").set_value(True).run()
+    assert not at.exception
+    assert perf_charts(at) == {}  # the drawings make way for the figures
     blow = chart(at, "perf_blow_by")
     main = blow["data"][0]
     np.testing.assert_allclose(values(main, "x"), d.performance.wind_speed)
@@ -157,9 +209,10 @@ def test_performance_plots_show_the_engine_curves(at):
     cm = chart(at, "perf_cm")
     np.testing.assert_allclose(values(cm["data"][0], "x"), d.cm_alpha_deg)
     np.testing.assert_allclose(values(cm["data"][0], "y"), d.cm, rtol=1e-9)
-    perf = table(at, "Wind [m/s]")
-    assert len(perf) == d.performance.wind_speed.size
-    np.testing.assert_allclose(perf["Blow-by [m]"], d.performance.blow_by, atol=1e-8)
+    # the lateral block stays on the tab either way
+    assert any("C_nβ" in m.value for m in at.markdown)
+    at.toggle(key="perf_interactive").set_value(False).run()
+    assert chart_keys(at) == [] and len(perf_charts(at)) == 5
 
 
 def test_rows_over_a_limit_stand_out(at):
@@ -170,6 +223,16 @@ def test_rows_over_a_limit_stand_out(at):
     limited = np.asarray(d.performance.limited, bool)
     assert limited.any() and not limited.all()
     speeds = d.performance.wind_speed[limited]
+    charts = perf_charts(at)
+    for key in ("perf_blow_by", "perf_alpha", "perf_lift", "perf_tension"):
+        np.testing.assert_allclose(svg_limit_points(charts[key]), speeds)
+        marks = [
+            c.get("data-limited")
+            for c in charts[key].iter(f"{SVG}circle")
+            if c.get("data-limited") is not None
+        ]
+        assert marks == [str(int(f)) for f in limited]  # every marker says whether it is over
+    at.toggle(key="perf_interactive").set_value(True).run()
     for key in ("perf_blow_by", "perf_alpha", "perf_lift", "perf_tension"):
         marks = trace(chart(at, key), "operating limit exceeded")
         np.testing.assert_allclose(values(marks, "x"), speeds)
@@ -475,6 +538,9 @@ def test_only_the_open_tab_is_computed(at):
     show_tab(at, "3-D view")
     assert chart_keys(at) == ["hull_3d"]
     show_tab(at, "Performance")
-    assert chart_keys(at) == ["perf_blow_by", "perf_alpha", "perf_lift", "perf_tension", "perf_cm"]
+    assert chart_keys(at) == []  # static drawings; the plotly figures behind a toggle
+    assert list(perf_charts(at)) == [
+        "perf_blow_by", "perf_alpha", "perf_lift", "perf_tension", "perf_cm"
+    ]
     submit(at, in_payload=12.0)  # the open tab stays open after a change
-    assert "perf_blow_by" in chart_keys(at)
+    assert "perf_blow_by" in perf_charts(at)

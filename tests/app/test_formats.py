@@ -8,7 +8,7 @@ import re
 import pytest
 
 from app_ui import formats, tables
-from tests.app.helpers import chart, goto, messages, metric, show_tab, shown_table
+from tests.app.helpers import chart, goto, messages, metric, show_tab, shown_table, table
 
 OPT_PAGE = "pages/4_Optimise.py"
 
@@ -56,7 +56,7 @@ def test_same_quantity_same_decimals_on_design_optimise_and_in_the_tables(thesis
     total = masses.loc[masses["Item"] == "total", "Mass [kg]"].item()
     assert total == shown["total_mass"]  # the same text as the headline metric
     show_tab(at, "Performance")
-    where = shown_table(at, "Wind [m/s]")  # "Where it flies", as the page shows it
+    where = table(at, "Wind [m/s]")  # "Where it flies", as the page shows it
     assert all(_decimals(v) == formats.decimals("blow_by") for v in where["Blow-by [m]"])
     assert not any(v.startswith("-0.0") or v == "-0" for v in where["Altitude loss [m]"])
     from aerostat_core import design, thesis_baseline
@@ -73,7 +73,8 @@ def test_same_quantity_same_decimals_on_design_optimise_and_in_the_tables(thesis
     page = tables.geometry_html(tables.geometry_frame(rep.geometry_rows))  # what the page shows
     cells = re.findall(r'<td class="num">([^<]*)</td>', page)
     assert cells[volume_row] == shown["volume"]
-    # the hover text of a Design figure
+    # the hover text of a Design figure (the interactive charts: a toggle on the tab)
+    at.toggle(key="perf_interactive").set_value(True).run()
     blow = chart(at, "perf_blow_by")["data"][0]["hovertemplate"]
     assert f"%{{y:.{formats.decimals('blow_by')}f}}" in blow
 

@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
@@ -15,10 +16,21 @@ from aerostat_core.model.input_paths import all_specs
 from app_ui import formats, show
 from app_ui.form_model import FIELDS, build_inputs, widget_values
 from tests.app.conftest import APP_PATH
-from tests.app.helpers import chart, goto, messages, open_groups, show_tab, submit
+from tests.app.helpers import (
+    chart,
+    goto,
+    messages,
+    open_groups,
+    perf_charts,
+    show_tab,
+    submit,
+    svg_limit_lines,
+    svg_series,
+)
 
 #: 1 ft, 1 lb, 1 kt in SI (exact definitions).
 FT, LB, KT = 0.3048, 0.45359237, 1852.0 / 3600.0
+LBF = LB * 9.80665  # 1 lbf in N
 NUMBERS = [p for p in all_specs() if p.spec.kind == "number" and p.spec.lo is not None]
 
 
@@ -159,8 +171,36 @@ def test_a_rejected_us_value_is_named_in_us_units():
 
 
 def test_design_plots_follow_the_unit_system():
-    at = _units(_app(), "US")
+    at = _app()
     show_tab(at, "Performance")
+    si = perf_charts(at)
+    at = _units(at, "US")
+    us = perf_charts(at)
+    # the static drawings: axes, points and requirement lines in kt, ft and lbf
+    blow = us["perf_blow_by"]
+    assert (blow.get("data-x-unit"), blow.get("data-y-unit")) == ("kt", "ft")
+    texts = ["".join(t.itertext()) for t in blow.iter("{http://www.w3.org/2000/svg}text")]
+    assert "Blow-by [ft]" in texts and "Wind speed at the aerostat [kt]" in texts
+    for key, field, factor in (("perf_blow_by", "blow_by", FT), ("perf_alpha", "alpha_eq", 1.0),
+                               ("perf_lift", "dynamic_lift", LBF),
+                               ("perf_tension", "tension_top", LBF),
+                               ("perf_tension", "safety_factor", 1.0)):  # fmt: skip
+        x_si, y_si = svg_series(si[key], field)
+        x_us, y_us = svg_series(us[key], field)
+        np.testing.assert_allclose(x_us, x_si / KT, rtol=1e-8)
+        np.testing.assert_allclose(y_us, y_si / factor, rtol=1e-8, atol=1e-12)
+        assert svg_limit_lines(us[key])["design_wind"] == pytest.approx(
+            svg_limit_lines(si[key])["design_wind"] / KT
+        )
+    assert svg_limit_lines(blow)["blow_by_limit"] == pytest.approx(
+        svg_limit_lines(si["perf_blow_by"])["blow_by_limit"] / FT
+    )
+    assert us["perf_tension"].get("data-y-unit") == "lbf"
+    assert svg_limit_lines(us["perf_tension"])["min_safety_factor"] == svg_limit_lines(
+        si["perf_tension"]
+    )["min_safety_factor"]  # dimensionless: the same number
+    # the interactive plotly figures too
+    at.toggle(key="perf_interactive").set_value(True).run()
     fig = chart(at, "perf_blow_by")
     assert fig["layout"]["yaxis"]["title"]["text"] == "Blow-by [ft]"
     assert fig["layout"]["xaxis"]["title"]["text"].endswith("[kt]")

@@ -138,6 +138,12 @@ def test_a_rejected_input_is_reported_in_its_group(thesis_page: Page):
     assert_no_exception(page, "Design page after a rejected input")
 
 
+#: Static drawings (SVG images) decoded and laid out: at least ``n``.
+_CHARTS_DRAWN = """(n) => [...document.querySelectorAll(
+    '[data-testid="stImage"] img[src^="data:image/svg+xml"]')].filter(i =>
+    i.complete && i.naturalWidth > 0 && i.getBoundingClientRect().width > 0).length >= n"""
+
+
 def test_screenshots_of_each_page(thesis_page: Page, console_errors: list[str]):
     page = thesis_page
     page.set_viewport_size(SHOT_VIEWPORT)
@@ -152,7 +158,10 @@ def test_screenshots_of_each_page(thesis_page: Page, console_errors: list[str]):
     for tab in ("Performance", "Tether profiles", "3-D view"):
         page.get_by_role("tab", name=tab).click()
         wait_for_rerun(page)
-        expect(page.locator(".js-plotly-plot").filter(visible=True).first).to_be_visible()
+        if tab == "Performance":  # five static drawings, decoded and laid out
+            page.wait_for_function(_CHARTS_DRAWN, arg=5)
+        else:
+            expect(page.locator(".js-plotly-plot").filter(visible=True).first).to_be_visible()
         screenshot(page, f"design_{tab.lower().replace(' ', '_').replace('-', '')}")
     goto_page(page, "Compare")
     assert_no_exception(page, "Compare page")

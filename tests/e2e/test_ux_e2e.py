@@ -198,10 +198,17 @@ def _switch_units(page: Page) -> None:
     expect(metric.filter(has_text="Blow-by [ft]").first).to_be_visible(timeout=PAGE_TIMEOUT_MS)
     page.get_by_test_id("stMain").get_by_role("tab", name="Performance", exact=True).click()
     wait_for_rerun(page)
-    expect(page.get_by_test_id("stTable").filter(has_text="Wind [kt]").first).to_be_visible(
+    expect(page.get_by_test_id("stHtml").filter(has_text="Wind [kt]").first).to_be_visible(
         timeout=PAGE_TIMEOUT_MS
     )
-    # the plots' axes follow (drawn by plotly in the browser)
+    # the plots' axes follow: the static drawings (their text alternative, and the axis titles
+    # drawn in them) and, behind the toggle, plotly's
+    blow = page.get_by_role("img", name=re.compile(r"^Blow-by .* ft over .* kt;"))
+    expect(blow).to_be_visible(timeout=PAGE_TIMEOUT_MS)
+    drawn = blow.evaluate("i => atob(i.src.split(',')[1])")
+    assert "Blow-by [ft]" in drawn and "Wind speed at the aerostat [kt]" in drawn
+    page.get_by_text("Interactive charts (zoom, hover)").click()
+    wait_for_rerun(page)
     expect(page.locator(".ytitle", has_text="Blow-by [ft]").first).to_be_visible(
         timeout=PAGE_TIMEOUT_MS
     )
