@@ -197,6 +197,17 @@ class _Line:
     dash: str = "6 4"
 
 
+def _design_wind_line(lim) -> _Line:
+    """The vertical line at the design wind, in the chosen units (every wind-speed chart has it)."""
+    return _Line(
+        "design_wind",
+        "x",
+        float(formats.convert(lim.design_wind, "wind")),
+        "design wind",
+        dash="2 3",
+    )
+
+
 def _legend(items: list[tuple[str, str]], x0: float, y0: float, width: float) -> tuple[list, float]:
     """Legend entries (symbol markup, text) in rows within ``width``; the markup and the rows'
     height."""
@@ -463,15 +474,7 @@ def wind_chart(rep: DesignReport, field: str, key: str = "") -> Chart:
     title, name, quantity = _WIND_CHARTS[field]
     key = key or next(k for k, f in CHARTS if f == field)
     x, y = _shown(p.wind_speed, "wind"), _shown(getattr(p, field), quantity)
-    lines = [
-        _Line(
-            "design_wind",
-            "x",
-            float(formats.convert(lim.design_wind, "wind")),
-            "design wind",
-            dash="2 3",
-        )
-    ]
+    lines = [_design_wind_line(lim)]
     if field == "blow_by":
         lines.append(
             _Line(
@@ -539,13 +542,7 @@ def tension_chart(rep: DesignReport) -> Chart:
     ]
     required = f"required safety factor {lim.min_safety_factor:g}"
     lines = [
-        _Line(
-            "design_wind",
-            "x",
-            float(formats.convert(lim.design_wind, "wind")),
-            "design wind",
-            dash="2 3",
-        ),
+        _design_wind_line(lim),
         _Line("min_safety_factor", "y2", float(lim.min_safety_factor), required, THIRD, "2 3"),
     ]
     legend = [
