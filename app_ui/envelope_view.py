@@ -29,6 +29,7 @@ from aerostat_core.studies.site_wind import MAX_CSV_BYTES, WeibullSite, flyable_
 from aerostat_core.studies.uncertainty import monte_carlo, rule_set_spread
 
 from . import cache, entry, formats, show
+from .headline import Headline
 from .plots import WIND_AXIS
 from .text import plain
 from .theme import MARGIN, PALETTE
@@ -443,30 +444,31 @@ def _flyable(inputs_json: str) -> None:
     except ValueError as exc:  # quotes the file's cell: never rendered as markup
         st.error(str(exc).translate(_MD), icon=":material/error:")
         return
-    c = show.metric_row(3)  # metrics as wide as their labels: columns cut them
-    c[0].metric(
-        "Time flyable [%]",
-        f"{f['percent_time_flyable']:.1f}",
-        help=formats.text_in_system(f"Share of the time the wind at {f['site_altitude_m']:g} m")
-        + " lies in the flyable winds "
-        + ", ".join(
-            f"{formats.shown(a, 'wind')}-{formats.shown(b, 'wind')}"
-            for a, b in f["flyable_winds_m_s"]
-        )
-        + f" {formats.unit_of('wind')}.",
-    )
-    c[1].metric(
-        "Longest outage [h]",
-        f"{f['longest_outage_h']:.0f}",
-        help="Longest run of hours that cannot fly (Weibull: mean yearly longest "
-        "run of simulated hours; CSV: in the record).",
-    )
-    c[2].metric(
-        formats.label(f"Design wind for {100 * f['target_availability']:g} %", "wind"),
-        formats.shown(f["design_wind_for_target_m_s"], "wind"),
-        help="Wind at the aerostat not exceeded that share of the time: size for it "
-        "to fly that often.",
-    )
+    show.headlines([
+        Headline(
+            "Time flyable [%]",
+            f"{f['percent_time_flyable']:.1f}",
+            help=formats.text_in_system(f"Share of the time the wind at {f['site_altitude_m']:g} m")
+            + " lies in the flyable winds "
+            + ", ".join(
+                f"{formats.shown(a, 'wind')}-{formats.shown(b, 'wind')}"
+                for a, b in f["flyable_winds_m_s"]
+            )
+            + f" {formats.unit_of('wind')}.",
+        ),
+        Headline(
+            "Longest outage [h]",
+            f"{f['longest_outage_h']:.0f}",
+            help="Longest run of hours that cannot fly (Weibull: mean yearly longest "
+            "run of simulated hours; CSV: in the record).",
+        ),
+        Headline(
+            formats.label(f"Design wind for {100 * f['target_availability']:g} %", "wind"),
+            formats.shown(f["design_wind_for_target_m_s"], "wind"),
+            help="Wind at the aerostat not exceeded that share of the time: size for it "
+            "to fly that often.",
+        ),
+    ])
 
 
 def _uncertainty(inputs_json: str, rep: DesignReport) -> None:
@@ -494,24 +496,24 @@ def _uncertainty(inputs_json: str, rep: DesignReport) -> None:
         st.error(plain(str(exc)), icon=":material/error:")
         return
     s = mc["summary"]
-    c = show.metric_row(4)  # metrics as wide as their labels: four columns cut them
-    # in the chosen unit system (ft, lbf, lb in US customary)
-    c[0].metric(
-        formats.label("Blow-by 5-95 %", "distance"),
-        f"{formats.shown(s['blow_by_p05_m'], 'distance')} – "
-        f"{formats.shown(s['blow_by_p95_m'], 'distance')}",
-    )
-    c[1].metric(
-        formats.label("Tension 5-95 %", "force"),
-        f"{formats.shown(s['tension_p05_N'], 'force')} – "
-        f"{formats.shown(s['tension_p95_N'], 'force')}",
-    )
     lift = formats.display("mass")
-    c[2].metric(
-        formats.label("Free lift 5-95 %", "mass"),
-        f"{lift.show(s['free_lift_p05_kg']):.2f} – {lift.show(s['free_lift_p95_kg']):.2f}",
-    )
-    c[3].metric("P(all limits met)", f"{100 * s['probability_feasible']:.0f} %")
+    show.headlines([  # in the chosen unit system (ft, lbf, lb in US customary)
+        Headline(
+            formats.label("Blow-by 5-95 %", "distance"),
+            f"{formats.shown(s['blow_by_p05_m'], 'distance')} – "
+            f"{formats.shown(s['blow_by_p95_m'], 'distance')}",
+        ),
+        Headline(
+            formats.label("Tension 5-95 %", "force"),
+            f"{formats.shown(s['tension_p05_N'], 'force')} – "
+            f"{formats.shown(s['tension_p95_N'], 'force')}",
+        ),
+        Headline(
+            formats.label("Free lift 5-95 %", "mass"),
+            f"{lift.show(s['free_lift_p05_kg']):.2f} – {lift.show(s['free_lift_p95_kg']):.2f}",
+        ),
+        Headline("P(all limits met)", f"{100 * s['probability_feasible']:.0f} %"),
+    ])
     st.plotly_chart(bands_figure(mc, rep), key="mc_bands")
     # static tables, full width, cells that wrap: every column in sight at 1024 px
     probabilities = pd.DataFrame(

@@ -17,6 +17,7 @@ from aerostat_core.model.input_paths import spec_for_path
 from aerostat_core.model.mission import MissionSpec
 
 from . import cache, entry, formats, show, state
+from .headline import Headline
 from .text import plain
 
 #: Labels of the choices (the values are the engine's).
@@ -125,35 +126,36 @@ def render(d) -> None:
     _inputs(req, cfg)
     # a wrapping row (metrics as wide as their label): six fixed columns cut the labels to
     # "He top-up, 3…" even at 1400 px; volumes and forces in the sidebar's unit system
-    c = show.metric_row(6)
-    c[0].metric(
-        formats.label("Ballonet", "volume"),
-        formats.shown(s.ballonet_volume_m3, "volume"),
-        help="Ballonet volume from launch to operating altitude plus the superheat.",
-    )
-    c[1].metric(
-        "Days to top-up",
-        _fmt(s.days_to_top_up),
-        help="Days of helium permeation until the free lift falls to the required share.",
-    )
-    c[2].metric(
-        formats.label(f"He top-up, {req.deployment_days:g} d", "volume"),
-        formats.shown(s.helium_top_up_m3, "volume"),
-        help=f"Helium to replace what permeates out; cost {m.top_up_cost:,.0f} USD.",
-    )
-    c[3].metric(
-        "Envelope stress margin",
-        _fmt(s.envelope_stress_margin, 2),
-        help="Fabric strength / (safety factor × membrane load) − 1 at the design wind.",
-    )
-    c[4].metric(
-        formats.label("Winch pull", "force"),
-        formats.shown(s.winch_pull_N, "force"),
-        help="Largest tether tension at the winch over the sweep and the survival wind.",
-    )
-    c[5].metric(
-        "Winch power [W]", _fmt(s.winch_power_W, 0), help="Line pull × reel speed / efficiency."
-    )
+    show.headlines([
+        Headline(
+            formats.label("Ballonet", "volume"),
+            formats.shown(s.ballonet_volume_m3, "volume"),
+            help="Ballonet volume from launch to operating altitude plus the superheat.",
+        ),
+        Headline(
+            "Days to top-up",
+            _fmt(s.days_to_top_up),
+            help="Days of helium permeation until the free lift falls to the required share.",
+        ),
+        Headline(
+            formats.label(f"He top-up, {req.deployment_days:g} d", "volume"),
+            formats.shown(s.helium_top_up_m3, "volume"),
+            help=f"Helium to replace what permeates out; cost {m.top_up_cost:,.0f} USD.",
+        ),
+        Headline(
+            "Envelope stress margin",
+            _fmt(s.envelope_stress_margin, 2),
+            help="Fabric strength / (safety factor × membrane load) − 1 at the design wind.",
+        ),
+        Headline(
+            formats.label("Winch pull", "force"),
+            formats.shown(s.winch_pull_N, "force"),
+            help="Largest tether tension at the winch over the sweep and the survival wind.",
+        ),
+        Headline(
+            "Winch power [W]", _fmt(s.winch_power_W, 0), help="Line pull × reel speed / efficiency."
+        ),
+    ])
     surv = req.survival_wind
     if m.stay_up:
         st.success(

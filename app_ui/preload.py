@@ -51,7 +51,7 @@ def warm_bundles() -> None:
         # is drawn before the browser has loaded the code of the elements above it, and the
         # chart bundle's 4.7 MB evaluated then held the first result back (by seconds on 2
         # busy cores); then when the browser is idle.
-        "const ready = () => document.querySelector('[data-testid=\"stMetric\"]') && "
+        "const ready = () => document.querySelector('[data-testid=\"headline\"]') && "
         "document.querySelector('[data-test-script-state=\"notRunning\"]') && "
         "!document.querySelector('[data-testid=\"stSkeleton\"]');"
         "const idle = window.requestIdleCallback || ((f) => setTimeout(f, 0));"

@@ -1,9 +1,9 @@
 """Small Streamlit display helpers shared by the pages: messages as plain text and a wrapping
-row of headline metrics."""
+row of headline numbers."""
 
 from __future__ import annotations
 
-from typing import Any
+from typing import Any, Sequence
 
 import streamlit as st
 from streamlit.runtime.scriptrunner import get_script_run_ctx
@@ -11,29 +11,18 @@ from streamlit.runtime.scriptrunner import get_script_run_ctx
 from aerostat_core.base.fields import UNIT_SYSTEM_LABELS, UNIT_SYSTEMS
 
 from . import formats
+from .headline import Item, headline_html
 from .text import plain
 
 #: Session key of the unit system chosen in the sidebar ("SI" or "US").
 UNIT_KEY = "unit_system"
 
 
-class _MetricSlot:
-    """One place in a :func:`metric_row`: ``.metric(...)`` sized to its content."""
-
-    def __init__(self, row: Any) -> None:
-        self._row = row
-
-    def metric(self, *args: Any, **kwargs: Any) -> Any:
-        kwargs.setdefault("width", "content")
-        return self._row.metric(*args, **kwargs)
-
-
-def metric_row(n: int) -> list[_MetricSlot]:
-    """``n`` places for headline numbers, used like ``st.columns(n)``: a wrapping horizontal
-    row whose metrics take the width of their label and value, so a narrow window moves a
-    metric to the next line instead of cutting it to "1…" (fixed columns did at 1024 px)."""
-    row = st.container(horizontal=True, wrap=True, gap="medium")
-    return [_MetricSlot(row)] * n
+def headlines(items: Sequence[Item]) -> None:
+    """A page's headline numbers as one element (:func:`app_ui.headline.headline_html`): a
+    wrapping row whose numbers keep their width, so a narrow window moves a number to the next
+    line instead of cutting it."""
+    st.html(headline_html(items))
 
 
 def feedback(level: str, text: str) -> None:

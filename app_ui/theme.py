@@ -88,6 +88,8 @@ SIDEBAR_WIDTH = 220
 #: * tab bars wrap onto a second line instead of scrolling sideways (every tab in sight; the
 #:   sliding underline, placed for one line, is replaced by the selected tab's own);
 #: * labels and table cells break between words, never inside one ("Ope-rational");
+#: * the headline numbers (app_ui/headline.py) in a row that wraps a number whole onto the next
+#:   line, a label's help shown on hover under a dotted underline;
 #: * a button's or a check box's label wraps instead of ending in an ellipsis ("Load thesis
 #:   b…", "Sav…", "Ramp and h…").
 PAGE_CSS = f"""
@@ -98,7 +100,7 @@ section[data-testid="stSidebar"] {{ width: {SIDEBAR_WIDTH}px !important;
 [data-testid="stTabs"] [role="tablist"] [data-baseweb="tab-highlight"],
 [data-testid="stTabs"] [role="tablist"] [data-baseweb="tab-border"] {{ display: none; }}
 [data-testid="stTabs"] [role="tab"][aria-selected="true"] {{ box-shadow: inset 0 -3px 0 {ACCENT}; }}
-[data-testid="stWidgetLabel"] p, [data-testid="stMetricLabel"] p, [data-testid="stTable"] th,
+[data-testid="stWidgetLabel"] p, .aerostat-hl .hl-label, [data-testid="stTable"] th,
 [data-testid="stTable"] td {{ word-break: normal; overflow-wrap: normal; hyphens: manual; }}
 button [data-testid="stMarkdownContainer"],
 [data-testid="stWidgetLabel"] [data-testid="stMarkdownContainer"] {{ overflow: visible;
@@ -106,6 +108,14 @@ button [data-testid="stMarkdownContainer"],
 button [data-testid="stMarkdownContainer"] p {{ white-space: normal; text-align: left; }}
 [data-testid="stMainBlockContainer"] {{ padding: 1.5rem 1.5rem 4rem 1.5rem; }}
 [data-testid="stMain"] h1 {{ font-size: 1.75rem; padding: 0 0 0.5rem 0; }}
-[data-testid="stMetricValue"] {{ font-size: 1.6rem; }}
+.aerostat-hl {{ display: flex; flex-wrap: wrap; gap: 0.25rem 1.5rem; }}
+.aerostat-hl > div {{ max-width: 100%; }}
+.aerostat-hl .hl-note {{ flex-basis: 100%; font-size: 0.875rem; opacity: 0.6; margin: 0.25rem 0 0 0; }}
+.aerostat-hl .hl-label {{ font-size: 0.875rem; line-height: 1.4; }}
+.aerostat-hl [title] .hl-label {{ text-decoration: underline dotted; text-underline-offset: 3px;
+  cursor: help; }}
+.aerostat-hl .hl-value {{ font-size: 1.6rem; line-height: 1.3; white-space: nowrap; }}
+.aerostat-hl .hl-delta {{ display: inline-block; font-size: 0.875rem; line-height: 1.4;
+  padding: 0 0.4rem; border-radius: 0.5rem; white-space: nowrap; }}
 </style>
 """

@@ -4,7 +4,7 @@ pages and views that still import it keep working. New code imports the rooms di
 * :mod:`app_ui.form_model` - the form as data (fields, keys, groups, conversions, errors);
 * :mod:`app_ui.form` - its rendering;
 * :mod:`app_ui.text` - plain text helpers (``plain``, ``signed``, ``format_value``, ...);
-* :mod:`app_ui.show` - ``feedback`` and ``metric_row``.
+* :mod:`app_ui.show` - ``feedback`` and ``headlines``.
 """
 
 from __future__ import annotations
@@ -29,7 +29,7 @@ from .form_model import (
     widget_for,
     widget_values,
 )
-from .show import feedback, metric_row
+from .show import feedback, headlines
 from .text import constraint_table_rows, format_value, plain, short, signed, speed_ranges
 
 __all__ = [
@@ -50,8 +50,8 @@ __all__ = [
     "feedback",
     "form_error",
     "format_value",
+    "headlines",
     "input_form",
-    "metric_row",
     "parse_number",
     "plain",
     "short",

@@ -159,11 +159,16 @@ def _wait_healthy(url: str, proc: subprocess.Popen, timeout: float = 60.0) -> No
     raise RuntimeError("streamlit did not become healthy")
 
 
+#: The value of the headline number with this label (app_ui/headline.py; an older checkout's
+#: st.metric), or null while it is not drawn.
 _METRIC_JS = """(label) => {
-  for (const m of document.querySelectorAll('[data-testid="stMetric"]')) {
-    const l = m.querySelector('[data-testid="stMetricLabel"]');
-    if (l && l.innerText.trim() === label) {
-      return m.querySelector('[data-testid="stMetricValue"]').innerText.trim();
+  for (const [box, lab, val] of [['headline', 'headline-label', 'headline-value'],
+                                 ['stMetric', 'stMetricLabel', 'stMetricValue']]) {
+    for (const m of document.querySelectorAll(`[data-testid="${box}"]`)) {
+      const l = m.querySelector(`[data-testid="${lab}"]`);
+      if (l && l.innerText.trim() === label) {
+        return m.querySelector(`[data-testid="${val}"]`).innerText.trim();
+      }
     }
   }
   return null;

@@ -34,6 +34,7 @@ from app_ui import (
     workspace_ui,
 )
 from app_ui.errors import report_unexpected
+from app_ui.headline import Headline, Note
 from app_ui.tables import (
     constraint_styler,
     geometry_frame,
@@ -269,73 +270,75 @@ def _results_body() -> None:
             "(see the message in the form).",
             icon=":material/history:",
         )
-    c = show.metric_row(5)
-    c[0].metric(
-        formats.label("Volume", "volume"),
-        _fmt(s.volume_m3, "volume"),
-        help="Hull volume. Sized: the smallest hull meeting the blow-by limit with positive "
-        "free lift."
-        if rep.sized
-        else "Hull volume, given in the inputs.",
-        delta="sized" if rep.sized else "given",
-        delta_color="off",
-        delta_arrow="off",
-    )
-    c[1].metric(
-        formats.label("Length", "length"), _fmt(s.length_m, "length"), help="Hull length l."
-    )
-    c[2].metric(
-        formats.label("Diameter", "diameter"),
-        _fmt(s.diameter_m, "diameter"),
-        help="Maximum hull diameter d.",
-    )
-    c[3].metric(
-        formats.label("Total mass", "total_mass"),
-        _fmt(s.total_mass_kg, "total_mass"),
-        help="Hull, fins, lifting gas, miscellaneous, payload and tether.",
-    )
-    c[4].metric(
-        formats.label("Free lift", "free_lift"),
-        _fmt(s.free_lift_kg, "free_lift"),
-        help="Gross buoyancy minus total weight, in kilograms "
-        f"({s.percent_static_lift:.0f} % of the gross buoyancy).",
-    )
+    # The ten headline numbers as one element (app_ui/headline.py: ten st.metric were a
+    # quarter of the page's elements, and the first result waited for them).
+    items: list[Headline | Note] = [
+        Headline(
+            formats.label("Volume", "volume"),
+            _fmt(s.volume_m3, "volume"),
+            "Hull volume. Sized: the smallest hull meeting the blow-by limit with positive "
+            "free lift."
+            if rep.sized
+            else "Hull volume, given in the inputs.",
+            delta="sized" if rep.sized else "given",
+        ),
+        Headline(formats.label("Length", "length"), _fmt(s.length_m, "length"), "Hull length l."),
+        Headline(
+            formats.label("Diameter", "diameter"),
+            _fmt(s.diameter_m, "diameter"),
+            "Maximum hull diameter d.",
+        ),
+        Headline(
+            formats.label("Total mass", "total_mass"),
+            _fmt(s.total_mass_kg, "total_mass"),
+            "Hull, fins, lifting gas, miscellaneous, payload and tether.",
+        ),
+        Headline(
+            formats.label("Free lift", "free_lift"),
+            _fmt(s.free_lift_kg, "free_lift"),
+            "Gross buoyancy minus total weight, in kilograms "
+            f"({s.percent_static_lift:.0f} % of the gross buoyancy).",
+        ),
+    ]
     # no wind quantity of a hull that sinks means anything: its design-wind row is not shown
     if not d_now.sinks:
-        st.caption(f"At the design wind, {formats.shown(lim.design_wind, 'wind', with_unit=True)}:")
-        c = show.metric_row(5)
         bb = s.blow_by_at_design_wind_m
-        c[0].metric(
-            formats.label("Blow-by", "blow_by"),
-            _fmt(bb, "blow_by"),
-            delta=text.signed(formats.convert(bb - lim.blow_by_limit, "blow_by"), 1)
-            + f" {formats.unit_of('blow_by')}",
-            delta_color="inverse",
-            help=f"Downwind offset of the confluence point from the winch; limit "
-            f"{formats.shown(lim.blow_by_limit, 'blow_by', with_unit=True)} (the delta is "
-            "blow-by minus limit).",
-        )
-        c[1].metric(
-            "α_eq [deg]",
-            _fmt(s.alpha_at_design_wind_deg, "alpha_eq"),
-            help="Equilibrium angle of attack (moment balance about the confluence point).",
-        )
-        c[2].metric(
-            formats.label("Tension", "tension"),
-            _fmt(s.tension_top_at_design_wind_N, "tension"),
-            help="Tether tension at the confluence point.",
-        )
         sf = s.safety_factor_at_design_wind
-        c[3].metric(
-            "Safety factor [-]",
-            _fmt(sf, "safety_factor"),
-            delta=text.signed(sf - lim.min_safety_factor, formats.decimals("safety_factor")),
-            help="Breaking strength of the tether / largest tension along the tether; required "
-            f"{lim.min_safety_factor:g} (the delta is the margin).",
-        )
-        c[4].metric(
-            "Gas cost [USD]", _fmt(s.gas_cost_USD, "gas_cost"), help="Hull volume × gas price."
-        )
+        items += [
+            Note(f"At the design wind, {formats.shown(lim.design_wind, 'wind', with_unit=True)}:"),
+            Headline(
+                formats.label("Blow-by", "blow_by"),
+                _fmt(bb, "blow_by"),
+                f"Downwind offset of the confluence point from the winch; limit "
+                f"{formats.shown(lim.blow_by_limit, 'blow_by', with_unit=True)} (the delta is "
+                "blow-by minus limit).",
+                delta=text.signed(formats.convert(bb - lim.blow_by_limit, "blow_by"), 1)
+                + f" {formats.unit_of('blow_by')}",
+                tone="good" if bb <= lim.blow_by_limit else "bad",
+            ),
+            Headline(
+                "α_eq [deg]",
+                _fmt(s.alpha_at_design_wind_deg, "alpha_eq"),
+                "Equilibrium angle of attack (moment balance about the confluence point).",
+            ),
+            Headline(
+                formats.label("Tension", "tension"),
+                _fmt(s.tension_top_at_design_wind_N, "tension"),
+                "Tether tension at the confluence point.",
+            ),
+            Headline(
+                "Safety factor [-]",
+                _fmt(sf, "safety_factor"),
+                "Breaking strength of the tether / largest tension along the tether; required "
+                f"{lim.min_safety_factor:g} (the delta is the margin).",
+                delta=text.signed(sf - lim.min_safety_factor, formats.decimals("safety_factor")),
+                tone="good" if sf >= lim.min_safety_factor else "bad",
+            ),
+            Headline(
+                "Gas cost [USD]", _fmt(s.gas_cost_USD, "gas_cost"), "Hull volume × gas price."
+            ),
+        ]
+    show.headlines(items)
 
     # below the headline numbers: the verdict and the key numbers stay above the fold at 1024 px
     st.caption(text.plain(class_caption(rep.inputs["requirement"]["payload_mass"],

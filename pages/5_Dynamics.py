@@ -5,8 +5,9 @@ from __future__ import annotations
 import streamlit as st
 
 from app_ui import dynamics_view as view
-from app_ui import formats, tables, widgets
+from app_ui import formats, show, tables, widgets
 from app_ui import sixdof_view as six
+from app_ui.headline import Headline
 
 st.title("Dynamics")
 st.caption(
@@ -147,11 +148,12 @@ def sixdof_section() -> None:
     (st.success if out6["ok"] else st.warning)(f"Run: {out6['status']}")
     m = out6["metrics"]
     above = m["lateral_unstable_above_m_s"]
-    c = st.columns(4)
-    c[0].metric("Roll peak [deg]", f"{m['roll_peak_deg']:.2f}")
-    c[1].metric("Yaw peak [deg]", f"{m['yaw_peak_deg']:.2f}")
-    c[2].metric("Lateral peak [m]", f"{m['lateral_peak_m']:.2f}")
-    c[3].metric("Laterally unstable above [m/s]", "stable" if above is None else f"{above:.1f}")
+    show.headlines([
+        Headline("Roll peak [deg]", f"{m['roll_peak_deg']:.2f}"),
+        Headline("Yaw peak [deg]", f"{m['yaw_peak_deg']:.2f}"),
+        Headline("Lateral peak [m]", f"{m['lateral_peak_m']:.2f}"),
+        Headline("Laterally unstable above [m/s]", "stable" if above is None else f"{above:.1f}"),
+    ])
     k = st.select_slider("Time of the 3-D view [s]", options=list(range(len(out6["frames"]))),
                          value=len(out6["frames"]) - 1,
                          format_func=lambda j: f"{out6['frames'][j]:.1f}", key="dyn6_slider")
@@ -222,18 +224,21 @@ if out.get("turbulence"):
     st.caption(formats.text_in_system(view.turbulence_caption(out["turbulence"])))
 
 sig = out["signals"]
-k = widgets.metric_row(5)  # metrics as wide as their labels: five columns cut them at 1024 px
 # in the chosen unit system (ft, kt, lbf in US customary)
-k[0].metric(formats.label("Peak blow-by x_C", "distance"), formats.shown(max(sig["x_C"]), "distance"))
-k[1].metric(formats.label("Lowest altitude z_C", "distance"),
-            formats.shown(min(sig["z_C"]), "distance"))
-if out["is_hull"]:
-    k[2].metric("Pitch range θ [deg]",
-                f"{view.one_decimal(min(sig['theta']))} … {view.one_decimal(max(sig['theta']))}")
 rms = {r["signal"]: r for r in out["stats"]}
-k[3].metric(formats.label("RMS fluctuation of v_x", "speed"),
-            f"{formats.convert(rms[view.SIGNALS['vx'][0]]['rms_fluctuation'], 'speed'):.2f}")
-k[4].metric(formats.label("Peak tension at C", "force"), formats.shown(max(sig["tension_C"]), "force"))
+show.headlines([
+    Headline(formats.label("Peak blow-by x_C", "distance"),
+             formats.shown(max(sig["x_C"]), "distance")),
+    Headline(formats.label("Lowest altitude z_C", "distance"),
+             formats.shown(min(sig["z_C"]), "distance")),
+    *([Headline("Pitch range θ [deg]",
+                f"{view.one_decimal(min(sig['theta']))} … {view.one_decimal(max(sig['theta']))}")]
+      if out["is_hull"] else []),
+    Headline(formats.label("RMS fluctuation of v_x", "speed"),
+             f"{formats.convert(rms[view.SIGNALS['vx'][0]]['rms_fluctuation'], 'speed'):.2f}"),
+    Headline(formats.label("Peak tension at C", "force"),
+             formats.shown(max(sig["tension_C"]), "force")),
+])
 
 r1 = st.columns(2)
 r1[0].plotly_chart(view.tether_figure(out, title="Tether profile at t = 0 and at the end"),

@@ -11,6 +11,7 @@ import streamlit as st
 from aerostat_core.base.validation import short
 from aerostat_core.model.io import rows_to_csv
 from app_ui import formats, show, text
+from app_ui.headline import Headline
 
 st.title("Method")
 st.caption(
@@ -329,11 +330,12 @@ with tab_val:
         )
         n_ok = int(df["Within tolerance"].sum())
         kinds = df["Kind"].value_counts().to_dict()
-        c = show.metric_row(5)
-        c[0].metric("Checks within tolerance", f"{n_ok} / {len(df)}")
-        c[1].metric("Calibrated", kinds.get("calibrated", 0))
-        c[2].metric("Predicted", kinds.get("predicted", 0))
-        c[3].metric("Independent checks", kinds.get("check", 0))
+        show.headlines([
+            Headline("Checks within tolerance", f"{n_ok} / {len(df)}"),
+            Headline("Calibrated", str(kinds.get("calibrated", 0))),
+            Headline("Predicted", str(kinds.get("predicted", 0))),
+            Headline("Independent checks", str(kinds.get("check", 0))),
+        ])
         st.dataframe(
             df,
             hide_index=True,
@@ -377,20 +379,21 @@ with tab_val:
     except Exception as exc:  # noqa: BLE001 - never show a traceback
         st.error(text.plain(short(f"The fielded-aerostat harness could not be run: {exc}")))
     else:
-        c = show.metric_row(5)
-        c[0].metric("Median |length error|, all [%]", f"{100 * stats['all_median']:.1f}",
-                    help="Target: at most 6 %.")
-        c[1].metric("Worst |length error|, all [%]", f"{100 * stats['all_worst']:.1f}",
-                    help="Target: none worse than 15 %.")
-        c[2].metric("Median |length error|, held out [%]",
-                    f"{100 * stats['held_out_median']:.1f}",
-                    help="The systems the fit did not see.")
-        c[3].metric("Median |volume error| [%]", f"{100 * stats['volume_median']:.1f}",
-                    help="Where a volume is published. Target: at most 12 %.")
-        c[4].metric("Worst |length error|, consistent figures [%]",
-                    f"{100 * stats['consistent_worst']:.1f}",
-                    help="Without the systems whose published figures fail the model-free "
-                    "payload-fraction check (Inconsistency column). Not the target's set.")
+        show.headlines([
+            Headline("Median |length error|, all [%]", f"{100 * stats['all_median']:.1f}",
+                     help="Target: at most 6 %."),
+            Headline("Worst |length error|, all [%]", f"{100 * stats['all_worst']:.1f}",
+                     help="Target: none worse than 15 %."),
+            Headline("Median |length error|, held out [%]",
+                     f"{100 * stats['held_out_median']:.1f}",
+                     help="The systems the fit did not see."),
+            Headline("Median |volume error| [%]", f"{100 * stats['volume_median']:.1f}",
+                     help="Where a volume is published. Target: at most 12 %."),
+            Headline("Worst |length error|, consistent figures [%]",
+                     f"{100 * stats['consistent_worst']:.1f}",
+                     help="Without the systems whose published figures fail the model-free "
+                     "payload-fraction check (Inconsistency column). Not the target's set."),
+        ])
         fielded, names = formats.frame_in_system(pd.DataFrame([{
                 "System": r["system"], "Class": r["class"], "Role": r["role"],
                 "Payload [kg]": r["payload_kg"],

@@ -5,7 +5,8 @@ from __future__ import annotations
 import base64
 import json
 import re
-from typing import Any
+from html.parser import HTMLParser
+from typing import Any, NamedTuple
 
 import numpy as np
 import pandas as pd
@@ -140,11 +141,60 @@ def table(at: AppTest, first_column: str) -> pd.DataFrame:
     raise KeyError(f"no table starting with {first_column!r}; tables start with {cols}")
 
 
+class Shown(NamedTuple):
+    """One headline number as the reader sees it (app_ui/headline.py)."""
+
+    label: str
+    value: str
+    help: str
+    delta: str
+    tone: str
+
+
+class _HeadlineParser(HTMLParser):
+    def __init__(self) -> None:
+        super().__init__()
+        self.items: list[dict[str, str]] = []
+        self._field: str | None = None
+
+    def handle_starttag(self, tag: str, attrs: list) -> None:
+        a = dict(attrs)
+        tid = a.get("data-testid", "")
+        if tid == "headline":
+            self.items.append({"help": a.get("title") or "", "label": "", "value": "",
+                               "delta": "", "tone": ""})
+        elif tid.startswith("headline-") and tid != "headline-note" and self.items:
+            self._field = tid.removeprefix("headline-")
+            if self._field == "delta":
+                self.items[-1]["tone"] = a.get("data-tone", "")
+
+    def handle_endtag(self, tag: str) -> None:
+        self._field = None
+
+    def handle_data(self, data: str) -> None:
+        if self._field and self.items:
+            self.items[-1][self._field] += data
+
+
+def metrics(at: AppTest) -> list[Shown]:
+    """Every headline number of the page, in order (the ``st.html`` blocks of
+    :func:`app_ui.show.headlines`), as text unescaped."""
+    out: list[Shown] = []
+    for el in at.get("html"):
+        body = str(el.proto.body)
+        if 'data-testid="headline"' in body:
+            p = _HeadlineParser()
+            p.feed(body)
+            out += [Shown(**d) for d in p.items]
+    return out
+
+
 def metric(at: AppTest, label: str) -> str:
-    for m in at.metric:
+    shown = metrics(at)
+    for m in shown:
         if m.label == label:
             return m.value
-    raise KeyError(f"no metric {label!r}; metrics: {[m.label for m in at.metric]}")
+    raise KeyError(f"no metric {label!r}; metrics: {[m.label for m in shown]}")
 
 
 def metric_float(at: AppTest, label: str) -> float:

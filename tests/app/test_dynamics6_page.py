@@ -9,6 +9,8 @@ import json
 import pytest
 from streamlit.testing.v1 import AppTest
 
+from tests.app.helpers import metrics
+
 from aerostat_core.base.fields import specs
 from aerostat_core.dynamics.scenarios6 import Request6
 from app_ui import sixdof_view as six
@@ -56,7 +58,7 @@ def test_crosswind_gust_run_shows_lateral_results_and_exports(dyn):
     dyn.button(key="dyn6_run").click()
     dyn.run()
     assert not dyn.exception, [e.value for e in dyn.exception]
-    labels = {m.label: m.value for m in dyn.metric}
+    labels = {m.label: m.value for m in metrics(dyn)}
     assert float(labels["Roll peak [deg]"]) > 0.1
     assert float(labels["Lateral peak [m]"]) > 1.0
     assert labels["Laterally unstable above [m/s]"] == "stable"

@@ -16,7 +16,7 @@ from aerostat_core import Configuration, HullSpec, Requirement, design
 from aerostat_core.model.io import inputs_from_dict, inputs_to_dict
 from app_ui import dynamics_view as view
 from tests.app.conftest import APP_PATH
-from tests.app.helpers import chart, messages, trace, values
+from tests.app.helpers import chart, messages, metrics, trace, values
 
 DYN_PAGE = "pages/5_Dynamics.py"
 
@@ -104,13 +104,13 @@ def test_default_gust_run_plots_real_data(dyn):
     tw = values(trace(ten, view.SIGNALS["tension_winch"][0]), "y")
     assert tw[0] == pytest.approx(row["tension_winch_N"], rel=1e-3)
     # settling metrics after the gust
-    metrics = _df(at, "Settling 5 % [s]")
-    xc = metrics[metrics["Signal"] == view.SIGNALS["x_C"][0]].iloc[0]
+    settling = _df(at, "Settling 5 % [s]")
+    xc = settling[settling["Signal"] == view.SIGNALS["x_C"][0]].iloc[0]
     assert 0 < float(xc["Settling 5 % [s]"]) < 130
     assert {"dyn_snapshot", "dyn_hull"} <= {getattr(c, "key", None) for c in at.get("plotly_chart")}
     assert any(
         m.label == "Peak blow-by x_C [m]" and float(m.value) == pytest.approx(x.max(), abs=0.05)
-        for m in at.metric
+        for m in metrics(at)
     )
 
 

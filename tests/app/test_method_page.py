@@ -7,7 +7,7 @@ import sys
 
 import pytest
 
-from tests.app.helpers import METHOD_PAGE, goto, messages, table
+from tests.app.helpers import METHOD_PAGE, goto, messages, metrics, table
 
 
 @pytest.fixture
@@ -68,7 +68,7 @@ def test_live_validation_table(method):
         assert row.Engine == pytest.approx(r["value"])
         assert row.Reference == pytest.approx(r["reference"])
     n_ok = sum(bool(r.get("passed", abs(r["error_pct"]) <= r["tolerance_pct"])) for r in ref)
-    shown = next(m.value for m in method.metric if m.label == "Checks within tolerance")
+    shown = next(m.value for m in metrics(method) if m.label == "Checks within tolerance")
     assert shown == f"{n_ok} / {len(ref)}"
     labels = [b.proto.label for b in method.get("download_button")]
     assert "Validation table (CSV)" in labels
@@ -94,7 +94,7 @@ def test_fielded_harness_is_shown_live():
     app.switch_page("pages/6_Method.py").run()
     assert not app.exception
     v = validate_fielded()
-    shown = {m.label: m.value for m in app.metric}
+    shown = {m.label: m.value for m in metrics(app)}
     st = v.statistics()
     assert shown["Median |length error|, all [%]"] == f"{100 * st['all_median']:.1f}"
     assert shown["Median |length error|, held out [%]"] == f"{100 * st['held_out_median']:.1f}"

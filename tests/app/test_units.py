@@ -20,6 +20,7 @@ from tests.app.helpers import (
     chart,
     goto,
     messages,
+    metrics,
     open_groups,
     perf_charts,
     show_tab,
@@ -148,7 +149,7 @@ def test_design_form_takes_us_units_and_the_switch_never_changes_the_design():
     assert req["payload_mass"] == pytest.approx(22 * LB, rel=1e-11)
     assert req["design_wind"] == pytest.approx(30 * KT, rel=1e-11)
     assert _box(at, "in_altitude").value == "1000"
-    assert [m.label for m in at.metric][:2] == ["Volume [ft³]", "Length [ft]"]
+    assert [m.label for m in metrics(at)][:2] == ["Volume [ft³]", "Length [ft]"]
 
 
 def test_an_edit_not_applied_is_converted_by_a_switch():

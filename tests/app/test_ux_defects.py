@@ -20,6 +20,7 @@ from aerostat_core.output.html_report import requirement_rows
 from aerostat_core.output.report import comparison_rows, design_report
 from aerostat_core.studies.envelope import operating_envelope
 from app_ui import formats, optimize_view, plots_optimize, shapes_view, tables, theme
+from tests.app.helpers import metrics
 
 RAW = re.compile(r"^(nan|NaN|None|True|False|inf|-inf)$|^-0[.,]0*$|^-$")
 
@@ -273,6 +274,6 @@ def test_the_unit_choice_survives_reruns():
     at = AppTest.from_file(str(app), default_timeout=180).run()
     switch = next(w for w in at.radio if w.key == "unit_system")
     switch.set_value("US").run()
-    assert [m.label for m in at.metric][:2] == ["Volume [ft³]", "Length [ft]"]
+    assert [m.label for m in metrics(at)][:2] == ["Volume [ft³]", "Length [ft]"]
     at.run()  # a later run (a tab switch, another input) keeps the choice
-    assert [m.label for m in at.metric][:2] == ["Volume [ft³]", "Length [ft]"]
+    assert [m.label for m in metrics(at)][:2] == ["Volume [ft³]", "Length [ft]"]

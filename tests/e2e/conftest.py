@@ -237,9 +237,9 @@ def thesis_page(app_page: Page) -> Page:
     app_page.get_by_role("button", name="Load thesis baseline").click()
     _wait(app_page)
     volume = (
-        app_page.get_by_test_id("stMetric")
-        .filter(has=app_page.get_by_test_id("stMetricLabel").get_by_text("Volume [m³]", exact=True))
-        .get_by_test_id("stMetricValue")
+        app_page.get_by_test_id("headline")
+        .filter(has=app_page.get_by_test_id("headline-label").get_by_text("Volume [m³]", exact=True))
+        .get_by_test_id("headline-value")
     )
     expect(volume).to_have_text("170.0")
     return app_page

@@ -27,11 +27,11 @@ SHOT_VIEWPORT = {"width": 1400, "height": 2300}
 
 
 def metric_value(page: Page, label: str):
-    """Locator of the value of the st.metric with exactly this label."""
-    box = page.get_by_test_id("stMetric").filter(
-        has=page.get_by_test_id("stMetricLabel").get_by_text(label, exact=True)
+    """Locator of the value of the headline number with exactly this label."""
+    box = page.get_by_test_id("headline").filter(
+        has=page.get_by_test_id("headline-label").get_by_text(label, exact=True)
     )
-    return box.get_by_test_id("stMetricValue")
+    return box.get_by_test_id("headline-value")
 
 
 def number(text: str) -> float:
@@ -176,7 +176,7 @@ def test_screenshots_of_each_page(thesis_page: Page, console_errors: list[str]):
     goto_page(page, "Method")
     assert_no_exception(page, "Method page")
     page.get_by_role("tab", name="Validation (live)").click()
-    expect(page.get_by_test_id("stMetric").first).to_be_visible()
+    expect(page.get_by_test_id("headline").first).to_be_visible()
     screenshot(page, "method")
     page.get_by_role("tab", name="Equations and assumptions").click()
     wait_for_rerun(page)

@@ -12,9 +12,10 @@ pytestmark = pytest.mark.e2e
 
 VIEWPORTS = [(1024, 768), (1400, 900)]
 
-#: Every element inside a metric whose text is wider than its box (what an ellipsis hides).
+#: Every headline block, number and element inside one whose text is wider than its box (what
+#: an ellipsis or the column's edge hides).
 _CUT = """
-() => [...document.querySelectorAll('[data-testid="stMetric"]')].flatMap(m =>
+() => [...document.querySelectorAll('.aerostat-hl')].flatMap(m =>
     [m, ...m.querySelectorAll('*')]
         .filter(e => e.scrollWidth > e.clientWidth + 1 && e.clientWidth > 0)
         .map(e => `${e.getAttribute('data-testid') || e.tagName}: "${e.textContent.trim()}" `
@@ -32,7 +33,7 @@ def test_no_metric_is_truncated_and_submit_is_in_sight(
         page.goto("/")
         wait_for_rerun(page)
         assert_no_exception(page, "Design page")
-        values = page.get_by_test_id("stMetricValue")
+        values = page.get_by_test_id("headline-value")
         expect(values.first).to_be_visible()
         assert values.count() == 10
         assert page.evaluate(_CUT) == []
@@ -43,14 +44,14 @@ def test_no_metric_is_truncated_and_submit_is_in_sight(
         page.get_by_role("textbox", name="Hull volume [m³] (when given)", exact=True).fill("900")
         page.get_by_role("button", name="Update design").first.click()
         wait_for_rerun(page)
-        expect(page.get_by_test_id("stMetric").filter(has_text="Gas cost")).to_contain_text(
+        expect(page.get_by_test_id("headline").filter(has_text="Gas cost")).to_contain_text(
             "34,650"
         )
         assert page.evaluate(_CUT) == []
         screenshot(page, f"design_{width}x{height}", full_page=False)
         goto_page(page, "Method")
         page.get_by_role("tab", name="Validation").click()
-        expect(page.get_by_test_id("stMetricValue").first).to_be_visible(timeout=60_000)
+        expect(page.get_by_test_id("headline-value").first).to_be_visible(timeout=60_000)
         assert page.evaluate(_CUT) == []
     finally:
         ctx.close()

@@ -274,7 +274,7 @@ def test_a_hung_database_gives_a_message_and_the_app_works(browser: Browser, sil
             timeout=10_000
         )
         wait_for_rerun(page, timeout=FIRST_RUN_MS)
-        expect(page.get_by_test_id("stMetric").first).to_be_visible()  # the design, computed
+        expect(page.get_by_test_id("headline").first).to_be_visible()  # the design, computed
         _save(page, "Kept in the session")
         expect(page.get_by_text("in this session only", exact=False).first).to_be_visible()
         with page.expect_download() as info:

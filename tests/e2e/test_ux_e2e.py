@@ -35,8 +35,8 @@ RAW = re.compile(r"\b(nan|NaN|None|True|False|inf)\b|(?<![\w.])-0[.,]0+(?![\d])"
 #: is wider (or taller) than the box that shows it.
 _CUT = """
 () => {
-  const sel = ['[data-testid="stWidgetLabel"] p', '[data-testid="stMetricLabel"] *',
-               '[data-testid="stMetricValue"] *', '[data-testid="stMetricValue"]',
+  const sel = ['[data-testid="stWidgetLabel"] p', '.aerostat-hl',
+               '[data-testid="headline-label"]', '[data-testid="headline-value"]',
                '[role="tab"] p', '[data-testid="stTable"] th', '[data-testid="stTable"] td',
                '[data-testid="stMarkdownContainer"] th', '[data-testid="stMarkdownContainer"] td',
                '[data-testid="stHtml"] th', '[data-testid="stHtml"] td'];
@@ -161,7 +161,7 @@ def test_design_verdict_and_key_numbers_above_the_fold(
         expect(verdict.first).to_be_visible()
         box = verdict.first.bounding_box()
         assert box is not None and box["y"] + box["height"] <= height, box
-        values = page.get_by_test_id("stMetricValue")
+        values = page.get_by_test_id("headline-value")
         assert values.count() >= 10
         in_sight = [
             b
@@ -186,7 +186,7 @@ def test_unit_switch_shows_the_design_in_us_customary_units(browser: Browser, ba
 
 
 def _switch_units(page: Page) -> None:
-    metric = page.get_by_test_id("stMetric")
+    metric = page.get_by_test_id("headline")
     expect(metric.filter(has_text="Volume [m³]").first).to_be_visible(timeout=PAGE_TIMEOUT_MS)
     # st.radio's input is hidden behind its label: a user clicks the label
     us_button = page.get_by_test_id("stSidebar").get_by_text("US customary", exact=True)

@@ -1,0 +1,81 @@
+"""Headline numbers as one block of escaped HTML (no Streamlit import): a page's key results,
+each a label with its unit, a value, an optional delta and its help on hover.
+
+Why not ``st.metric``: each metric is an element of its own, and a fresh browser's first result
+waits for React to render the page's element tree several times while the messages arrive
+(about 200 ms a render, more with more elements). The Design page's ten metrics and their two
+row containers were 13 of its 52 elements; as one block the first result showed about 250 ms
+sooner (interleaved browser probe, 2026-12-03, ``benchmarks/bench_app.py``). The block keeps
+what a metric shows: the label and unit, the value at its decimals, the delta with its colour,
+and the help (the item's ``title``, a native tooltip).
+
+The block wraps: at 1024 px a number moves to the next line whole, never cut to "1…". Its style
+(sizes, wrapping, the help's dotted underline) is the page style sheet's,
+:data:`app_ui.theme.PAGE_CSS`, sent once per page rather than with every block.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from html import escape
+from typing import Literal, Sequence, Union
+
+from .theme import LIMIT_COLOUR, NEUTRAL, THIRD
+
+Tone = Literal["good", "bad", "neutral"]
+#: Colour of a delta by what it says about the design (the theme's, defined once there).
+TONE_COLOUR: dict[str, str] = {"good": THIRD, "bad": LIMIT_COLOUR, "neutral": NEUTRAL}
+
+
+@dataclass(frozen=True)
+class Headline:
+    """One headline number: ``label`` with its unit ("Volume [m³]"), ``value`` as shown (already
+    formatted), ``help`` on hover, ``delta`` a short text under the value ("+3.1", "sized")
+    coloured by ``tone``."""
+
+    label: str
+    value: str
+    help: str = ""
+    delta: str = ""
+    tone: Tone = "neutral"
+
+
+@dataclass(frozen=True)
+class Note:
+    """A caption on a line of its own inside the block ("At the design wind, 10.0 m/s:"); the
+    numbers after it start a new line."""
+
+    text: str
+
+
+Item = Union[Headline, Note]
+
+def _item_html(it: Item) -> str:
+    if isinstance(it, Note):
+        return f'<p class="hl-note" data-testid="headline-note">{escape(it.text)}</p>'
+    title = f' title="{escape(it.help)}"' if it.help else ""
+    delta = ""
+    if it.delta:
+        colour = TONE_COLOUR[it.tone]
+        delta = (
+            f'<div><span class="hl-delta" data-testid="headline-delta" data-tone="{it.tone}" '
+            f'style="color:{colour};background:{colour}1a">{escape(it.delta)}</span></div>'
+        )
+    return (
+        f'<div data-testid="headline"{title}>'
+        f'<div class="hl-label" data-testid="headline-label">{escape(it.label)}</div>'
+        f'<div class="hl-value" data-testid="headline-value">{escape(it.value)}</div>'
+        f"{delta}</div>"
+    )
+
+
+def headline_html(items: Sequence[Item]) -> str:
+    """The headline numbers (and their notes) as one wrapping block, every text HTML-escaped.
+
+    >>> html = headline_html([Headline("Volume [m³]", "170.0", "Hull volume.", "sized")])
+    >>> 'data-testid="headline-value">170.0<' in html and 'title="Hull volume."' in html
+    True
+    >>> "<b>" in headline_html([Headline("<b>", "1")])
+    False
+    """
+    return '<div class="aerostat-hl">' + "".join(map(_item_html, items)) + "</div>"
