@@ -123,3 +123,21 @@ def test_show_error_details_is_off():
 
     config = tomllib.loads((app.parent / ".streamlit" / "config.toml").read_text())
     assert config["client"]["showErrorDetails"] == "none"
+
+
+def test_the_server_skips_the_full_collection_after_each_run(monkeypatch):
+    """Streamlit reads ``runner.postScriptGC = false`` from the app's config (a misspelt key
+    would be ignored): its gc.collect(2) after every run held the GIL for 60-470 ms on this
+    app's heap, and the server answered nothing meanwhile (.streamlit/config.toml)."""
+    from streamlit import config
+
+    from tests.app.conftest import APP_PATH as app
+
+    assert config._config_options_template["runner.postScriptGC"].default_val is True
+    monkeypatch.chdir(app.parent)
+    try:
+        config.get_config_options(force_reparse=True)
+        assert config.get_option("runner.postScriptGC") is False
+    finally:
+        monkeypatch.undo()
+        config.get_config_options(force_reparse=True)
