@@ -70,6 +70,8 @@ def _fmt(v: float, quantity: str) -> str:
 
 TABS = ("Geometry", "3-D view", "Mass", "Performance", "Tether profiles", "Mission", "Envelope")
 TAB_KEY = "design_tab"
+#: Session-state key of the Geometry tab's interactive side view (open: True).
+SIDE_VIEW_KEY = "side_view_interactive"
 #: Session-state key of the Geometry tab's export section (open: True).
 EXPORTS_KEY = "design_exports"
 #: Session-state key of the constraint table's section (open: True).
@@ -89,8 +91,18 @@ def _geometry_tab(rep: DesignReport) -> None:
         "Side view to scale, level hull, nose on the left: CB centre of buoyancy (green), "
         "CG centre of gravity (black), C confluence point (red), confluence lines schematic."
     )
-    if st.toggle("Interactive side view (zoom, hover)", key="side_view_interactive"):
-        st.plotly_chart(plots.side_view_figure(rep), key="side_view")
+    # A section drawn once opened, not a toggle: the toggle's code was the last a fresh browser
+    # loaded before the first result showed (no element shows before every element's code is
+    # loaded); about 100 ms of the first result (interleaved probe, 2026-12-03).
+    interactive = st.expander(
+        "Interactive side view (zoom, hover)",
+        key=SIDE_VIEW_KEY,
+        on_change="rerun",
+        icon=":material/zoom_in:",
+    )
+    if interactive.open:
+        with interactive:
+            st.plotly_chart(plots.side_view_figure(rep), key="side_view")
     g1, g2 = st.container(), st.container()
     with g1:
         # Escaped HTML, not st.table: a static table here made a fresh browser load ~1 MB of

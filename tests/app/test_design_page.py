@@ -311,8 +311,10 @@ def test_side_view_marks_buoyancy_gravity_and_confluence(at):
     assert side["points"]["c"] == pytest.approx((float(af.xi_c), float(af.z_c)))
     assert side["hull_length"] == pytest.approx(float(af.hull.length), rel=1e-3)
     assert side["parts"].count("confluence line") >= 2 and "fin" in side["parts"]
-    # the interactive side view, a toggle away: the same points
-    at.toggle(key="side_view_interactive").set_value(True).run()
+    # the interactive side view, in a section drawn once opened: the same points
+    assert "side_view" not in chart_keys(at)
+    at.session_state["side_view_interactive"] = True
+    at.run()
     fig = chart(at, "side_view")
     cb = trace(fig, "centre of buoyancy (CB)")
     cg = trace(fig, "centre of gravity (CG)")
