@@ -97,6 +97,18 @@ def _px(x: float) -> str:
     return "0.0" if s == "-0.0" else s
 
 
+def nice_step(span: float, target: int = 5) -> float:
+    """A round tick step (1, 2 or 5 x 10^k) giving about ``target`` intervals over ``span``
+    (the static drawings' one rule: these charts and the side view's station axis).
+
+    >>> nice_step(76.4), nice_step(0.5), nice_step(31.0, 8)
+    (20.0, 0.1, 5.0)
+    """
+    raw = span / max(target, 1)
+    k = 10.0 ** math.floor(math.log10(raw))
+    return next(m * k for m in (1.0, 2.0, 5.0, 10.0) if m * k >= raw * (1 - 1e-9))
+
+
 def nice_ticks(lo: float, hi: float, target: int = 5) -> np.ndarray:
     """Round ticks (a step of 1, 2 or 5 x 10^k) from at or below ``lo`` to at or above ``hi``,
     about ``target`` intervals; a range of zero width is widened to show its value.
@@ -114,9 +126,7 @@ def nice_ticks(lo: float, hi: float, target: int = 5) -> np.ndarray:
     if hi - lo <= 1e-12 * max(abs(lo), abs(hi), 1.0):
         pad = abs(lo) * 0.2 if abs(lo) >= 1e-9 else 1.0
         lo, hi = lo - pad, hi + pad
-    raw = (hi - lo) / max(target, 1)
-    k = 10.0 ** math.floor(math.log10(raw))
-    step = next(m * k for m in (1.0, 2.0, 5.0, 10.0) if m * k >= raw * (1 - 1e-9))
+    step = nice_step(hi - lo, target)
     first = math.floor(lo / step + 1e-9)
     last = math.ceil(hi / step - 1e-9)
     digits = max(0, -math.floor(math.log10(step))) + 1

@@ -19,6 +19,7 @@ import numpy as np
 from aerostat_core.output.report import DesignReport, hull_outline
 
 from . import formats
+from .perf_view import nice_step
 from .theme import ACCENT, FONT, LIMIT_COLOUR, NEUTRAL, THIRD
 
 #: Marked points: field of rep.points, label, short name, colour.
@@ -29,13 +30,6 @@ POINTS = (
 )
 _W = 720.0  # drawing width [px of the viewBox]
 _PAD = 36.0
-
-
-def _nice_step(span: float, target: int = 8) -> float:
-    """A round tick step (1, 2 or 5 x 10^k) giving about ``target`` ticks over ``span``."""
-    raw = span / max(target, 1)
-    k = 10.0 ** math.floor(math.log10(raw))
-    return next(m * k for m in (1, 2, 5, 10) if m * k >= raw)
 
 
 def side_view_svg(rep: DesignReport) -> str:
@@ -96,7 +90,7 @@ def side_view_svg(rep: DesignReport) -> str:
     # station axis under the drawing: round ticks from the nose in the chosen unit (m or ft)
     du = formats.display("length")
     y_axis = height - 22
-    step = _nice_step((x1 - x0) * du.scale)
+    step = nice_step((x1 - x0) * du.scale, 8)
     out.append(
         f'<line x1="{px(x0):.1f}" y1="{y_axis:.1f}" x2="{px(x1):.1f}" y2="{y_axis:.1f}" '
         f'stroke="{NEUTRAL}"/>'
