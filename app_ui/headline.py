@@ -16,9 +16,10 @@ The block wraps: at 1024 px a number moves to the next line whole, never cut to 
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass
 from html import escape
-from typing import Literal, Sequence, Union
+from typing import Literal
 
 from .theme import LIMIT_COLOUR, NEUTRAL, THIRD
 
@@ -48,7 +49,8 @@ class Note:
     text: str
 
 
-Item = Union[Headline, Note]
+Item = Headline | Note
+
 
 def _item_html(it: Item) -> str:
     if isinstance(it, Note):

@@ -9,12 +9,11 @@ import json
 import pytest
 from streamlit.testing.v1 import AppTest
 
-from tests.app.helpers import metrics
-
 from aerostat_core.base.fields import specs
 from aerostat_core.dynamics.scenarios6 import Request6
 from app_ui import sixdof_view as six
 from tests.app.conftest import APP_PATH
+from tests.app.helpers import metrics
 
 DYN_PAGE = "pages/5_Dynamics.py"
 

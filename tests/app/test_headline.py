@@ -11,8 +11,8 @@ from hypothesis import strategies as st
 
 from aerostat_core import design
 from app_ui import state
-from app_ui.text import signed
 from app_ui.headline import TONE_COLOUR, Headline, Note, headline_html
+from app_ui.text import signed
 from tests.app.helpers import metric_float, metrics, submit
 
 _TEXT = st.text(st.characters(blacklist_categories=("Cs", "Cc")), max_size=40)
