@@ -7,7 +7,8 @@ waits for React to render the page's element tree several times while the messag
 row containers were 13 of its 52 elements; as one block the first result showed about 250 ms
 sooner (interleaved browser probe, 2026-12-03, ``benchmarks/bench_app.py``). The block keeps
 what a metric shows: the label and unit, the value at its decimals, the delta with its colour,
-and the help (the item's ``title``, a native tooltip).
+and the help (the item's ``title``, a native tooltip on hover, and shown under the number when
+the item has the focus, for a keyboard or a touch screen).
 
 The block wraps: at 1024 px a number moves to the next line whole, never cut to "1…". Its style
 (sizes, wrapping, the help's dotted underline) is the page style sheet's,
@@ -16,10 +17,13 @@ The block wraps: at 1024 px a number moves to the next line whole, never cut to 
 
 from __future__ import annotations
 
+import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 from html import escape
 from typing import Literal
+
+from aerostat_core.model.constraints import TOLERANCE
 
 from .theme import LIMIT_COLOUR, NEUTRAL, THIRD
 
@@ -52,10 +56,29 @@ class Note:
 Item = Headline | Note
 
 
+def limit_tone(value: float, limit: float, kind: Literal["max", "min"]) -> Tone:
+    """The tone of a value beside its limit, by the constraint table's rule: an upper limit is
+    met when value / limit - 1 <= TOLERANCE, a lower one when 1 - value / limit <= TOLERANCE
+    (``aerostat_core.model.constraints``), so a sized hull at its limit reads "good" exactly
+    when the verdict calls it met; "neutral" when either number is not finite.
+
+    >>> limit_tone(150.0, 150.0, "max"), limit_tone(150.1, 150.0, "max")
+    ('good', 'bad')
+    >>> limit_tone(2.9999999, 3.0, "min"), limit_tone(float("nan"), 3.0, "min")
+    ('good', 'neutral')
+    """
+    if not (math.isfinite(value) and math.isfinite(limit)) or limit == 0:
+        return "neutral"
+    g = value / limit - 1.0 if kind == "max" else 1.0 - value / limit
+    return "good" if g <= TOLERANCE else "bad"
+
+
 def _item_html(it: Item) -> str:
     if isinstance(it, Note):
         return f'<p class="hl-note" data-testid="headline-note">{escape(it.text)}</p>'
-    title = f' title="{escape(it.help)}"' if it.help else ""
+    # the help on hover (title) and, for a keyboard or a touch screen, on focus (the page
+    # style sheet shows data-help under the number)
+    title = f' title="{escape(it.help)}" data-help="{escape(it.help)}" tabindex="0"' if it.help else ""
     delta = ""
     if it.delta:
         colour = TONE_COLOUR[it.tone]

@@ -3,7 +3,7 @@
 Why not plotly: the first tab is what a fresh browser shows first, and the 4.7 MB plotly.js
 bundle that a chart pulls in held the first result back by about 3 s on 2 busy cores
 (benchmarks/bench_app.py, first result in a fresh browser). The drawing needs no interaction;
-the interactive plotly side view is a toggle away. Pure: data in, SVG text out (no Streamlit).
+the interactive plotly side view is in a section below it, drawn once opened. Pure: data in, SVG text out (no Streamlit).
 
 Shown with ``st.image`` (an ``<img>`` of a data URL: ``st.html`` strips SVG). Every marked point
 carries its coordinates (``data-xi``, ``data-z`` in metres), so a test reads back what is drawn.

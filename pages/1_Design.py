@@ -3,6 +3,8 @@ performance versus wind, tether profiles; save as a case; JSON/CSV export and im
 
 from __future__ import annotations
 
+import math
+
 import pandas as pd
 import streamlit as st
 
@@ -34,7 +36,7 @@ from app_ui import (
     workspace_ui,
 )
 from app_ui.errors import report_unexpected
-from app_ui.headline import Headline, Note
+from app_ui.headline import Headline, Note, limit_tone
 from app_ui.tables import (
     constraint_styler,
     geometry_frame,
@@ -85,7 +87,7 @@ DESIGN_FILE_KEY = "design_file"
 def _geometry_tab(rep: DesignReport) -> None:
     # Static drawing and table on the first tab: a plotly chart or a data grid here pulled
     # 5 MB of JavaScript into a fresh browser before the first result (the interactive side
-    # view is a toggle away).
+    # view is in a section below, drawn once opened).
     st.image(side_view.side_view_svg(rep), width="stretch")  # an SVG, sent as a data URL
     st.caption(
         "Side view to scale, level hull, nose on the left: CB centre of buoyancy (green), "
@@ -308,7 +310,7 @@ def _results_body() -> None:
         Headline(
             formats.label("Free lift", "free_lift"),
             _fmt(s.free_lift_kg, "free_lift"),
-            "Gross buoyancy minus total weight, in kilograms "
+            "Gross buoyancy minus total weight, as a mass "
             f"({s.percent_static_lift:.0f} % of the gross buoyancy).",
         ),
     ]
@@ -325,8 +327,10 @@ def _results_body() -> None:
                 f"{formats.shown(lim.blow_by_limit, 'blow_by', with_unit=True)} (the delta is "
                 "blow-by minus limit).",
                 delta=text.signed(formats.convert(bb - lim.blow_by_limit, "blow_by"), 1)
-                + f" {formats.unit_of('blow_by')}",
-                tone="good" if bb <= lim.blow_by_limit else "bad",
+                + f" {formats.unit_of('blow_by')}"
+                if math.isfinite(bb)
+                else "",
+                tone=limit_tone(bb, lim.blow_by_limit, "max"),
             ),
             Headline(
                 "α_eq [deg]",
@@ -343,8 +347,10 @@ def _results_body() -> None:
                 _fmt(sf, "safety_factor"),
                 "Breaking strength of the tether / largest tension along the tether; required "
                 f"{lim.min_safety_factor:g} (the delta is the margin).",
-                delta=text.signed(sf - lim.min_safety_factor, formats.decimals("safety_factor")),
-                tone="good" if sf >= lim.min_safety_factor else "bad",
+                delta=text.signed(sf - lim.min_safety_factor, formats.decimals("safety_factor"))
+                if math.isfinite(sf)
+                else "",
+                tone=limit_tone(sf, lim.min_safety_factor, "min"),
             ),
             Headline(
                 "Gas cost [USD]", _fmt(s.gas_cost_USD, "gas_cost"), "Hull volume × gas price."
