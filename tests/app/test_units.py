@@ -150,6 +150,11 @@ def test_design_form_takes_us_units_and_the_switch_never_changes_the_design():
     assert req["design_wind"] == pytest.approx(30 * KT, rel=1e-11)
     assert _box(at, "in_altitude").value == "1000"
     assert [m.label for m in metrics(at)][:2] == ["Volume [ft³]", "Length [ft]"]
+    # the design-wind line inside the headline block, in knots, before the wind numbers
+    body = next(str(e.proto.body) for e in at.get("html") if "headline-note" in str(e.proto.body))
+    note = body.index('data-testid="headline-note">At the design wind, 30.0 kt:</p>')
+    assert note < body.index(">Blow-by [ft]<")
+    assert body.index(">Free lift [lb]<") < note
 
 
 def test_an_edit_not_applied_is_converted_by_a_switch():
