@@ -70,6 +70,11 @@ def _fmt(v: float, quantity: str) -> str:
     return formats.shown(v, quantity)
 
 
+def _headline(name: str, quantity: str, value: float, help: str, **delta) -> Headline:
+    """A headline number whose label's unit and whose decimals are its quantity's."""
+    return Headline(formats.label(name, quantity), _fmt(value, quantity), help, **delta)
+
+
 TABS = ("Geometry", "3-D view", "Mass", "Performance", "Tether profiles", "Mission", "Envelope")
 TAB_KEY = "design_tab"
 #: Session-state key of the Geometry tab's interactive side view (open: True).
@@ -287,29 +292,28 @@ def _results_body() -> None:
     # The ten headline numbers as one element (app_ui/headline.py: ten st.metric were a
     # quarter of the page's elements, and the first result waited for them).
     items: list[Headline | Note] = [
-        Headline(
-            formats.label("Volume", "volume"),
-            _fmt(s.volume_m3, "volume"),
+        _headline(
+            "Volume",
+            "volume",
+            s.volume_m3,
             "Hull volume. Sized: the smallest hull meeting the blow-by limit with positive "
             "free lift."
             if rep.sized
             else "Hull volume, given in the inputs.",
             delta="sized" if rep.sized else "given",
         ),
-        Headline(formats.label("Length", "length"), _fmt(s.length_m, "length"), "Hull length l."),
-        Headline(
-            formats.label("Diameter", "diameter"),
-            _fmt(s.diameter_m, "diameter"),
-            "Maximum hull diameter d.",
-        ),
-        Headline(
-            formats.label("Total mass", "total_mass"),
-            _fmt(s.total_mass_kg, "total_mass"),
+        _headline("Length", "length", s.length_m, "Hull length l."),
+        _headline("Diameter", "diameter", s.diameter_m, "Maximum hull diameter d."),
+        _headline(
+            "Total mass",
+            "total_mass",
+            s.total_mass_kg,
             "Hull, fins, lifting gas, miscellaneous, payload and tether.",
         ),
-        Headline(
-            formats.label("Free lift", "free_lift"),
-            _fmt(s.free_lift_kg, "free_lift"),
+        _headline(
+            "Free lift",
+            "free_lift",
+            s.free_lift_kg,
             "Gross buoyancy minus total weight, as a mass "
             f"({s.percent_static_lift:.0f} % of the gross buoyancy).",
         ),
@@ -320,9 +324,10 @@ def _results_body() -> None:
         sf = s.safety_factor_at_design_wind
         items += [
             Note(f"At the design wind, {formats.shown(lim.design_wind, 'wind', with_unit=True)}:"),
-            Headline(
-                formats.label("Blow-by", "blow_by"),
-                _fmt(bb, "blow_by"),
+            _headline(
+                "Blow-by",
+                "blow_by",
+                bb,
                 f"Downwind offset of the confluence point from the winch; limit "
                 f"{formats.shown(lim.blow_by_limit, 'blow_by', with_unit=True)} (the delta is "
                 "blow-by minus limit).",
@@ -337,9 +342,8 @@ def _results_body() -> None:
                 _fmt(s.alpha_at_design_wind_deg, "alpha_eq"),
                 "Equilibrium angle of attack (moment balance about the confluence point).",
             ),
-            Headline(
-                formats.label("Tension", "tension"),
-                _fmt(s.tension_top_at_design_wind_N, "tension"),
+            _headline(
+                "Tension", "tension", s.tension_top_at_design_wind_N,
                 "Tether tension at the confluence point.",
             ),
             Headline(
