@@ -23,7 +23,7 @@ from dataclasses import dataclass
 from html import escape
 from typing import Literal
 
-from aerostat_core.model.constraints import TOLERANCE
+from aerostat_core.model.constraints import limit_met
 
 from .theme import LIMIT_COLOUR, NEUTRAL, THIRD
 
@@ -57,10 +57,9 @@ Item = Headline | Note
 
 
 def limit_tone(value: float, limit: float, kind: Literal["max", "min"]) -> Tone:
-    """The tone of a value beside its limit, by the constraint table's rule: an upper limit is
-    met when value / limit - 1 <= TOLERANCE, a lower one when 1 - value / limit <= TOLERANCE
-    (``aerostat_core.model.constraints``), so a sized hull at its limit reads "good" exactly
-    when the verdict calls it met; "neutral" when either number is not finite.
+    """The tone of a value beside its limit, by the constraint table's rule
+    (:func:`aerostat_core.model.constraints.limit_met`), so a sized hull at its limit reads
+    "good" exactly when the verdict calls it met; "neutral" when either number is not finite.
 
     >>> limit_tone(150.0, 150.0, "max"), limit_tone(150.1, 150.0, "max")
     ('good', 'bad')
@@ -69,8 +68,7 @@ def limit_tone(value: float, limit: float, kind: Literal["max", "min"]) -> Tone:
     """
     if not (math.isfinite(value) and math.isfinite(limit)) or limit == 0:
         return "neutral"
-    g = value / limit - 1.0 if kind == "max" else 1.0 - value / limit
-    return "good" if g <= TOLERANCE else "bad"
+    return "good" if limit_met(value, limit, kind) else "bad"
 
 
 def _item_html(it: Item) -> str:

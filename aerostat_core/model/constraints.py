@@ -237,6 +237,21 @@ def _lower(value, limit):
     return 1.0 - value / limit, value - limit
 
 
+def limit_met(value: float, limit: float, kind: str) -> bool:
+    """Whether ``value`` meets its ``limit`` by the constraint table's rule (module docstring):
+    an upper limit ("max") g = value/limit - 1, a lower one ("min") g = 1 - value/limit, met
+    when g <= :data:`TOLERANCE`. Dimensionless in any consistent unit; ``limit`` non-zero.
+    The headline numbers' deltas use it, so they read as the verdict does.
+
+    >>> limit_met(150.0, 150.0, "max"), limit_met(150.1, 150.0, "max")
+    (True, False)
+    >>> limit_met(2.9999999, 3.0, "min"), limit_met(2.9, 3.0, "min")
+    (True, False)
+    """
+    g = (_upper if kind == "max" else _lower)(value, limit)[0]
+    return bool(g <= TOLERANCE)
+
+
 def wind_quantities(req: Requirement, cfg: Configuration, ev: Evaluation,
                     structure: dict | None = None) -> dict:
     """Value, limit and g of every wind-dependent constraint for an evaluation at any speed(s).
