@@ -364,7 +364,7 @@ with tab_val:
         "its published requirement: payload and altitude, its endurance and wind rating where "
         "published, else its class' (thesis §2.3: 5/7/30 days; operating wind 20 m/s "
         "tactical, 26 m/s operational; 36 m/s strategic survival), and the vendor's l/d where "
-        "it publishes length and diameter; by the default *practice* rule set, fabrics and "
+        "its published length and diameter (or length and volume) fix it; by the default *practice* rule set, fabrics and "
         "tether chosen by load, against its published hull length and volume. The fineness "
         "ratio and the hull-systems mass law were fitted on the systems marked *fit* (declared "
         "before fitting); the others are predictions. Where a published figure is ambiguous, "

@@ -7,7 +7,8 @@ figure is ambiguous or two sources disagree, both readings and the one used
 its published requirement (:func:`fielded_case`): payload and altitude; its endurance, wind
 rating and payload power where published, else the figures of its class (thesis §2.3:
 endurance, the tactical 20 m/s and operational 26 m/s operating winds, the strategic 36 m/s
-survival wind); its hull fineness ratio where the vendor publishes length and diameter. It uses
+survival wind); its hull fineness ratio where the vendor publishes length and diameter, or
+length and volume. It uses
 the default "practice" rule set and configuration (materials chosen by load,
 aerostat_core.model.selection) and reports the predicted against the published hull length
 (and diameter or volume where published).
@@ -233,11 +234,31 @@ class FieldedSystem:
 
     @property
     def published_fineness_ratio(self) -> float | None:
-        """The vendor's hull fineness ratio l/d [-] where it publishes both length and diameter
-        (the hull shape is then part of the published requirement, docs/validation.md §7);
-        ``None`` otherwise (the practice fineness ratio is used)."""
+        r"""The vendor's hull fineness ratio l/d [-] where its published figures fix it (the
+        hull shape is then part of the published requirement, docs/validation.md §7):
+
+        * length and diameter: f = l / d;
+        * else length and volume, through the NPL hull's volume
+          V = (pi/6) d^2 l (:func:`~aerostat_core.geometry.hull.hull_dimensions`):
+
+          .. math:: f = \sqrt{\frac{\pi\, l^3}{6\, V}}
+
+        ``None`` where neither pair is published (the practice fineness ratio is used). Where
+        all three are published and disagree (TIF-1600), the diameter is used: a measured
+        dimension rather than a volume read from a model name.
+
+        Examples
+        --------
+        The 74K: 35 m and 74,000 ft3 (2,095 m3), f = sqrt(pi 35^3 / (6 x 2,095)) = 3.27:
+
+        >>> s = FieldedSystem("x", 500.0, 1500.0, length=35.0, volume=74000 * 0.3048**3)
+        >>> round(s.published_fineness_ratio, 2)
+        3.27
+        """
         if self.length and self.diameter:
             return float(self.length / self.diameter)
+        if self.length and self.volume:
+            return float(np.sqrt(np.pi * self.length**3 / (6.0 * self.volume)))
         return None
 
     @property
@@ -490,7 +511,7 @@ def fielded_case(system: FieldedSystem, rules: str = "practice", mission: bool =
     survival wind, ``mission=True``). The configuration: ``configuration`` (default: the rule
     set's, with a ballonet where the thesis' 500 m rule calls for one, MissionSpec ballonet
     "auto", ``mission=True``), with the vendor's published fineness ratio where it publishes
-    length and diameter (:attr:`FieldedSystem.published_fineness_ratio`)."""
+    length and diameter, or length and volume (:attr:`FieldedSystem.published_fineness_ratio`)."""
     req = Requirement(payload_mass=system.payload_mass, altitude=system.altitude,
                       design_wind=system.class_design_wind if mission else system.design_wind,
                       rules=rules,
