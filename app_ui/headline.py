@@ -74,9 +74,11 @@ def limit_tone(value: float, limit: float, kind: Literal["max", "min"]) -> Tone:
 def _item_html(it: Item) -> str:
     if isinstance(it, Note):
         return f'<p class="hl-note" data-testid="headline-note">{escape(it.text)}</p>'
-    # the help on hover (title) and, for a keyboard or a touch screen, on focus (the page
-    # style sheet shows data-help under the number)
-    title = f' title="{escape(it.help)}" data-help="{escape(it.help)}" tabindex="0"' if it.help else ""
+    # the help on hover (title) and, for a keyboard or a touch screen, on focus: the page style
+    # sheet shows data-help under the block, so it names the number it explains
+    note = f"{it.label}: {it.help}"
+    title = (f' title="{escape(it.help)}" data-help="{escape(note)}" tabindex="0"'
+             if it.help else "")
     delta = ""
     if it.delta:
         colour = TONE_COLOUR[it.tone]

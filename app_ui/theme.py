@@ -108,12 +108,15 @@ button [data-testid="stMarkdownContainer"],
 button [data-testid="stMarkdownContainer"] p {{ white-space: normal; text-align: left; }}
 [data-testid="stMainBlockContainer"] {{ padding: 1.5rem 1.5rem 4rem 1.5rem; }}
 [data-testid="stMain"] h1 {{ font-size: 1.75rem; padding: 0 0 0.5rem 0; }}
-.aerostat-hl {{ display: flex; flex-wrap: wrap; gap: 0.25rem 1.5rem; }}
-.aerostat-hl > div {{ max-width: 100%; position: relative; }}
+.aerostat-hl {{ display: flex; flex-wrap: wrap; gap: 0.25rem 1.5rem; position: relative; }}
+.aerostat-hl > div {{ max-width: 100%; }}
 .aerostat-hl [data-help]:focus {{ outline: 2px solid {ACCENT}; outline-offset: 2px; }}
+/* The focused number's help, under the block rather than under the number: a number near the
+   page's right edge would push a note anchored to it off the page. */
 .aerostat-hl [data-help]:focus::after {{ content: attr(data-help); position: absolute; z-index: 10;
-  left: 0; top: 100%; width: 16rem; max-width: 80vw; padding: 0.4rem 0.6rem; font-size: 0.8rem;
-  background: #ffffff; border: 1px solid rgba(49, 51, 63, 0.2); border-radius: 0.4rem; }}
+  left: 0; top: 100%; width: 28rem; max-width: calc(100% - 1.2rem - 2px); padding: 0.4rem 0.6rem;
+  font-size: 0.8rem; background: #ffffff; border: 1px solid rgba(49, 51, 63, 0.2);
+  border-radius: 0.4rem; }}
 .aerostat-hl .hl-note {{ flex-basis: 100%; font-size: 0.875rem; opacity: 0.6; margin: 0.25rem 0 0 0; }}
 .aerostat-hl .hl-label {{ font-size: 0.875rem; line-height: 1.4; }}
 .aerostat-hl [title] .hl-label {{ text-decoration: underline dotted; text-underline-offset: 3px;

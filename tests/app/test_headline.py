@@ -58,6 +58,15 @@ def test_a_delta_takes_its_tones_colour_and_a_note_breaks_the_line() -> None:
     assert 'class="hl-note"' in body  # a line of its own (flex-basis 100 % in theme.PAGE_CSS)
 
 
+def test_the_focus_note_names_the_number_it_explains() -> None:
+    """The help shown on focus sits under the whole block (so it stays on the page), so it
+    starts with its number's label; the hover tooltip is the help alone."""
+    body = headline_html([Headline("Volume [m³]", "170.0", "Hull volume <V>."), Headline("b", "2")])
+    assert 'data-help="Volume [m³]: Hull volume &lt;V&gt;."' in body
+    assert 'title="Hull volume &lt;V&gt;."' in body
+    assert body.count("data-help") == 1 and body.count('tabindex="0"') == 1  # no help, no stop
+
+
 def test_design_page_headline_matches_the_design_and_its_deltas(at) -> None:
     shown = {m.label: m for m in metrics(at)}
     assert len(shown) == 10

@@ -140,3 +140,48 @@ def test_performance_charts_are_whole_and_legible(
         screenshot(page, f"design_performance_{width}x{height}", full_page=False)
     finally:
         ctx.close()
+
+
+#: With each headline number focused in turn (Tab, as a keyboard user reaches it), the focus
+#: note drawn under it (its ``::after``): whether its box leaves the page's main area on either
+#: side, and whether that area scrolls sideways.
+_HELP_NOTES = """
+async () => {
+  const main = document.querySelector('[data-testid="stMain"]');
+  const area = main.getBoundingClientRect();
+  const out = [];
+  for (const e of document.querySelectorAll('.aerostat-hl [data-help]')) {
+    e.focus();
+    await new Promise(r => requestAnimationFrame(() => requestAnimationFrame(r)));
+    const s = getComputedStyle(e, '::after');
+    const host = e.closest('.aerostat-hl');
+    const anchor = s.position === 'absolute' && getComputedStyle(e).position === 'static'
+      ? host.getBoundingClientRect() : e.getBoundingClientRect();
+    const left = anchor.left + parseFloat(s.left);
+    const right = left + parseFloat(s.width) + parseFloat(s.paddingLeft)
+      + parseFloat(s.paddingRight) + parseFloat(s.borderLeftWidth) + parseFloat(s.borderRightWidth);
+    if (s.content === 'none' || left < area.left - 0.5 || right > area.right + 0.5
+        || main.scrollWidth > main.clientWidth + 1)
+      out.push(`${e.querySelector('.hl-label').textContent}: ${s.content === 'none'
+        ? 'no note' : `${left.toFixed(0)}-${right.toFixed(0)} in ${area.left.toFixed(0)}-${
+        area.right.toFixed(0)}`}`);
+    e.blur();
+  }
+  return out;
+}
+"""
+
+
+def test_each_numbers_focus_note_stays_on_the_page(browser: Browser, base_url: str):
+    """At 1024 px the right-most numbers sit near the page's edge: the help shown under a
+    focused number (for keyboard and touch users) is whole, inside the main area."""
+    ctx = browser.new_context(viewport={"width": 1024, "height": 768}, base_url=base_url)
+    try:
+        page = ctx.new_page()
+        page.goto("/")
+        wait_for_rerun(page)
+        expect(page.get_by_test_id("headline-value").first).to_be_visible()
+        assert page.locator(".aerostat-hl [data-help]").count() >= 10
+        assert page.evaluate(_HELP_NOTES) == []
+    finally:
+        ctx.close()
