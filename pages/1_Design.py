@@ -37,6 +37,7 @@ from app_ui import (
 )
 from app_ui.errors import report_unexpected
 from app_ui.headline import Headline, Note, limit_tone
+from app_ui.shell import run_inside_the_app
 from app_ui.tables import (
     constraint_styler,
     geometry_frame,
@@ -45,6 +46,7 @@ from app_ui.tables import (
     performance_frame,
 )
 
+run_inside_the_app()  # a page reached by its own address still runs inside app.py
 st.title("Aerostat design")
 st.caption(  # one line at 1024 px: the verdict stays above the fold
     "Enter the requirement and the design choices, then press **Update design**; results in "

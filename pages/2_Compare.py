@@ -10,7 +10,9 @@ from aerostat_core.model import budget
 from aerostat_core.model.io import inputs_from_dict
 from aerostat_core.output.report import thesis_gui_cases
 from app_ui import cache, formats, plots, show, state, text, workspace_ui
+from app_ui.shell import run_inside_the_app
 
+run_inside_the_app()  # a page reached by its own address still runs inside app.py
 st.title("Compare saved cases")
 st.caption(
     "Save designs on the Design page (or load the thesis' GUI test cases) and compare them here. "

@@ -9,7 +9,9 @@ from aerostat_core.base.validation import short
 from aerostat_core.optimize import VARIABLE_INFO, VARIABLES
 from app_ui import formats, shapes_view, widgets
 from app_ui import optimize_view as view
+from app_ui.shell import run_inside_the_app
 
+run_inside_the_app()  # a page reached by its own address still runs inside app.py
 st.title("Sensitivity")
 st.caption(
     "How the design responds to each design variable (thesis §3.2.2): one factor at a time "

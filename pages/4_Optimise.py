@@ -11,7 +11,9 @@ from aerostat_core.base.validation import short
 from aerostat_core.optimize import OBJECTIVES, SOLVERS
 from app_ui import entry, formats, widgets
 from app_ui import optimize_view as view
+from app_ui.shell import run_inside_the_app
 
+run_inside_the_app()  # a page reached by its own address still runs inside app.py
 st.title("Optimise")
 st.caption(
     "Minimise the total mass over the three design variables of the thesis: fineness ratio f, "

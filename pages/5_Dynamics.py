@@ -8,7 +8,9 @@ from app_ui import dynamics_view as view
 from app_ui import formats, show, tables, widgets
 from app_ui import sixdof_view as six
 from app_ui.headline import Headline
+from app_ui.shell import run_inside_the_app
 
+run_inside_the_app()  # a page reached by its own address still runs inside app.py
 st.title("Dynamics")
 st.caption(
     "Surge, heave and pitch of the aerostat on a lumped-mass elastic tether, started from the "

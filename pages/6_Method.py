@@ -12,7 +12,9 @@ from aerostat_core.base.validation import short
 from aerostat_core.model.io import rows_to_csv
 from app_ui import formats, show, text
 from app_ui.headline import Headline
+from app_ui.shell import run_inside_the_app
 
+run_inside_the_app()  # a page reached by its own address still runs inside app.py
 st.title("Method")
 st.caption(
     "How the design is computed, step by step. The method follows Mahmood (2020, USM MSc thesis, "

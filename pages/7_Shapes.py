@@ -8,7 +8,9 @@ import streamlit as st
 from aerostat_core.optimize import OBJECTIVES
 from app_ui import formats, state, widgets
 from app_ui import shapes_view as view
+from app_ui.shell import run_inside_the_app
 
+run_inside_the_app()  # a page reached by its own address still runs inside app.py
 st.title("Hull shapes")
 st.caption(
     "The thesis chooses its hull from a comparison of sphere, Helikite and streamlined hulls "

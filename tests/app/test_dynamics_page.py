@@ -13,8 +13,9 @@ import pytest
 from streamlit.testing.v1 import AppTest
 
 from aerostat_core import Configuration, HullSpec, Requirement, design
-from aerostat_core.model.io import inputs_from_dict, inputs_to_dict
+from aerostat_core.model.io import inputs_from_dict
 from app_ui import dynamics_view as view
+from app_ui import state
 from tests.app.conftest import APP_PATH
 from tests.app.helpers import chart, messages, metrics, trace, values
 
@@ -146,7 +147,7 @@ def test_turbulence_statistics_table(dyn):
 def test_saved_case_is_simulated(dyn):
     req = Requirement()
     cfg = Configuration(hull=HullSpec(volume=150.0, fineness_ratio=3.5))
-    dyn.session_state["cases"] = {"small": inputs_to_dict(req, cfg)}
+    state.save_case("small", req, cfg, dyn.session_state)  # into the workspace, as the app does
     dyn.run()
     _set(dyn, "dyn_source", "Case: small")
     _set(dyn, "dyn_duration", 30.0)

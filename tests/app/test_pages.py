@@ -6,6 +6,7 @@ import ast
 import shutil
 from pathlib import Path
 
+import pytest
 from streamlit.testing.v1 import AppTest
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -41,3 +42,42 @@ def test_a_missing_page_is_an_error_on_screen(tmp_path):
     at.run()
     errors = [e.value for e in at.error]
     assert any(pages[-1][0] in e for e in errors), errors
+
+
+def test_every_page_first_makes_sure_it_runs_inside_the_app():
+    """Each page calls app_ui.shell.run_inside_the_app before it draws anything, so a page
+    reached by its own address on a fresh server runs inside app.py (the browser test of a
+    restart, tests/e2e/test_persistence_e2e.py, shows what it fixes); every page of the folder
+    is listed in PAGES, so none can be reached by the folder's own navigation alone."""
+    listed = {p for p, _, _ in _pages(ROOT / "app.py")}
+    assert listed == {f"pages/{f.name}" for f in (ROOT / "pages").glob("*.py")}
+    for path in listed:
+        body = ast.parse((ROOT / path).read_text()).body
+        calls = [n.value for n in body if isinstance(n, ast.Expr) and isinstance(n.value, ast.Call)]
+        first = calls[0].func
+        assert isinstance(first, ast.Name) and first.id == "run_inside_the_app", path
+
+
+def test_the_guard_runs_the_app_only_in_the_folder_mode(monkeypatch):
+    """In Streamlit's folder mode the guard ends it, runs app.py in the same run (so a pressed
+    button is not lost to a rerun) and stops the bare page; otherwise it does nothing (app.py's
+    st.navigation has already ended that mode)."""
+    from streamlit.runtime.pages_manager import PagesManager
+    from streamlit.runtime.scriptrunner_utils.exceptions import StopException
+
+    from app_ui import shell
+
+    ran = []
+    monkeypatch.setattr(shell.runpy, "run_path", lambda path, run_name: ran.append(
+        (path, run_name, PagesManager.uses_pages_directory)))
+    def stop():  # st.stop outside a script run does nothing; in one it raises this
+        raise StopException()
+
+    monkeypatch.setattr(shell.st, "stop", stop)
+    monkeypatch.setattr(PagesManager, "uses_pages_directory", False)
+    shell.run_inside_the_app()
+    assert ran == []
+    monkeypatch.setattr(PagesManager, "uses_pages_directory", True)
+    with pytest.raises(StopException):
+        shell.run_inside_the_app()
+    assert ran == [(str(ROOT / "app.py"), "__main__", False)]

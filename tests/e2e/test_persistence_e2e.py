@@ -40,6 +40,18 @@ def _expect_both_cases(page: Page, where: str) -> None:
         expect(picker).to_contain_text(name, timeout=30_000)
 
 
+def _expect_the_app_around_the_page(page: Page, where: str) -> None:
+    """The page runs inside app.py: its navigation (the seven titled pages, not the ``pages/``
+    folder's file list with an "app" entry), the unit switch and the page style."""
+    nav = page.get_by_test_id("stSidebarNav").get_by_role("link")
+    expect(nav, where).to_have_count(7)
+    expect(nav.filter(has_text="app"), where).to_have_count(0)
+    expect(page.get_by_role("radiogroup", name="Units"), where).to_be_visible()
+    assert page.evaluate(
+        "() => [...document.querySelectorAll('style')].some(s => s.textContent.includes("
+        "'.aerostat-hl'))"), where
+
+
 def test_cases_survive_reload_new_context_and_restart(browser: Browser, tmp_path):
     env = {"AEROSTAT_DATA_DIR": str(tmp_path / "data")}
     log = ARTIFACTS_DIR / "streamlit-persistence.log"
@@ -72,6 +84,9 @@ def test_cases_survive_reload_new_context_and_restart(browser: Browser, tmp_path
         page3 = other.new_page()
         page3.goto(f"{server.url}/Compare?ws={token}")
         _expect_both_cases(page3, "Compare after a server restart")
+        # the restarted server's first request was a page's own address, not "/": Streamlit
+        # ran that page's file alone until this app's guard (app_ui.shell) turned it back
+        _expect_the_app_around_the_page(page3, "Compare, first request after a restart")
 
         # no token: a fresh, empty workspace (there is no way to list the others)
         page4 = other.new_page()
