@@ -67,6 +67,9 @@ def goto_page(page: Page, label: str, timeout: float = RERUN_TIMEOUT_MS) -> None
 
     Keeps the same session (saved cases, persisted widget values), unlike ``page.goto``.
     """
+    # the pointer leaves what it last pressed, as a user's does on the way to the sidebar: a
+    # button's help tooltip stays open while the pointer rests on it and can cover the links
+    page.mouse.move(0, 0)
     link = sidebar_nav_link(page, label)
     if not link.is_visible():
         # Streamlit folds long page lists behind a "View more" button.
