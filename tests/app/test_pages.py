@@ -58,10 +58,10 @@ def test_every_page_first_makes_sure_it_runs_inside_the_app():
         assert isinstance(first, ast.Name) and first.id == "run_inside_the_app", path
 
 
-def test_the_guard_runs_the_app_only_in_the_folder_mode(monkeypatch):
-    """In Streamlit's folder mode the guard ends it, runs app.py in the same run (so a pressed
-    button is not lost to a rerun) and stops the bare page; otherwise it does nothing (app.py's
-    st.navigation has already ended that mode)."""
+def test_the_guard_runs_the_app_only_outside_it(monkeypatch):
+    """Outside app.py the guard ends Streamlit's folder mode, runs app.py in the same run (so
+    a pressed button is not lost to a rerun) and stops the bare page; under app.py (one of its
+    frames on the stack) it does nothing, whatever the process-wide flag says."""
     from streamlit.runtime.pages_manager import PagesManager
     from streamlit.runtime.scriptrunner_utils.exceptions import StopException
 
@@ -70,14 +70,21 @@ def test_the_guard_runs_the_app_only_in_the_folder_mode(monkeypatch):
     ran = []
     monkeypatch.setattr(shell.runpy, "run_path", lambda path, run_name: ran.append(
         (path, run_name, PagesManager.uses_pages_directory)))
+
     def stop():  # st.stop outside a script run does nothing; in one it raises this
         raise StopException()
 
     monkeypatch.setattr(shell.st, "stop", stop)
-    monkeypatch.setattr(PagesManager, "uses_pages_directory", False)
-    shell.run_inside_the_app()
-    assert ran == []
     monkeypatch.setattr(PagesManager, "uses_pages_directory", True)
+    assert not shell.inside_the_app()
     with pytest.raises(StopException):
         shell.run_inside_the_app()
     assert ran == [(str(ROOT / "app.py"), "__main__", False)]
+
+    # the same call from code compiled as app.py: nothing happens, even with the flag set
+    monkeypatch.setattr(PagesManager, "uses_pages_directory", True)
+    under_app = {}
+    exec(compile("inside = shell.inside_the_app(); shell.run_inside_the_app()",
+                 str(ROOT / "app.py"), "exec"), {"shell": shell}, under_app)
+    assert under_app["inside"] and len(ran) == 1
+    assert PagesManager.uses_pages_directory is True

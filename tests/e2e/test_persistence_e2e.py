@@ -81,12 +81,17 @@ def test_cases_survive_reload_new_context_and_restart(browser: Browser, tmp_path
 
         stop_streamlit(server)
         server = start_streamlit(log, env)  # a new process (and port), same data folder
-        page3 = other.new_page()
-        page3.goto(f"{server.url}/Compare?ws={token}")
+        # two tabs reconnect at once, each on a page's own address, not "/": Streamlit starts
+        # both sessions in its folder mode (each page file alone) and the app's guard
+        # (app_ui.shell) must turn each back, also the one whose run began before the other
+        # ended that mode
+        page3, page5 = other.new_page(), other.new_page()
+        page3.goto(f"{server.url}/Compare?ws={token}", wait_until="commit")
+        page5.goto(f"{server.url}/Method?ws={token}", wait_until="commit")
         _expect_both_cases(page3, "Compare after a server restart")
-        # the restarted server's first request was a page's own address, not "/": Streamlit
-        # ran that page's file alone until this app's guard (app_ui.shell) turned it back
         _expect_the_app_around_the_page(page3, "Compare, first request after a restart")
+        wait_for_rerun(page5)
+        _expect_the_app_around_the_page(page5, "Method, opened at the same time")
 
         # no token: a fresh, empty workspace (there is no way to list the others)
         page4 = other.new_page()
