@@ -13,11 +13,12 @@ for the process.
 from __future__ import annotations
 
 import inspect
-import runpy
+import types
 from pathlib import Path
 
-import streamlit as st
 from streamlit.runtime.pages_manager import PagesManager
+from streamlit.runtime.scriptrunner_utils.exceptions import StopException
+from streamlit.runtime.scriptrunner_utils.script_run_context import get_script_run_ctx
 
 #: The app's entry script.
 APP = Path(__file__).resolve().parents[1] / "app.py"
@@ -39,6 +40,18 @@ def inside_the_app() -> bool:
     return False
 
 
+def _run_app(ctx) -> None:
+    """Run ``app.py`` in this script run as Streamlit runs an entry script: its cached byte
+    code in a fresh ``__main__`` module (no process-wide ``sys.modules`` or ``sys.argv`` swap,
+    which ``runpy`` would make under the other sessions' feet), with the entry script's page
+    hash active, so the app's own widgets keep the identity they have in every later run."""
+    code = ctx.pages_manager.get_page_script_byte_code(str(APP))
+    module = types.ModuleType("__main__")
+    module.__dict__["__file__"] = str(APP)
+    with ctx.run_with_active_hash(ctx.pages_manager.main_script_hash):
+        exec(code, module.__dict__)  # noqa: S102 - the app's own entry script
+
+
 def run_inside_the_app() -> None:
     """Run ``app.py`` (and through it this page) when Streamlit has started this page's file
     on its own, then end this bare run.
@@ -46,11 +59,18 @@ def run_inside_the_app() -> None:
     Call it first in every page of ``pages/``, before it draws anything. ``app.py`` is run in
     this same script run rather than by a rerun, so the event that started the run (a pressed
     button) is not lost; its ``st.navigation`` resolves this page by its address, as it would
-    for any later run, and ends the folder mode for the process. Under ``app.py`` (every run
-    but those) this does nothing.
+    for any later run, and ends the folder mode for the process. A page run as the entry
+    script itself (``streamlit run pages/6_Method.py``, an AppTest of one page file) is left
+    alone: there is no app around it to run. The bare run then ends by
+    :class:`StopException` itself, not ``st.stop()``, which would also drop a fragment rerun
+    queued meanwhile (a click inside a fragment during this first, slow run). Under
+    ``app.py`` (every run but those) this does nothing.
     """
-    if inside_the_app():
+    ctx = get_script_run_ctx()
+    if (ctx is None  # no script run (a bare import)
+            or Path(ctx.pages_manager.main_script_path).resolve() != APP  # the page is the entry
+            or inside_the_app()):
         return
     PagesManager.uses_pages_directory = False  # as st.navigation does, for the later runs
-    runpy.run_path(str(APP), run_name="__main__")
-    st.stop()
+    _run_app(ctx)
+    raise StopException()

@@ -53,38 +53,52 @@ def test_every_page_first_makes_sure_it_runs_inside_the_app():
     assert listed == {f"pages/{f.name}" for f in (ROOT / "pages").glob("*.py")}
     for path in listed:
         body = ast.parse((ROOT / path).read_text()).body
-        calls = [n.value for n in body if isinstance(n, ast.Expr) and isinstance(n.value, ast.Call)]
-        first = calls[0].func
-        assert isinstance(first, ast.Name) and first.id == "run_inside_the_app", path
+        # the first statement after the docstring and the imports, whatever its kind
+        first = next(n for n in body[1:] if not isinstance(n, (ast.Import, ast.ImportFrom)))
+        assert (isinstance(first, ast.Expr) and isinstance(first.value, ast.Call)
+                and isinstance(first.value.func, ast.Name)
+                and first.value.func.id == "run_inside_the_app"), (path, ast.unparse(first))
 
 
 def test_the_guard_runs_the_app_only_outside_it(monkeypatch):
     """Outside app.py the guard ends Streamlit's folder mode, runs app.py in the same run (so
-    a pressed button is not lost to a rerun) and stops the bare page; under app.py (one of its
-    frames on the stack) it does nothing, whatever the process-wide flag says."""
+    a pressed button is not lost to a rerun) and ends the bare page with StopException itself
+    (st.stop would also drop a queued fragment rerun); under app.py (one of its frames on the
+    stack) it does nothing, whatever the process-wide flag says; outside a script run, or when
+    the page file is itself the entry script, neither."""
     from streamlit.runtime.pages_manager import PagesManager
     from streamlit.runtime.scriptrunner_utils.exceptions import StopException
 
     from app_ui import shell
 
+    assert shell.APP.name == "app.py" and (shell.APP.parent / "pages").is_dir()
     ran = []
-    monkeypatch.setattr(shell.runpy, "run_path", lambda path, run_name: ran.append(
-        (path, run_name, PagesManager.uses_pages_directory)))
-
-    def stop():  # st.stop outside a script run does nothing; in one it raises this
-        raise StopException()
-
-    monkeypatch.setattr(shell.st, "stop", stop)
+    monkeypatch.setattr(shell, "_run_app", lambda ctx: ran.append(
+        (ctx, PagesManager.uses_pages_directory)))
     monkeypatch.setattr(PagesManager, "uses_pages_directory", True)
+    monkeypatch.setattr(shell, "get_script_run_ctx", lambda: None)
+    shell.run_inside_the_app()  # no script run: nothing to run inside
+    assert ran == [] and PagesManager.uses_pages_directory is True
+
+    from types import SimpleNamespace
+
+    page_as_entry = SimpleNamespace(pages_manager=SimpleNamespace(
+        main_script_path=str(shell.APP.parent / "pages" / "6_Method.py")))
+    monkeypatch.setattr(shell, "get_script_run_ctx", lambda: page_as_entry)
+    shell.run_inside_the_app()  # a page file run as the entry script: no app around it
+    assert ran == [] and PagesManager.uses_pages_directory is True
+
+    ctx = SimpleNamespace(pages_manager=SimpleNamespace(main_script_path=str(shell.APP)))
+    monkeypatch.setattr(shell, "get_script_run_ctx", lambda: ctx)
     assert not shell.inside_the_app()
     with pytest.raises(StopException):
         shell.run_inside_the_app()
-    assert ran == [(str(ROOT / "app.py"), "__main__", False)]
+    assert ran == [(ctx, False)]
 
     # the same call from code compiled as app.py: nothing happens, even with the flag set
     monkeypatch.setattr(PagesManager, "uses_pages_directory", True)
     under_app = {}
     exec(compile("inside = shell.inside_the_app(); shell.run_inside_the_app()",
-                 str(ROOT / "app.py"), "exec"), {"shell": shell}, under_app)
+                 str(shell.APP), "exec"), {"shell": shell}, under_app)
     assert under_app["inside"] and len(ran) == 1
     assert PagesManager.uses_pages_directory is True
